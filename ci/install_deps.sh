@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# install_deps.sh — installs vkpt's build and test dependencies from Debian 12's archive.
+# Idempotent: when every package is already installed it touches nothing.
+set -euo pipefail
+
+packages=(
+    build-essential cmake pkg-config
+    libvulkan-dev libvulkan-volk-dev mesa-vulkan-drivers vulkan-validationlayers
+    glslang-tools glslang-dev
+    libglm-dev libstb-dev libtinygltf-dev nlohmann-json3-dev
+    libgtest-dev
+)
+
+missing=()
+for package in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||
+        missing+=("$package")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+    echo "install_deps: all ${#packages[@]} packages present"
+    exit 0
+fi
+
+echo "install_deps: installing ${missing[*]}"
+sudo_cmd=()
+[ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"

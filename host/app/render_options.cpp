@@ -1,0 +1,96 @@
+// render_options.cpp — option table: long names and CS184's short forms.
+#include "app/render_options.h"
+
+#include "common/errors.h"
+#include "shared/rng.h"
+
+namespace vkpt {
+
+namespace {
+
+Integrator parseIntegrator(const std::string& text) {
+    if (text == "path") return Integrator::Path;
+    if (text == "direct") return Integrator::Direct;
+    if (text == "normals") return Integrator::Normals;
+    throw InputError("option --integrator: '" + text + "' is not one of path, direct, normals");
+}
+
+LightSampling parseLightSampling(const std::string& text) {
+    if (text == "light") return LightSampling::Light;
+    if (text == "hemisphere") return LightSampling::Hemisphere;
+    throw InputError("option --light-sampling: '" + text + "' is not one of light, hemisphere");
+}
+
+void addImageOptions(CommandLine& cl, RenderSettings& s) {
+    cl.add({"spp", {'s'}, "N", "samples per pixel (the budget when adaptive)",
+            [&s](auto v) { s.samplesPerPixel = parseUnsigned("spp", v[0], 1); }});
+    cl.add({"res", {'r'}, "W H", "image size in pixels (default 512 512)", [&s](auto v) {
+                s.width = parseUnsigned("res", v[0], 1);
+                s.height = parseUnsigned("res", v[1], 1);
+            }});
+    cl.add({"output", {'o', 'f'}, "FILE", ".png (sRGB 8-bit), .pfm or .hdr (linear float)",
+            [&s](auto v) { s.outputPath = v[0]; }});
+    cl.add({"exposure", {}, "EV", "scale by 2^EV before 8-bit output (default 0)",
+            [&s](auto v) { s.exposure = parseFloat("exposure", v[0]); }});
+    cl.add({"camera", {}, "N", "render from the scene's camera N (default: the first)",
+            [&s](auto v) { s.cameraIndex = int(parseUnsigned("camera", v[0])); }});
+    cl.add({"seed", {}, "N", "random seed (same seed, same image)",
+            [&s](auto v) { s.seed = parseUnsigned("seed", v[0]); }});
+}
+
+void addIntegratorOptions(CommandLine& cl, RenderSettings& s) {
+    cl.add({"integrator", {}, "NAME", "path (default), direct or normals",
+            [&s](auto v) { s.integrator = parseIntegrator(v[0]); }});
+    cl.add({"max-depth", {'m'}, "N", "scattering events: 0 emitters only, 1 direct (default 16)",
+            [&s](auto v) { s.maxDepth = parseUnsigned("max-depth", v[0]); }});
+    cl.add({"rr-depth", {}, "N", "Russian roulette from the Nth scattering event (default 3)",
+            [&s](auto v) { s.rrStartDepth = parseUnsigned("rr-depth", v[0], 1); }});
+    cl.add({"light-sampling", {}, "KIND", "direct integrator: light (default) or hemisphere",
+            [&s](auto v) { s.lightSampling = parseLightSampling(v[0]); }});
+    cl.add({"hemisphere", {'H'}, "", "same as --light-sampling hemisphere",
+            [&s](auto) { s.lightSampling = LightSampling::Hemisphere; }});
+    cl.add({"light-samples", {'l'}, "N", "light samples per shading point (default 1)",
+            [&s](auto v) { s.lightSamples = parseUnsigned("light-samples", v[0]); }});
+    cl.add({"direct-only", {}, "", "keep paths with at most one scattering event",
+            [&s](auto) { s.pathFilter = PathFilter::DirectOnly; }});
+    cl.add({"indirect-only", {}, "", "keep paths with two or more scattering events",
+            [&s](auto) { s.pathFilter = PathFilter::IndirectOnly; }});
+}
+
+void addRunOptions(CommandLine& cl, RenderSettings& s) {
+    cl.add({"adaptive", {'a'}, "BATCH TOL",
+            "stop a pixel when 1.96 sigma/sqrt(n) <= TOL mean, tested every BATCH samples",
+            [&s](auto v) {
+                s.adaptive.enabled = true;
+                s.adaptive.batchSize = parseUnsigned("adaptive", v[0], 1);
+                s.adaptive.tolerance = parseFloat("adaptive", v[1]);
+            }});
+    cl.add({"adaptive-min", {}, "N", "adaptive: no pixel stops before N samples (default 64)",
+            [&s](auto v) { s.adaptive.minSamples = parseUnsigned("adaptive-min", v[0], 2); }});
+    cl.add({"threads", {'t'}, "N", "CPU threads (default: all cores)",
+            [&s](auto v) { s.threads = parseUnsigned("threads", v[0], 1); }});
+    cl.add({"stats-json", {}, "FILE", "write the render statistics as JSON",
+            [&s](auto v) { s.statsJsonPath = v[0]; }});
+    cl.add({"quiet", {'q'}, "", "no progress bar", [&s](auto) { s.quiet = true; }});
+}
+
+} // namespace
+
+void addRenderOptions(CommandLine& commandLine, RenderSettings& settings) {
+    addImageOptions(commandLine, settings);
+    addIntegratorOptions(commandLine, settings);
+    addRunOptions(commandLine, settings);
+}
+
+void validateRenderSettings(const RenderSettings& settings) {
+    if (settings.scenePath.empty()) throw InputError("no scene file given (see --help)");
+    if (settings.lightSamples > RNG_MAX_LIGHT_SAMPLES)
+        throw InputError("option --light-samples: at most " +
+                         std::to_string(RNG_MAX_LIGHT_SAMPLES) + " samples");
+    if (settings.adaptive.enabled && !(settings.adaptive.tolerance > 0.0f))
+        throw InputError("option --adaptive: the tolerance must be positive");
+    if (std::uint64_t(settings.width) * settings.height > (1ull << 28))
+        throw InputError("option --res: at most 2^28 pixels");
+}
+
+} // namespace vkpt

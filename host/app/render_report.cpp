@@ -1,0 +1,95 @@
+// render_report.cpp — the end-of-render summary lines and the --stats-json document.
+#include "app/render_report.h"
+
+#include <cstdio>
+#include <fstream>
+
+#include "common/errors.h"
+#include "common/json_writer.h"
+
+namespace vkpt {
+
+namespace {
+
+const char* integratorName(Integrator integrator) {
+    switch (integrator) {
+    case Integrator::Path: return "path";
+    case Integrator::Direct: return "direct";
+    case Integrator::Normals: return "normals";
+    }
+    return "?";
+}
+
+void writeSettings(JsonWriter& json, const RenderSettings& s) {
+    json.key("settings").beginObject();
+    json.field("scene", s.scenePath).field("output", s.outputPath);
+    json.field("width", s.width).field("height", s.height).field("spp", s.samplesPerPixel);
+    json.field("maxDepth", s.maxDepth).field("rrStartDepth", s.rrStartDepth).field("seed", s.seed);
+    json.field("integrator", integratorName(s.integrator));
+    json.field("lightSampling", s.lightSampling == LightSampling::Light ? "light" : "hemisphere");
+    json.field("lightSamples", s.lightSamples);
+    json.field("adaptive", s.adaptive.enabled).field("adaptiveBatch", s.adaptive.batchSize);
+    json.field("adaptiveTolerance", s.adaptive.tolerance);
+    json.field("adaptiveMinSamples", s.adaptive.minSamples);
+    json.endObject();
+}
+
+void writeStats(JsonWriter& json, const RenderReport& r) {
+    const RenderStats& st = r.stats;
+    json.key("render").beginObject();
+    json.field("seconds", st.seconds).field("loadSeconds", r.loadSeconds);
+    json.key("rays").beginObject();
+    json.field("camera", st.rays.camera).field("extension", st.rays.extension);
+    json.field("shadow", st.rays.shadow).field("total", st.rays.total());
+    json.endObject();
+    json.field("megaRaysPerSecond", st.megaRaysPerSecond());
+    json.field("nodesVisitedPerRay", st.nodesPerRay());
+    json.field("triangleTestsPerRay", st.trianglesPerRay());
+    json.field("samplesTaken", st.samplesTaken).field("uniformBudget", st.uniformBudget);
+    json.field("nonFiniteSamples", st.nonFiniteSamples);
+    json.field("deviceMemoryBytes", r.deviceMemoryBytes);
+    json.endObject();
+}
+
+void writeBvh(JsonWriter& json, const RenderReport& r) {
+    json.key("bvh").beginObject();
+    json.field("triangles", r.triangles).field("emitters", r.emitters);
+    json.field("nodes", r.bvh.nodeCount).field("leaves", r.bvh.leafCount);
+    json.field("maxDepth", r.bvh.maxDepth).field("sahCost", r.bvh.sahCost);
+    json.field("buildSeconds", r.bvh.buildSeconds);
+    json.endObject();
+}
+
+} // namespace
+
+void printRenderSummary(const RenderReport& r) {
+    const RenderStats& st = r.stats;
+    std::printf("%s: %s, %ux%u, %.3f s, %.2f Mrays/s on %s\n", r.program.c_str(),
+                r.settings->outputPath.c_str(), r.settings->width, r.settings->height, st.seconds,
+                st.megaRaysPerSecond(), r.device.c_str());
+    std::printf("  rays: %llu camera, %llu extension, %llu shadow; %.1f nodes and %.1f triangle "
+                "tests per ray\n",
+                (unsigned long long)st.rays.camera, (unsigned long long)st.rays.extension,
+                (unsigned long long)st.rays.shadow, st.nodesPerRay(), st.trianglesPerRay());
+    double share = st.uniformBudget ? 100.0 * double(st.samplesTaken) / double(st.uniformBudget) : 0;
+    std::printf("  samples: %llu of a uniform budget of %llu (%.1f %%)", (unsigned long long)st.samplesTaken,
+                (unsigned long long)st.uniformBudget, share);
+    if (st.nonFiniteSamples) std::printf("; %llu non-finite samples discarded",
+                                         (unsigned long long)st.nonFiniteSamples);
+    std::printf("\n");
+}
+
+void writeStatsJson(const RenderReport& r, const std::string& path) {
+    std::ofstream out(path);
+    if (!out) throw InputError(path + ": cannot write the statistics file");
+    JsonWriter json(out);
+    json.beginObject().field("program", r.program).field("device", r.device);
+    writeSettings(json, *r.settings);
+    writeBvh(json, r);
+    writeStats(json, r);
+    json.endObject();
+    out << "\n";
+    if (!out) throw InputError(path + ": write failed");
+}
+
+} // namespace vkpt

@@ -1,0 +1,40 @@
+// scene_setup.cpp — load → BVH → layout → camera, logged on stderr.
+#include "app/scene_setup.h"
+
+#include <chrono>
+#include <cstdio>
+
+#include "scene/camera.h"
+#include "scene/gltf_loader.h"
+
+namespace vkpt {
+
+SceneSetup setUpScene(const RenderSettings& settings, const std::string& program) {
+    SceneSetup setup;
+    auto start = std::chrono::steady_clock::now();
+    Scene scene = loadGltfScene(settings.scenePath);
+    setup.loadSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    setup.prepared = prepareScene(scene);
+    const BvhStats& bvh = setup.prepared.bvhStats;
+    std::fprintf(stderr,
+                 "%s: %s: %zu triangles, %zu emitters; BVH %u nodes, depth %u, SAH cost %.2f, "
+                 "built in %.3f s\n",
+                 program.c_str(), settings.scenePath.c_str(), scene.triangleCount(),
+                 setup.prepared.emitters.size(), bvh.nodeCount, bvh.maxDepth, double(bvh.sahCost),
+                 bvh.buildSeconds);
+    if (setup.prepared.emitters.empty())
+        std::fprintf(stderr, "%s: %s: the scene has no emitters; the image will be black\n",
+                     program.c_str(), settings.scenePath.c_str());
+    float aspect = float(settings.width) / float(settings.height);
+    SceneCamera camera = selectCamera(scene, settings.cameraIndex, aspect);
+    setup.camera = makeGpuCamera(camera, settings.width, settings.height);
+    return setup;
+}
+
+int reportFailure(const std::string& program, const std::exception& error, int exitCode) {
+    std::fprintf(stderr, "%s: error: %s\n", program.c_str(), error.what());
+    return exitCode;
+}
+
+} // namespace vkpt

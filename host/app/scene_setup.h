@@ -1,0 +1,22 @@
+// scene_setup.h — the first steps both executables share: load, build the BVH, lay the
+// scene out, choose the camera; with one log line for each that takes time.
+#pragma once
+
+#include "common/render_settings.h"
+#include "prepare/prepared_scene.h"
+
+namespace vkpt {
+
+struct SceneSetup {
+    PreparedScene prepared;
+    gpu::Camera camera{};
+    double loadSeconds = 0.0;
+};
+
+SceneSetup setUpScene(const RenderSettings& settings, const std::string& program);
+
+// main()'s one catch: one line on stderr and the exit code of DESIGN's error contract
+// (1 bad input, 2 Vulkan or device failure, 3 internal error).
+int reportFailure(const std::string& program, const std::exception& error, int exitCode);
+
+} // namespace vkpt

@@ -1,0 +1,175 @@
+// bvh_traverse.cpp — CPU ray queries: the reference's ordered stack walk of the tree, the
+// GPU's stackless skip-link walk of the flattened nodes, and brute force for the tests.
+#include "bvh/bvh_traverse.h"
+
+#include <array>
+#include <utility>
+
+#include "common/errors.h"
+#include "shared/intersect.h"
+
+namespace vkpt {
+
+namespace {
+
+// What every walk carries: the ray with its precomputed inverse direction, the best hit so
+// far (whose t is the walk's current tMax) and the optional counters.
+struct Walk {
+    const RayQuery& ray;
+    glm::vec3 invDirection;
+    ClosestHit best;
+    TraversalCounters* counters;
+
+    Walk(const RayQuery& r, TraversalCounters* c)
+        : ray(r), invDirection(gpu::safeInverseDirection(r.direction)), counters(c) {
+        best.t = r.tMax;
+    }
+
+    // Box entry distance, or VKPT_FAR when the box is missed or lies beyond the best hit.
+    float enterBox(const glm::vec3& boxMin, const glm::vec3& boxMax) {
+        if (counters) ++counters->nodesVisited;
+        return gpu::intersectBox(ray.origin, invDirection, boxMin, boxMax, ray.tMin, best.t);
+    }
+
+    // Tests one triangle against (tMin, best t); a hit becomes the best hit.
+    bool testTriangle(std::span<const gpu::Triangle> triangles, std::uint32_t index) {
+        if (counters) ++counters->triangleTests;
+        const gpu::Triangle& tri = triangles[index];
+        gpu::TriangleHit h = gpu::intersectTriangle(ray.origin, ray.direction, tri.v0, tri.v1,
+                                                    tri.v2, ray.tMin, best.t);
+        if (!h.hit) return false;
+        best = {h.t, h.u, h.v, index, true};
+        return true;
+    }
+
+    // Tests count triangles from first; with stopAtFirst, returns at the first hit.
+    bool testTriangles(std::span<const gpu::Triangle> triangles, std::uint32_t first,
+                       std::uint32_t count, bool stopAtFirst) {
+        bool any = false;
+        for (std::uint32_t i = first; i < first + count; ++i) {
+            any = testTriangle(triangles, i) || any;
+            if (any && stopAtFirst) return true;
+        }
+        return any;
+    }
+};
+
+ClosestHit finish(const Walk& walk) {
+    return walk.best.hit ? walk.best : ClosestHit{};
+}
+
+struct StackEntry {
+    std::uint32_t node;
+    float entry; // box entry distance when pushed
+};
+
+// A stack as deep as the deepest tree the builder makes (kBvhMaxDepth): a walk holds at most
+// one pending sibling per level.
+struct NodeStack {
+    std::array<StackEntry, kBvhMaxDepth + 1> entries;
+    std::uint32_t size = 0;
+
+    void push(std::uint32_t node, float entry) {
+        VKPT_ASSERT(size < entries.size(), "tree deeper than kBvhMaxDepth");
+        entries[size++] = {node, entry};
+    }
+    StackEntry pop() { return entries[--size]; }
+    bool empty() const { return size == 0; }
+};
+
+// Pushes the children of an interior node whose boxes the ray enters, the nearer last so that
+// it is popped first (front-to-back order, as in pbrt-v4's BVHAggregate::Intersect, which
+// uses the ray's direction sign instead of the entry distances).
+void pushChildren(const BvhTree& tree, const BvhBuildNode& n, Walk& walk, NodeStack& stack) {
+    const BvhBuildNode& left = tree.nodes[n.leftChild];
+    const BvhBuildNode& right = tree.nodes[n.rightChild];
+    StackEntry near{n.leftChild, walk.enterBox(left.bounds.min, left.bounds.max)};
+    StackEntry far{n.rightChild, walk.enterBox(right.bounds.min, right.bounds.max)};
+    if (far.entry < near.entry) std::swap(near, far);
+    if (far.entry != VKPT_FAR) stack.push(far.node, far.entry);
+    if (near.entry != VKPT_FAR) stack.push(near.node, near.entry);
+}
+
+// The ordered walk; with stopAtFirst it becomes the any-hit query.
+bool walkStack(const BvhTree& tree, std::span<const gpu::Triangle> triangles, Walk& walk,
+               bool stopAtFirst) {
+    if (tree.nodes.empty()) return false;
+    const BvhBuildNode& root = tree.nodes[0];
+    float rootEntry = walk.enterBox(root.bounds.min, root.bounds.max);
+    NodeStack stack;
+    if (rootEntry != VKPT_FAR) stack.push(0, rootEntry);
+    bool any = false;
+    while (!stack.empty()) {
+        StackEntry e = stack.pop();
+        if (e.entry >= walk.best.t) continue; // a nearer hit was found since the push
+        const BvhBuildNode& n = tree.nodes[e.node];
+        if (!n.isLeaf()) {
+            pushChildren(tree, n, walk, stack);
+            continue;
+        }
+        any = walk.testTriangles(triangles, n.firstPrimitive, n.primitiveCount, stopAtFirst) || any;
+        if (any && stopAtFirst) return true;
+    }
+    return any;
+}
+
+// The GPU's walk (shaders/lib/traverse.glsl): no stack, children in stored order; a missed
+// box or a finished leaf continues at missIndex, an entered interior node at index + 1.
+bool walkStackless(std::span<const gpu::BvhNode> nodes, std::span<const gpu::Triangle> triangles,
+                   Walk& walk, bool stopAtFirst) {
+    if (nodes.empty()) return false;
+    bool any = false;
+    std::uint32_t index = 0;
+    while (index != BVH_END) {
+        const gpu::BvhNode& n = nodes[index];
+        if (walk.enterBox(n.boundsMin, n.boundsMax) == VKPT_FAR) {
+            index = n.missIndex;
+        } else if (n.leafTriangles != 0) {
+            any = walk.testTriangles(triangles, gpu::leafFirstTriangle(n.leafTriangles),
+                                     gpu::leafTriangleCount(n.leafTriangles), stopAtFirst) ||
+                  any;
+            if (any && stopAtFirst) return true;
+            index = n.missIndex;
+        } else {
+            index = index + 1;
+        }
+    }
+    return any;
+}
+
+} // namespace
+
+ClosestHit closestHitStack(const BvhTree& tree, std::span<const gpu::Triangle> triangles,
+                           const RayQuery& ray, TraversalCounters* counters) {
+    Walk walk(ray, counters);
+    walkStack(tree, triangles, walk, false);
+    return finish(walk);
+}
+
+bool anyHitStack(const BvhTree& tree, std::span<const gpu::Triangle> triangles, const RayQuery& ray,
+                 TraversalCounters* counters) {
+    Walk walk(ray, counters);
+    return walkStack(tree, triangles, walk, true);
+}
+
+ClosestHit closestHitStackless(std::span<const gpu::BvhNode> nodes,
+                               std::span<const gpu::Triangle> triangles, const RayQuery& ray,
+                               TraversalCounters* counters) {
+    Walk walk(ray, counters);
+    walkStackless(nodes, triangles, walk, false);
+    return finish(walk);
+}
+
+bool anyHitStackless(std::span<const gpu::BvhNode> nodes, std::span<const gpu::Triangle> triangles,
+                     const RayQuery& ray, TraversalCounters* counters) {
+    Walk walk(ray, counters);
+    return walkStackless(nodes, triangles, walk, true);
+}
+
+ClosestHit closestHitBruteForce(std::span<const gpu::Triangle> triangles, const RayQuery& ray) {
+    Walk walk(ray, nullptr);
+    walk.testTriangles(triangles, 0, static_cast<std::uint32_t>(triangles.size()), false);
+    return finish(walk);
+}
+
+} // namespace vkpt

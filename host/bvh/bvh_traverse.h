@@ -1,0 +1,49 @@
+// bvh_traverse.h — closest-hit and any-hit queries on the CPU: the reference's ordered stack
+// walk of the tree, the stackless walk of the flattened nodes (the GPU's algorithm, for
+// tests), and brute force.
+#pragma once
+
+#include <cstdint>
+#include <span>
+
+#include "bvh/bvh_build.h"
+#include "shared/host_device.h"
+
+namespace vkpt {
+
+struct RayQuery {
+    glm::vec3 origin;
+    glm::vec3 direction; // need not be unit; t is in units of |direction|
+    float tMin = 0.0f;
+    float tMax = VKPT_FAR;
+};
+
+struct ClosestHit {
+    float t = 0.0f;
+    float u = 0.0f;             // barycentric weight of v1
+    float v = 0.0f;             // barycentric weight of v2
+    std::uint32_t triangle = 0; // index into the BVH-ordered triangle array
+    bool hit = false;
+};
+
+// Work counters, for the reference's statistics and the traversal tests.
+struct TraversalCounters {
+    std::uint64_t nodesVisited = 0;
+    std::uint64_t triangleTests = 0;
+};
+
+// triangles are in BVH order (gpu::Triangle built from primitiveOrder).
+ClosestHit closestHitStack(const BvhTree& tree, std::span<const gpu::Triangle> triangles,
+                           const RayQuery& ray, TraversalCounters* counters = nullptr);
+bool anyHitStack(const BvhTree& tree, std::span<const gpu::Triangle> triangles, const RayQuery& ray,
+                 TraversalCounters* counters = nullptr);
+
+ClosestHit closestHitStackless(std::span<const gpu::BvhNode> nodes,
+                               std::span<const gpu::Triangle> triangles, const RayQuery& ray,
+                               TraversalCounters* counters = nullptr);
+bool anyHitStackless(std::span<const gpu::BvhNode> nodes, std::span<const gpu::Triangle> triangles,
+                     const RayQuery& ray, TraversalCounters* counters = nullptr);
+
+ClosestHit closestHitBruteForce(std::span<const gpu::Triangle> triangles, const RayQuery& ray);
+
+} // namespace vkpt

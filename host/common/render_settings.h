@@ -1,0 +1,42 @@
+// render_settings.h — what to render and how: the options both vkpt and vkpt-ref accept.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace vkpt {
+
+enum class Integrator { Path, Direct, Normals };
+enum class LightSampling { Light, Hemisphere };
+enum class PathFilter : std::uint32_t { All = 0, DirectOnly = 1, IndirectOnly = 2 };
+
+struct AdaptiveSettings {
+    bool enabled = false;
+    std::uint32_t batchSize = 32;   // test convergence every batchSize samples (CS184's default)
+    float tolerance = 0.05f;        // relative half-width of the 95 % interval
+    std::uint32_t minSamples = 64;  // no pixel stops before this many samples
+};
+
+struct RenderSettings {
+    std::string scenePath;
+    std::string outputPath = "render.png";
+    std::uint32_t width = 512;
+    std::uint32_t height = 512;
+    std::uint32_t samplesPerPixel = 16;
+    std::uint32_t maxDepth = 16;        // scattering events: 0 = emitters only, 1 = direct
+    std::uint32_t rrStartDepth = 3;     // Russian roulette from this scattering event on
+    std::uint32_t seed = 0;
+    std::uint32_t threads = 0;          // 0 = all cores
+    Integrator integrator = Integrator::Path;
+    LightSampling lightSampling = LightSampling::Light;
+    std::uint32_t lightSamples = 1;
+    PathFilter pathFilter = PathFilter::All;
+    AdaptiveSettings adaptive;
+    float exposure = 0.0f;              // EV applied to 8-bit output only
+    std::optional<int> cameraIndex;
+    std::string statsJsonPath;
+    bool quiet = false;                 // no progress bar
+};
+
+} // namespace vkpt

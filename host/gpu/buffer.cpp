@@ -1,0 +1,126 @@
+// buffer.cpp — buffer creation with limit checks, memory choice, naming and accounting.
+#include "gpu/buffer.h"
+
+#include "common/errors.h"
+#include "gpu/context.h"
+#include "gpu/vk_check.h"
+
+#include <utility>
+
+namespace vkpt {
+
+namespace {
+
+[[noreturn]] void throwTooLarge(const std::string& name, VkDeviceSize size, const char* limitName,
+                                VkDeviceSize limit) {
+    throw VulkanError("buffer '" + name + "' is " + formatBytes(size) + ", above this device's " +
+                          limitName + " of " + formatBytes(limit),
+                      VK_ERROR_OUT_OF_DEVICE_MEMORY);
+}
+
+} // namespace
+
+Buffer::Buffer(GpuContext& context, BufferDesc desc) : context_(&context), desc_(std::move(desc)) {
+    VKPT_ASSERT(desc_.size > 0, "buffer '" + desc_.name + "' has size 0");
+    checkLimits();
+    VkBufferCreateInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
+    info.size = desc_.size;
+    info.usage = desc_.usage;
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    VKPT_VK_CHECK(vkCreateBuffer(context.device(), &info, nullptr, &buffer_));
+    try {
+        allocateAndBind();
+        context.setDebugName(buffer_, desc_.name);
+        context.setDebugName(memory_, desc_.name + ".memory");
+    } catch (...) {
+        release();
+        throw;
+    }
+}
+
+// maxStorageBufferRange bounds a descriptor's range, not a VkBuffer; vkpt binds whole buffers,
+// so it is the largest storage buffer a kernel can see. Checked before anything is allocated.
+void Buffer::checkLimits() const {
+    const DeviceLimits& limits = context_->limits();
+    if ((desc_.usage & VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) != 0 &&
+        desc_.size > limits.maxStorageBufferRange) {
+        throwTooLarge(desc_.name, desc_.size, "maxStorageBufferRange",
+                      limits.maxStorageBufferRange);
+    }
+    if (desc_.size > limits.maxMemoryAllocationSize) {
+        throwTooLarge(desc_.name, desc_.size, "maxMemoryAllocationSize",
+                      limits.maxMemoryAllocationSize);
+    }
+}
+
+void Buffer::allocateAndBind() {
+    const VkDevice device = context_->device();
+    VkMemoryRequirements requirements{};
+    vkGetBufferMemoryRequirements(device, buffer_, &requirements);
+    if (requirements.size > context_->limits().maxMemoryAllocationSize) {
+        throwTooLarge(desc_.name, requirements.size, "maxMemoryAllocationSize",
+                      context_->limits().maxMemoryAllocationSize);
+    }
+    VkMemoryAllocateInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
+    info.allocationSize = requirements.size;
+    info.memoryTypeIndex =
+        chooseMemoryType(context_->memoryProperties(), requirements.memoryTypeBits, desc_.location);
+    const VkResult result = vkAllocateMemory(device, &info, nullptr, &memory_);
+    if (result != VK_SUCCESS) {
+        throw VulkanError("cannot allocate " + formatBytes(requirements.size) + " of " +
+                              memoryLocationName(desc_.location) + " memory for buffer '" +
+                              desc_.name + "': " + vkResultName(result),
+                          result);
+    }
+    allocationSize_ = requirements.size;
+    context_->memoryAccounting().recordAllocation(allocationSize_);
+    VKPT_VK_CHECK(vkBindBufferMemory(device, buffer_, memory_, 0));
+    if (desc_.location != MemoryLocation::DeviceLocal) {
+        void* mapped = nullptr;
+        VKPT_VK_CHECK(vkMapMemory(device, memory_, 0, VK_WHOLE_SIZE, 0, &mapped));
+        mapped_ = static_cast<std::byte*>(mapped);
+    }
+}
+
+void Buffer::release() noexcept {
+    if (context_ == nullptr) return;
+    const VkDevice device = context_->device();
+    if (buffer_ != VK_NULL_HANDLE) vkDestroyBuffer(device, buffer_, nullptr);
+    if (memory_ != VK_NULL_HANDLE) {
+        // vkFreeMemory unmaps implicitly.
+        vkFreeMemory(device, memory_, nullptr);
+        context_->memoryAccounting().recordFree(allocationSize_);
+    }
+    buffer_ = VK_NULL_HANDLE;
+    memory_ = VK_NULL_HANDLE;
+    mapped_ = nullptr;
+    allocationSize_ = 0;
+}
+
+Buffer::~Buffer() {
+    release();
+}
+
+Buffer::Buffer(Buffer&& other) noexcept
+    : context_(std::exchange(other.context_, nullptr)), desc_(std::move(other.desc_)),
+      buffer_(std::exchange(other.buffer_, VK_NULL_HANDLE)),
+      memory_(std::exchange(other.memory_, VK_NULL_HANDLE)),
+      allocationSize_(std::exchange(other.allocationSize_, 0)),
+      mapped_(std::exchange(other.mapped_, nullptr)) {}
+
+Buffer& Buffer::operator=(Buffer&& other) noexcept {
+    if (this != &other) {
+        release();
+        context_ = std::exchange(other.context_, nullptr);
+        desc_ = std::move(other.desc_);
+        buffer_ = std::exchange(other.buffer_, VK_NULL_HANDLE);
+        memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
+        allocationSize_ = std::exchange(other.allocationSize_, 0);
+        mapped_ = std::exchange(other.mapped_, nullptr);
+    }
+    return *this;
+}
+
+} // namespace vkpt

@@ -1,0 +1,59 @@
+// buffer.h — Buffer: one VkBuffer with its own memory, named like the data it holds
+// ("bvhNodes"), counted in the context's memory statistics, and refused with a clear message
+// when the device cannot hold it.
+#pragma once
+
+#include "gpu/memory.h"
+
+#include <volk.h>
+
+#include <cstddef>
+#include <string>
+
+namespace vkpt {
+
+class GpuContext;
+
+struct BufferDesc {
+    std::string name;      // debug name, same word as in C++ and GLSL: "bvhNodes"
+    VkDeviceSize size = 0; // bytes, > 0 (Vulkan has no empty buffers)
+    VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    MemoryLocation location = MemoryLocation::DeviceLocal;
+};
+
+class Buffer {
+public:
+    // Throws VulkanError naming the buffer, its size and the limit when a storage buffer is
+    // larger than maxStorageBufferRange or the memory larger than maxMemoryAllocationSize
+    // (splitting big buffers is the caller's decision, not this layer's).
+    Buffer(GpuContext& context, BufferDesc desc);
+    ~Buffer();
+    Buffer(Buffer&& other) noexcept;
+    Buffer& operator=(Buffer&& other) noexcept;
+    Buffer(const Buffer&) = delete;
+    Buffer& operator=(const Buffer&) = delete;
+
+    VkBuffer handle() const { return buffer_; }
+    VkDeviceSize size() const { return desc_.size; }
+    const std::string& name() const { return desc_.name; }
+    VkBufferUsageFlags usage() const { return desc_.usage; }
+    MemoryLocation location() const { return desc_.location; }
+    // Bytes of device memory held (the allocation may exceed size() for alignment).
+    VkDeviceSize allocationSize() const { return allocationSize_; }
+    // Upload and Readback buffers stay mapped for their lifetime; null for DeviceLocal.
+    std::byte* mapped() const { return mapped_; }
+
+private:
+    void checkLimits() const;
+    void allocateAndBind();
+    void release() noexcept;
+
+    GpuContext* context_ = nullptr;
+    BufferDesc desc_;
+    VkBuffer buffer_ = VK_NULL_HANDLE;
+    VkDeviceMemory memory_ = VK_NULL_HANDLE;
+    VkDeviceSize allocationSize_ = 0;
+    std::byte* mapped_ = nullptr;
+};
+
+} // namespace vkpt

@@ -1,0 +1,76 @@
+// kernel.h — Kernel: one compute pipeline made from embedded SPIR-V, with its descriptor set
+// layout (storage buffers in set 0), push-constant range and specialisation constants. The
+// pipeline's debug name is the kernel's name, as are its dispatch labels.
+#pragma once
+
+#include <volk.h>
+
+#include <bit>
+#include <chrono>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace vkpt {
+
+class GpuContext;
+
+// A 32-bit specialisation constant (uint, int, float or bool in GLSL), set by constant_id.
+struct SpecializationConstant {
+    std::uint32_t id = 0;
+    std::uint32_t value = 0;
+};
+inline SpecializationConstant specializeFloat(std::uint32_t id, float value) {
+    return {id, std::bit_cast<std::uint32_t>(value)};
+}
+inline SpecializationConstant specializeBool(std::uint32_t id, bool value) {
+    return {id, value ? VK_TRUE : VK_FALSE};
+}
+
+struct KernelDesc {
+    std::string name;                                 // "trace_closest", the .comp file's stem
+    std::span<const std::uint32_t> spirv;             // from the embedded kernel library
+    std::vector<std::uint32_t> storageBufferBindings; // binding numbers in set 0
+    std::uint32_t pushConstantSize = 0;               // bytes, a multiple of 4; 0 for none
+    std::vector<SpecializationConstant> specializationConstants;
+};
+
+class Kernel {
+public:
+    // Throws VulkanError when the device cannot take the push constants or the number of
+    // storage buffers, or when the driver rejects the SPIR-V.
+    Kernel(const GpuContext& context, KernelDesc desc);
+    ~Kernel();
+    Kernel(Kernel&& other) noexcept;
+    Kernel& operator=(Kernel&&) = delete;
+    Kernel(const Kernel&) = delete;
+    Kernel& operator=(const Kernel&) = delete;
+
+    const GpuContext& context() const { return *context_; }
+    const std::string& name() const { return desc_.name; }
+    const std::vector<std::uint32_t>& storageBufferBindings() const {
+        return desc_.storageBufferBindings;
+    }
+    std::uint32_t pushConstantSize() const { return desc_.pushConstantSize; }
+    VkPipeline pipeline() const { return pipeline_; }
+    VkPipelineLayout pipelineLayout() const { return pipelineLayout_; }
+    VkDescriptorSetLayout setLayout() const { return setLayout_; }
+    // Wall time of vkCreateShaderModule + vkCreateComputePipelines: the driver's compile.
+    std::chrono::nanoseconds creationTime() const { return creationTime_; }
+
+private:
+    void checkLimits() const;
+    void createLayouts();
+    void createPipeline();
+    void destroy() noexcept;
+
+    const GpuContext* context_;
+    KernelDesc desc_;
+    VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
+    VkPipelineLayout pipelineLayout_ = VK_NULL_HANDLE;
+    VkPipeline pipeline_ = VK_NULL_HANDLE;
+    std::chrono::nanoseconds creationTime_{0};
+};
+
+} // namespace vkpt

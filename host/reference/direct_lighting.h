@@ -1,0 +1,21 @@
+// direct_lighting.h — one shadow-tested light sample at a surface point, the building block
+// of both the path integrator's NEE and CS184's light-sampling direct integrator.
+#pragma once
+
+#include "reference/scene_tracer.h"
+#include "reference/surface.h"
+
+namespace vkpt {
+
+struct DirectLightSample {
+    glm::vec3 unweighted{0.0f}; // f·Le·cos θ, before division by the pdf
+    float lightPdf = 0.0f;      // solid angle
+    float bsdfPdf = 0.0f;       // of the cosine-weighted BSDF sampler in the same direction
+    bool contributes = false;   // false: no emitter, back face, below the surface or shadowed
+};
+
+// u.x picks the emitter, u.yz the point on it (see shared/rng.h, DIM_LIGHT_FIRST).
+DirectLightSample sampleDirectLight(SceneTracer& tracer, const SurfacePoint& surface,
+                                    const glm::vec4& u);
+
+} // namespace vkpt

@@ -1,0 +1,39 @@
+// integrators.h — the reference's estimators of the radiance arriving along a camera ray.
+#pragma once
+
+#include "common/render_settings.h"
+#include "reference/scene_tracer.h"
+
+namespace vkpt {
+
+// Which random numbers a camera sample uses: see shared/rng.h.
+struct SampleKey {
+    std::uint32_t seed = 0;
+    std::uint32_t pixel = 0;
+    std::uint32_t sampleIndex = 0;
+};
+
+struct IntegratorContext {
+    const RenderSettings& settings;
+    SceneTracer& tracer;
+};
+
+struct CameraRay {
+    glm::vec3 origin;
+    glm::vec3 direction;
+};
+
+// Next-event estimation with MIS (power heuristic) against cosine-weighted BSDF sampling,
+// Russian roulette by shared/path_rules.h.
+glm::vec3 integratePath(IntegratorContext& context, const SampleKey& key, const CameraRay& ray);
+
+// CS184's direct lighting: emission seen directly plus one bounce, estimated either with N
+// uniform hemisphere directions or with N light samples (no MIS: each alone is unbiased).
+glm::vec3 integrateDirect(IntegratorContext& context, const SampleKey& key, const CameraRay& ray);
+
+// The shading normal at the first hit mapped to colour (n + 1) / 2; black on a miss.
+glm::vec3 integrateNormals(IntegratorContext& context, const CameraRay& ray);
+
+glm::vec3 integrate(IntegratorContext& context, const SampleKey& key, const CameraRay& ray);
+
+} // namespace vkpt

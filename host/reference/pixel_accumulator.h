@@ -1,0 +1,30 @@
+// pixel_accumulator.h — one pixel's running estimate: the radiance sum and Welford's
+// mean and M2 of the per-sample luminance (numerically stable, unlike Σx and Σx²).
+#pragma once
+
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+namespace vkpt {
+
+struct PixelAccumulator {
+    glm::dvec3 radianceSum{0.0};
+    double luminanceMean = 0.0;
+    double luminanceM2 = 0.0;
+    std::uint32_t count = 0;
+
+    // Welford, "Note on a Method for Calculating Corrected Sums of Squares and Products",
+    // Technometrics 4(3), 1962.
+    void add(const glm::vec3& radiance, float luminance) {
+        radianceSum += glm::dvec3(radiance);
+        ++count;
+        double delta = double(luminance) - luminanceMean;
+        luminanceMean += delta / double(count);
+        luminanceM2 += delta * (double(luminance) - luminanceMean);
+    }
+
+    glm::vec3 mean() const { return count ? glm::vec3(radianceSum / double(count)) : glm::vec3(0.0f); }
+};
+
+} // namespace vkpt

@@ -1,0 +1,247 @@
+// gltf_accessors.cpp — locating an accessor's elements in its buffer with every range checked,
+// then reading them with memcpy (glTF data need not be aligned for the host).
+#include "scene/gltf_accessors.h"
+
+#include <cstring>
+#include <initializer_list>
+#include <optional>
+
+#include "scene/gltf_document.h"
+
+namespace vkpt::gltf {
+namespace {
+
+// Where an accessor's elements lie; everything in it has been checked against the buffer.
+struct Elements {
+    const unsigned char* first = nullptr;
+    std::size_t count = 0;
+    std::size_t stride = 0;
+    std::size_t componentSize = 0;
+};
+
+std::string componentTypeName(int componentType) {
+    switch (componentType) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+        return "BYTE";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return "UNSIGNED_BYTE";
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+        return "SHORT";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        return "UNSIGNED_SHORT";
+    case TINYGLTF_COMPONENT_TYPE_INT:
+        return "INT";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+        return "UNSIGNED_INT";
+    case TINYGLTF_COMPONENT_TYPE_FLOAT:
+        return "FLOAT";
+    case TINYGLTF_COMPONENT_TYPE_DOUBLE:
+        return "DOUBLE";
+    default:
+        return "componentType " + std::to_string(componentType);
+    }
+}
+
+std::string typeName(int type) {
+    switch (type) {
+    case TINYGLTF_TYPE_SCALAR:
+        return "SCALAR";
+    case TINYGLTF_TYPE_VEC2:
+        return "VEC2";
+    case TINYGLTF_TYPE_VEC3:
+        return "VEC3";
+    case TINYGLTF_TYPE_VEC4:
+        return "VEC4";
+    case TINYGLTF_TYPE_MAT2:
+        return "MAT2";
+    case TINYGLTF_TYPE_MAT3:
+        return "MAT3";
+    case TINYGLTF_TYPE_MAT4:
+        return "MAT4";
+    default:
+        return "type " + std::to_string(type);
+    }
+}
+
+std::string accessorName(int index) {
+    return "accessor " + std::to_string(index);
+}
+
+const tinygltf::Accessor& findAccessor(const tinygltf::Model& model, int index,
+                                       const std::string& where) {
+    if (index < 0 || static_cast<std::size_t>(index) >= model.accessors.size()) {
+        throw GltfProblem(where + ": " + accessorName(index) + " does not exist (the file has " +
+                          std::to_string(model.accessors.size()) + " accessors)");
+    }
+    return model.accessors[static_cast<std::size_t>(index)];
+}
+
+std::string joinAlternatives(std::initializer_list<int> componentTypes) {
+    std::string text;
+    std::size_t i = 0;
+    for (int componentType : componentTypes) {
+        if (i > 0) text += (i + 1 == componentTypes.size()) ? " or " : ", ";
+        text += componentTypeName(componentType);
+        ++i;
+    }
+    return text;
+}
+
+void requireLayout(const tinygltf::Accessor& accessor, int index, int type,
+                   std::initializer_list<int> componentTypes, const std::string& where) {
+    bool componentOk = false;
+    for (int componentType : componentTypes)
+        componentOk |= accessor.componentType == componentType;
+    if (accessor.type == type && componentOk) return;
+    throw GltfProblem(where + ": " + accessorName(index) + " is " + typeName(accessor.type) +
+                      " of " + componentTypeName(accessor.componentType) + ", expected " +
+                      typeName(type) + " of " + joinAlternatives(componentTypes));
+}
+
+const tinygltf::BufferView& findBufferView(const tinygltf::Model& model,
+                                           const tinygltf::Accessor& accessor, int index,
+                                           const std::string& where) {
+    if (accessor.sparse.isSparse) {
+        throw GltfProblem(where + ": " + accessorName(index) +
+                          " is sparse, which vkpt does not support");
+    }
+    const int view = accessor.bufferView;
+    if (view < 0) throw GltfProblem(where + ": " + accessorName(index) + " has no buffer view");
+    if (static_cast<std::size_t>(view) >= model.bufferViews.size()) {
+        throw GltfProblem(where + ": " + accessorName(index) + ": buffer view " +
+                          std::to_string(view) + " does not exist");
+    }
+    return model.bufferViews[static_cast<std::size_t>(view)];
+}
+
+// One past the last byte the elements touch, relative to the view; nullopt on overflow.
+std::optional<std::size_t> elementsEnd(std::size_t offset, std::size_t count, std::size_t stride,
+                                       std::size_t elementSize) {
+    std::size_t end = 0;
+    if (__builtin_mul_overflow(count - 1, stride, &end) ||
+        __builtin_add_overflow(end, elementSize, &end) ||
+        __builtin_add_overflow(end, offset, &end)) {
+        return std::nullopt;
+    }
+    return end;
+}
+
+std::size_t elementSizeOf(const tinygltf::Accessor& accessor) {
+    // requireLayout has already restricted type and componentType to known values.
+    const auto componentSize = static_cast<std::size_t>(
+        tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(accessor.componentType)));
+    const auto components = static_cast<std::size_t>(
+        tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(accessor.type)));
+    return componentSize * components;
+}
+
+std::size_t strideOf(const tinygltf::BufferView& view, const tinygltf::Accessor& accessor,
+                     int index, const std::string& where) {
+    const std::size_t elementSize = elementSizeOf(accessor);
+    const std::size_t stride = view.byteStride != 0 ? view.byteStride : elementSize;
+    if (stride < elementSize) {
+        throw GltfProblem(where + ": " + accessorName(index) + ": byteStride " +
+                          std::to_string(stride) + " of buffer view " +
+                          std::to_string(accessor.bufferView) + " is smaller than its " +
+                          std::to_string(elementSize) + "-byte elements");
+    }
+    return stride;
+}
+
+void checkElementsInView(const tinygltf::BufferView& view, const tinygltf::Accessor& accessor,
+                         int index, std::size_t stride, const std::string& where) {
+    const std::size_t elementSize = elementSizeOf(accessor);
+    const std::optional<std::size_t> end =
+        elementsEnd(accessor.byteOffset, accessor.count, stride, elementSize);
+    if (end && *end <= view.byteLength) return;
+    throw GltfProblem(where + ": " + accessorName(index) + " reads past the end of buffer view " +
+                      std::to_string(accessor.bufferView) + ": " + std::to_string(accessor.count) +
+                      " elements of " + std::to_string(elementSize) + " bytes at stride " +
+                      std::to_string(stride) + " from byte " + std::to_string(accessor.byteOffset) +
+                      " need " + (end ? std::to_string(*end) : std::string("more than 2^64")) +
+                      " bytes, the view has " + std::to_string(view.byteLength));
+}
+
+Elements locateElements(const tinygltf::Model& model, const tinygltf::Accessor& accessor, int index,
+                        const std::string& where) {
+    const tinygltf::BufferView& view = findBufferView(model, accessor, index, where);
+    const std::size_t stride = strideOf(view, accessor, index, where);
+    if (accessor.count == 0) return {};
+    checkElementsInView(view, accessor, index, stride, where);
+    // checkBufferViews has already placed the view inside its buffer.
+    const auto& buffer = model.buffers[static_cast<std::size_t>(view.buffer)];
+    const auto componentSize = static_cast<std::size_t>(
+        tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(accessor.componentType)));
+    return {buffer.data.data() + view.byteOffset + accessor.byteOffset, accessor.count, stride,
+            componentSize};
+}
+
+template <typename T> T readValue(const unsigned char* bytes) {
+    T value;
+    std::memcpy(&value, bytes, sizeof(T));
+    return value;
+}
+
+std::uint32_t readIndex(const unsigned char* bytes, std::size_t componentSize) {
+    switch (componentSize) {
+    case 1:
+        return bytes[0];
+    case 2:
+        return readValue<std::uint16_t>(bytes);
+    default:
+        return readValue<std::uint32_t>(bytes);
+    }
+}
+
+} // namespace
+
+void checkBufferViews(const tinygltf::Model& model) {
+    for (std::size_t i = 0; i < model.bufferViews.size(); ++i) {
+        const tinygltf::BufferView& view = model.bufferViews[i];
+        const std::string where = "buffer view " + std::to_string(i);
+        if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model.buffers.size()) {
+            throw GltfProblem(where + ": buffer " + std::to_string(view.buffer) +
+                              " does not exist (the file has " +
+                              std::to_string(model.buffers.size()) + " buffers)");
+        }
+        const std::size_t size = model.buffers[static_cast<std::size_t>(view.buffer)].data.size();
+        if (view.byteOffset > size || view.byteLength > size - view.byteOffset) {
+            throw GltfProblem(where + ": byteOffset " + std::to_string(view.byteOffset) +
+                              " + byteLength " + std::to_string(view.byteLength) +
+                              " exceeds buffer " + std::to_string(view.buffer) + " (" +
+                              std::to_string(size) + " bytes)");
+        }
+    }
+}
+
+std::vector<glm::vec3> readVec3Floats(const tinygltf::Model& model, int accessorIndex,
+                                      const std::string& where) {
+    const tinygltf::Accessor& accessor = findAccessor(model, accessorIndex, where);
+    requireLayout(accessor, accessorIndex, TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT},
+                  where);
+    const Elements elements = locateElements(model, accessor, accessorIndex, where);
+    std::vector<glm::vec3> values(elements.count);
+    for (std::size_t i = 0; i < elements.count; ++i) {
+        const unsigned char* element = elements.first + i * elements.stride;
+        values[i] = {readValue<float>(element), readValue<float>(element + 4),
+                     readValue<float>(element + 8)};
+    }
+    return values;
+}
+
+std::vector<std::uint32_t> readIndices(const tinygltf::Model& model, int accessorIndex,
+                                       const std::string& where) {
+    const tinygltf::Accessor& accessor = findAccessor(model, accessorIndex, where);
+    requireLayout(accessor, accessorIndex, TINYGLTF_TYPE_SCALAR,
+                  {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                   TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
+                  where);
+    const Elements elements = locateElements(model, accessor, accessorIndex, where);
+    std::vector<std::uint32_t> indices(elements.count);
+    for (std::size_t i = 0; i < elements.count; ++i) {
+        indices[i] = readIndex(elements.first + i * elements.stride, elements.componentSize);
+    }
+    return indices;
+}
+
+} // namespace vkpt::gltf

@@ -1,0 +1,27 @@
+// gltf_accessors.h — bounds-checked, typed reads of glTF accessors: every offset, stride and count
+// is checked against its buffer view (and each view against its buffer) before a byte is read,
+// because tinygltf checks none of them.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <tiny_gltf.h>
+
+namespace vkpt::gltf {
+
+// Every buffer view names an existing buffer and lies inside it.
+void checkBufferViews(const tinygltf::Model& model);
+
+// `where` names the use, e.g. "mesh 0, primitive 1: POSITION", and starts every message.
+// Sparse accessors are rejected: no scene we know uses them for geometry.
+std::vector<glm::vec3> readVec3Floats(const tinygltf::Model& model, int accessorIndex,
+                                      const std::string& where);
+
+// Indices of any glTF index type (UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT), widened.
+std::vector<std::uint32_t> readIndices(const tinygltf::Model& model, int accessorIndex,
+                                       const std::string& where);
+
+} // namespace vkpt::gltf

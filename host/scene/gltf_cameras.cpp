@@ -1,0 +1,68 @@
+// gltf_cameras.cpp — a glTF camera and its node's world transform to position, forward, up.
+#include "scene/gltf_cameras.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "scene/gltf_document.h"
+
+namespace vkpt::gltf {
+namespace {
+
+std::string nodeName(int index) {
+    return "node " + std::to_string(index);
+}
+
+const tinygltf::Camera& findCamera(const tinygltf::Model& model, int nodeIndex) {
+    const int index = model.nodes[static_cast<std::size_t>(nodeIndex)].camera;
+    if (index < 0 || static_cast<std::size_t>(index) >= model.cameras.size()) {
+        throw GltfProblem(nodeName(nodeIndex) + ": camera " + std::to_string(index) +
+                          " does not exist (the file has " + std::to_string(model.cameras.size()) +
+                          " cameras)");
+    }
+    return model.cameras[static_cast<std::size_t>(index)];
+}
+
+float checkedYfov(const tinygltf::Camera& camera, int nodeIndex) {
+    const double yfov = camera.perspective.yfov;
+    if (!(yfov > 0.0 && yfov < std::numbers::pi)) {
+        throw GltfProblem(nodeName(nodeIndex) + ": camera yfov " + std::to_string(yfov) +
+                          " is not between 0 and pi");
+    }
+    return static_cast<float>(yfov);
+}
+
+glm::dvec3 unitOrThrow(const glm::dvec3& v, int nodeIndex) {
+    const double length = glm::length(v);
+    if (!(length > 0.0) || !std::isfinite(length)) {
+        throw GltfProblem(nodeName(nodeIndex) + ": the camera's transform is degenerate");
+    }
+    return v / length;
+}
+
+// Columns of the world matrix are the images of the local axes. Normalising them removes scale,
+// and Gram-Schmidt keeps up orthogonal to forward even under shear.
+void setBasis(SceneCamera& camera, const glm::dmat4& world, int nodeIndex) {
+    const glm::dvec3 forward = unitOrThrow(-glm::dvec3(world[2]), nodeIndex);
+    const glm::dvec3 upAxis = glm::dvec3(world[1]);
+    const glm::dvec3 up = unitOrThrow(upAxis - glm::dot(upAxis, forward) * forward, nodeIndex);
+    camera.position = glm::vec3(glm::dvec3(world[3]));
+    camera.forward = glm::vec3(forward);
+    camera.up = glm::vec3(up);
+}
+
+} // namespace
+
+std::optional<SceneCamera> placeCamera(const tinygltf::Model& model, int nodeIndex,
+                                       const glm::dmat4& world) {
+    const tinygltf::Camera& gltfCamera = findCamera(model, nodeIndex);
+    if (gltfCamera.type != "perspective") return std::nullopt; // tinygltf allows only the two
+    SceneCamera camera;
+    const auto& node = model.nodes[static_cast<std::size_t>(nodeIndex)];
+    camera.name = gltfCamera.name.empty() ? node.name : gltfCamera.name;
+    camera.yfov = checkedYfov(gltfCamera, nodeIndex);
+    setBasis(camera, world, nodeIndex);
+    return camera;
+}
+
+} // namespace vkpt::gltf

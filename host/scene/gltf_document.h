@@ -1,0 +1,22 @@
+// gltf_document.h — the first loading step: file bytes to a tinygltf::Model, with every failure
+// (missing file, garbage, truncated .glb, missing buffer) turned into one line in our wording.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+#include <tiny_gltf.h>
+
+namespace vkpt::gltf {
+
+// A problem in the file, described by its place ("mesh 3, primitive 0: ...") but without the file
+// name; loadGltfScene prefixes the path as given and rethrows it as an InputError.
+class GltfProblem : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Reads a .gltf (JSON) or .glb (binary) file and its external buffers. Images are not decoded.
+tinygltf::Model parseGltfFile(const std::string& path);
+
+} // namespace vkpt::gltf

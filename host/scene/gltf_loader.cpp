@@ -1,0 +1,167 @@
+// gltf_loader.cpp — the loading pipeline: parse the file, check extensions and buffer views,
+// walk the default scene collecting triangles and cameras, then say what was ignored.
+#include "scene/gltf_loader.h"
+
+#include <algorithm>
+#include <iostream>
+#include <optional>
+#include <vector>
+
+#include "common/errors.h"
+#include "scene/gltf_accessors.h"
+#include "scene/gltf_cameras.h"
+#include "scene/gltf_document.h"
+#include "scene/gltf_materials.h"
+#include "scene/gltf_nodes.h"
+#include "scene/gltf_primitives.h"
+
+namespace vkpt {
+namespace {
+
+using gltf::GltfProblem;
+
+// Extensions that change what vkpt renders and that it implements.
+const std::vector<std::string> kSupportedExtensions = {"KHR_materials_emissive_strength"};
+
+bool isSupported(const std::string& extension) {
+    return std::find(kSupportedExtensions.begin(), kSupportedExtensions.end(), extension) !=
+           kSupportedExtensions.end();
+}
+
+// An extension the file requires changes the meaning of the data; rendering without it would
+// give a silently wrong image.
+void checkRequiredExtensions(const tinygltf::Model& model) {
+    for (const std::string& extension : model.extensionsRequired) {
+        if (!isSupported(extension)) {
+            throw GltfProblem("required extension " + extension + " is not supported");
+        }
+    }
+}
+
+std::vector<std::string> ignoredExtensions(const tinygltf::Model& model) {
+    std::vector<std::string> ignored;
+    for (const std::string& extension : model.extensionsUsed) {
+        if (!isSupported(extension) &&
+            std::find(ignored.begin(), ignored.end(), extension) == ignored.end()) {
+            ignored.push_back(extension);
+        }
+    }
+    return ignored;
+}
+
+std::string joinNames(const std::vector<std::string>& names) {
+    std::string joined;
+    for (const std::string& name : names)
+        joined += (joined.empty() ? "" : ", ") + name;
+    return joined;
+}
+
+// Collects the triangles and cameras of the nodes the walk visits.
+class SceneBuilder {
+public:
+    SceneBuilder(const tinygltf::Model& model, Scene& scene) : model_(model), scene_(scene) {}
+
+    void visitNode(int nodeIndex, const glm::dmat4& world) {
+        const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(nodeIndex)];
+        if (node.mesh != -1) appendMesh(nodeIndex, node.mesh, world);
+        if (node.camera != -1) appendCamera(nodeIndex, world);
+    }
+
+    int orthographicCameras() const { return orthographicCameras_; }
+
+private:
+    void appendMesh(int nodeIndex, int meshIndex, const glm::dmat4& world) {
+        if (meshIndex < 0 || static_cast<std::size_t>(meshIndex) >= model_.meshes.size()) {
+            throw GltfProblem("node " + std::to_string(nodeIndex) + ": mesh " +
+                              std::to_string(meshIndex) + " does not exist (the file has " +
+                              std::to_string(model_.meshes.size()) + " meshes)");
+        }
+        const tinygltf::Mesh& mesh = model_.meshes[static_cast<std::size_t>(meshIndex)];
+        for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+            const std::string where =
+                "mesh " + std::to_string(meshIndex) + ", primitive " + std::to_string(p);
+            const tinygltf::Primitive& primitive = mesh.primitives[p];
+            gltf::appendPrimitiveTriangles(model_, primitive, world,
+                                           materialIndex(primitive.material, where), where, scene_);
+        }
+    }
+
+    void appendCamera(int nodeIndex, const glm::dmat4& world) {
+        if (std::optional<SceneCamera> camera = gltf::placeCamera(model_, nodeIndex, world)) {
+            scene_.cameras.push_back(std::move(*camera));
+        } else {
+            ++orthographicCameras_;
+        }
+    }
+
+    // glTF material indices carry over; a primitive without one gets the default material,
+    // appended after the file's materials the first time it is needed.
+    std::uint32_t materialIndex(int gltfIndex, const std::string& where) {
+        if (gltfIndex == -1) return defaultMaterialIndex();
+        if (gltfIndex < 0 || static_cast<std::size_t>(gltfIndex) >= model_.materials.size()) {
+            throw GltfProblem(where + ": material " + std::to_string(gltfIndex) +
+                              " does not exist (the file has " +
+                              std::to_string(model_.materials.size()) + " materials)");
+        }
+        return static_cast<std::uint32_t>(gltfIndex);
+    }
+
+    std::uint32_t defaultMaterialIndex() {
+        if (!defaultMaterial_) {
+            defaultMaterial_ = static_cast<std::uint32_t>(scene_.materials.size());
+            scene_.materials.push_back(gltf::defaultMaterial());
+        }
+        return *defaultMaterial_;
+    }
+
+    const tinygltf::Model& model_;
+    Scene& scene_;
+    std::optional<std::uint32_t> defaultMaterial_;
+    int orthographicCameras_ = 0;
+};
+
+// What the load ignored, said once it has succeeded, so that a failing load prints one line.
+std::vector<std::string> loadNotes(const tinygltf::Model& model, int orthographicCameras,
+                                   const LoadOptions& options) {
+    std::vector<std::string> notes;
+    const std::vector<std::string> ignored = ignoredExtensions(model);
+    if (options.warnUnsupportedExtensions && !ignored.empty()) {
+        notes.push_back("ignoring unsupported extensions: " + joinNames(ignored));
+    }
+    if (orthographicCameras > 0) {
+        notes.push_back("ignoring " + std::to_string(orthographicCameras) + " orthographic " +
+                        (orthographicCameras == 1 ? "camera" : "cameras") +
+                        " (only perspective cameras are supported)");
+    }
+    return notes;
+}
+
+Scene buildScene(const std::string& path, const LoadOptions& options) {
+    const tinygltf::Model model = gltf::parseGltfFile(path);
+    checkRequiredExtensions(model);
+    gltf::checkBufferViews(model);
+    Scene scene;
+    scene.sourcePath = path;
+    scene.materials = gltf::convertMaterials(model);
+    SceneBuilder builder(model, scene);
+    gltf::walkSceneNodes(
+        model, gltf::defaultSceneIndex(model),
+        [&](int node, const glm::dmat4& world) { builder.visitNode(node, world); });
+    if (scene.triangleCount() == 0) throw GltfProblem("the scene has no triangles");
+    for (const std::string& note : loadNotes(model, builder.orthographicCameras(), options)) {
+        std::cerr << path << ": " << note << '\n';
+    }
+    return scene;
+}
+
+} // namespace
+
+Scene loadGltfScene(const std::string& path, const LoadOptions& options) {
+    try {
+        return buildScene(path, options);
+    } catch (const GltfProblem& problem) {
+        throw InputError(path + ": " + problem.what());
+    }
+}
+
+} // namespace vkpt

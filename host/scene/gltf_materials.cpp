@@ -1,0 +1,91 @@
+// gltf_materials.cpp — reads the core material factors and KHR_materials_emissive_strength;
+// textures are ignored until they are sampled.
+#include "scene/gltf_materials.h"
+
+#include <cmath>
+
+#include "scene/gltf_document.h"
+
+namespace vkpt::gltf {
+namespace {
+
+constexpr const char* kEmissiveStrength = "KHR_materials_emissive_strength";
+
+std::string materialName(std::size_t index) {
+    return "material " + std::to_string(index);
+}
+
+// KHR_materials_emissive_strength scales emissiveFactor past the core range [0, 1].
+double emissiveStrength(const tinygltf::Material& material, std::size_t index) {
+    const auto extension = material.extensions.find(kEmissiveStrength);
+    if (extension == material.extensions.end()) return 1.0;
+    // Has() before Get(): Get() asserts that the value is an object.
+    if (!extension->second.Has("emissiveStrength")) return 1.0; // the extension's default
+    const tinygltf::Value& strength = extension->second.Get("emissiveStrength");
+    const double value = strength.IsNumber() ? strength.GetNumberAsDouble() : -1.0;
+    if (!(value >= 0.0)) {
+        throw GltfProblem(materialName(index) + ": " + kEmissiveStrength +
+                          ": emissiveStrength must be a number >= 0");
+    }
+    return value;
+}
+
+AlphaMode alphaModeOf(const tinygltf::Material& material, std::size_t index) {
+    if (material.alphaMode == "OPAQUE") return AlphaMode::Opaque;
+    if (material.alphaMode == "MASK") return AlphaMode::Mask;
+    if (material.alphaMode == "BLEND") return AlphaMode::Blend;
+    throw GltfProblem(materialName(index) + ": unknown alphaMode '" + material.alphaMode + "'");
+}
+
+glm::vec3 emissionOf(const tinygltf::Material& material, std::size_t index) {
+    const std::vector<double>& factor = material.emissiveFactor; // tinygltf ensures 3 entries
+    const double strength = emissiveStrength(material, index);
+    return glm::vec3(glm::dvec3(factor[0], factor[1], factor[2]) * strength);
+}
+
+template <typename Vec> bool isFinite(const Vec& v) {
+    return !glm::any(glm::isnan(v)) && !glm::any(glm::isinf(v));
+}
+
+// Emission and albedo feed light sampling; an infinity there would poison every pixel.
+void checkFinite(const SceneMaterial& material, std::size_t index) {
+    const bool finite = isFinite(material.baseColor) && isFinite(material.emission) &&
+                        std::isfinite(material.metallic) && std::isfinite(material.roughness) &&
+                        std::isfinite(material.alphaCutoff);
+    if (!finite) throw GltfProblem(materialName(index) + ": a factor is not a finite float");
+}
+
+SceneMaterial convertMaterial(const tinygltf::Material& material, std::size_t index) {
+    const tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
+    const std::vector<double>& base = pbr.baseColorFactor; // tinygltf ensures 4 entries
+    SceneMaterial converted;
+    converted.name = material.name;
+    converted.baseColor = glm::vec4(glm::dvec4(base[0], base[1], base[2], base[3]));
+    converted.emission = emissionOf(material, index);
+    converted.metallic = static_cast<float>(pbr.metallicFactor);
+    converted.roughness = static_cast<float>(pbr.roughnessFactor);
+    converted.doubleSided = material.doubleSided;
+    converted.alphaMode = alphaModeOf(material, index);
+    converted.alphaCutoff = static_cast<float>(material.alphaCutoff);
+    checkFinite(converted, index);
+    return converted;
+}
+
+} // namespace
+
+std::vector<SceneMaterial> convertMaterials(const tinygltf::Model& model) {
+    std::vector<SceneMaterial> materials;
+    materials.reserve(model.materials.size());
+    for (std::size_t i = 0; i < model.materials.size(); ++i) {
+        materials.push_back(convertMaterial(model.materials[i], i));
+    }
+    return materials;
+}
+
+SceneMaterial defaultMaterial() {
+    SceneMaterial material; // SceneMaterial's defaults are the glTF defaults
+    material.name = "glTF default material";
+    return material;
+}
+
+} // namespace vkpt::gltf

@@ -1,0 +1,175 @@
+// gltf_primitives.cpp — reads a primitive's attributes and indices, checks them, and emits
+// triangles in world space.
+#include "scene/gltf_primitives.h"
+
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <optional>
+#include <utility>
+
+#include "scene/gltf_accessors.h"
+#include "scene/gltf_document.h"
+
+namespace vkpt::gltf {
+namespace {
+
+// A primitive's vertices in world space, and the corner order of its triangles.
+struct WorldGeometry {
+    std::vector<glm::vec3> positions;
+    std::optional<std::vector<glm::vec3>> normals; // nullopt: generate flat normals
+    std::vector<std::uint32_t> indices;
+    bool mirrored = false; // the transform has a negative determinant
+};
+
+const char* modeName(int mode) {
+    switch (mode) {
+    case TINYGLTF_MODE_POINTS:
+        return "POINTS";
+    case TINYGLTF_MODE_LINE:
+        return "LINES";
+    case TINYGLTF_MODE_LINE_LOOP:
+        return "LINE_LOOP";
+    case TINYGLTF_MODE_LINE_STRIP:
+        return "LINE_STRIP";
+    case TINYGLTF_MODE_TRIANGLE_STRIP:
+        return "TRIANGLE_STRIP";
+    case TINYGLTF_MODE_TRIANGLE_FAN:
+        return "TRIANGLE_FAN";
+    default:
+        return nullptr;
+    }
+}
+
+void requireTriangles(int mode, const std::string& where) {
+    if (mode == TINYGLTF_MODE_TRIANGLES) return;
+    const char* name = modeName(mode);
+    if (name == nullptr) {
+        throw GltfProblem(where + ": mode " + std::to_string(mode) +
+                          " is not a glTF primitive mode");
+    }
+    throw GltfProblem(where + ": mode " + name + " is not supported, only TRIANGLES");
+}
+
+std::optional<int> attributeAccessor(const tinygltf::Primitive& primitive, const char* name) {
+    const auto attribute = primitive.attributes.find(name);
+    if (attribute == primitive.attributes.end()) return std::nullopt;
+    return attribute->second;
+}
+
+bool isFinite(const glm::vec3& v) {
+    return !glm::any(glm::isnan(v)) && !glm::any(glm::isinf(v));
+}
+
+std::vector<glm::vec3> worldPositions(const tinygltf::Model& model, int accessor,
+                                      const glm::dmat4& world, const std::string& where) {
+    std::vector<glm::vec3> positions = readVec3Floats(model, accessor, where + ": POSITION");
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+        // Transform in double: scenes such as ToyCar scale by 1e-4 in the node tree.
+        positions[i] = glm::vec3(world * glm::dvec4(glm::dvec3(positions[i]), 1.0));
+        if (!isFinite(positions[i])) {
+            throw GltfProblem(where + ": vertex " + std::to_string(i) +
+                              " has a non-finite position");
+        }
+    }
+    return positions;
+}
+
+// Normals transform by the inverse transpose of the linear part. The cofactor matrix is that
+// times the determinant, so it exists even for a singular transform; flipping its sign for a
+// negative determinant keeps each normal on the side of the surface it was on.
+glm::dmat3 normalMatrix(const glm::dmat3& m) {
+    const glm::dmat3 cofactor(glm::cross(m[1], m[2]), glm::cross(m[2], m[0]),
+                              glm::cross(m[0], m[1]));
+    return glm::determinant(m) < 0.0 ? -cofactor : cofactor;
+}
+
+std::vector<glm::vec3> worldNormals(const tinygltf::Model& model, int accessor,
+                                    const glm::dmat4& world, std::size_t vertexCount,
+                                    const std::string& where) {
+    std::vector<glm::vec3> normals = readVec3Floats(model, accessor, where + ": NORMAL");
+    if (normals.size() != vertexCount) {
+        throw GltfProblem(where + ": NORMAL has " + std::to_string(normals.size()) +
+                          " elements but POSITION has " + std::to_string(vertexCount));
+    }
+    const glm::dmat3 transform = normalMatrix(glm::dmat3(world));
+    for (glm::vec3& normal : normals)
+        normal = glm::vec3(transform * glm::dvec3(normal));
+    return normals;
+}
+
+std::vector<std::uint32_t> triangleIndices(const tinygltf::Model& model,
+                                           const tinygltf::Primitive& primitive,
+                                           std::size_t vertexCount, const std::string& where) {
+    std::vector<std::uint32_t> indices;
+    if (primitive.indices >= 0) {
+        indices = readIndices(model, primitive.indices, where + ": indices");
+    } else {
+        indices.resize(vertexCount);
+        std::iota(indices.begin(), indices.end(), 0u);
+    }
+    if (indices.size() % 3 != 0) {
+        throw GltfProblem(where + ": " + std::to_string(indices.size()) +
+                          (primitive.indices >= 0 ? " indices" : " vertices") +
+                          " do not make whole triangles");
+    }
+    for (std::uint32_t index : indices) {
+        if (index >= vertexCount) {
+            throw GltfProblem(where + ": index " + std::to_string(index) + " >= vertex count " +
+                              std::to_string(vertexCount));
+        }
+    }
+    return indices;
+}
+
+WorldGeometry readWorldGeometry(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
+                                const glm::dmat4& world, const std::string& where) {
+    const std::optional<int> position = attributeAccessor(primitive, "POSITION");
+    if (!position) throw GltfProblem(where + ": no POSITION attribute");
+    WorldGeometry geometry;
+    geometry.positions = worldPositions(model, *position, world, where);
+    if (const std::optional<int> normal = attributeAccessor(primitive, "NORMAL")) {
+        geometry.normals = worldNormals(model, *normal, world, geometry.positions.size(), where);
+    }
+    geometry.indices = triangleIndices(model, primitive, geometry.positions.size(), where);
+    geometry.mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
+    return geometry;
+}
+
+// A degenerate triangle (or a zero normal in the file) must still give a unit vector: a NaN in
+// the normals buffer would spread through every path that touches it.
+glm::vec3 unitOr(const glm::vec3& v, const glm::vec3& fallback) {
+    const float length = glm::length(v);
+    return length > 0.0f && std::isfinite(length) ? v / length : fallback;
+}
+
+void appendTriangle(const WorldGeometry& geometry, std::size_t first, Scene& scene) {
+    std::uint32_t corners[3] = {geometry.indices[first], geometry.indices[first + 1],
+                                geometry.indices[first + 2]};
+    if (geometry.mirrored) std::swap(corners[1], corners[2]);
+    const glm::vec3& p0 = geometry.positions[corners[0]];
+    const glm::vec3& p1 = geometry.positions[corners[1]];
+    const glm::vec3& p2 = geometry.positions[corners[2]];
+    const glm::vec3 flat = unitOr(glm::cross(p1 - p0, p2 - p0), glm::vec3(0.0f, 0.0f, 1.0f));
+    for (std::uint32_t corner : corners) {
+        scene.positions.push_back(geometry.positions[corner]);
+        scene.normals.push_back(geometry.normals ? unitOr((*geometry.normals)[corner], flat)
+                                                 : flat);
+    }
+}
+
+} // namespace
+
+void appendPrimitiveTriangles(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
+                              const glm::dmat4& world, std::uint32_t materialIndex,
+                              const std::string& where, Scene& scene) {
+    requireTriangles(primitive.mode, where);
+    const WorldGeometry geometry = readWorldGeometry(model, primitive, world, where);
+    for (std::size_t first = 0; first < geometry.indices.size(); first += 3) {
+        appendTriangle(geometry, first, scene);
+    }
+    scene.materialIndices.insert(scene.materialIndices.end(), geometry.indices.size() / 3,
+                                 materialIndex);
+}
+
+} // namespace vkpt::gltf

@@ -1,0 +1,23 @@
+// gltf_primitives.h — one mesh primitive to world-space triangles with shading normals.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include <glm/glm.hpp>
+#include <tiny_gltf.h>
+
+#include "scene/scene.h"
+
+namespace vkpt::gltf {
+
+// Appends the primitive's triangles, in world space and with material materialIndex, to the
+// scene's triangle soup.
+// Normals are transformed by the inverse transpose, or generated flat when absent; a mirroring
+// transform swaps two corners so that the front face stays the front face. `where` names the
+// primitive ("mesh 3, primitive 0") in messages.
+void appendPrimitiveTriangles(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
+                              const glm::dmat4& world, std::uint32_t materialIndex,
+                              const std::string& where, Scene& scene);
+
+} // namespace vkpt::gltf

@@ -1,0 +1,594 @@
+#!/usr/bin/env python3
+"""generate_loader_scenes.py — writes the small glTF files that test the scene loader.
+
+scenes/loader/   valid files, each exercising one way of storing geometry (index types,
+                 non-indexed, missing normals, interleaved vertices, .glb, transforms, ...).
+scenes/invalid/  broken files, one per kind of bad input; loading each must end with one
+                 InputError line naming the file and the place.
+
+Python 3 standard library only, and deterministic: running it again rewrites the same bytes.
+The outputs are committed; tests/unit/gltf_loader_test.cpp states what each must load to.
+"""
+
+import base64
+import json
+import math
+import re
+import struct
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent
+LOADER_DIR = ROOT / "loader"
+INVALID_DIR = ROOT / "invalid"
+
+GENERATOR = "vkpt scenes/generate_loader_scenes.py"
+
+# glTF constants
+BYTE, UNSIGNED_BYTE, SHORT, UNSIGNED_SHORT, UNSIGNED_INT, FLOAT = 5120, 5121, 5122, 5123, 5125, 5126
+ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER = 34962, 34963
+POINTS, TRIANGLES = 0, 4
+
+# The unit quad in the z = 0 plane, counter-clockwise seen from +Z.
+QUAD_POSITIONS = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)]
+QUAD_NORMALS = [(0, 0, 1)] * 4
+QUAD_INDICES = [0, 1, 2, 0, 2, 3]
+TRIANGLE_POSITIONS = [(0, 0, 0), (1, 0, 0), (0, 1, 0)]
+# sin 45 degrees, the quaternion component of a 90-degree rotation
+S45 = math.sqrt(0.5)
+
+
+def floats(values):
+    flat = [float(c) for v in values for c in (v if isinstance(v, (tuple, list)) else (v,))]
+    return struct.pack("<%df" % len(flat), *flat)
+
+
+def unsigned(values, component_type):
+    code = {UNSIGNED_BYTE: "B", UNSIGNED_SHORT: "H", UNSIGNED_INT: "I"}[component_type]
+    return struct.pack("<%d%s" % (len(values), code), *values)
+
+
+def data_uri(data):
+    return "data:application/octet-stream;base64," + base64.b64encode(data).decode("ascii")
+
+
+class Gltf:
+    """A glTF document with one binary buffer, built up view by view."""
+
+    def __init__(self):
+        self.data = bytearray()
+        self.doc = {"asset": {"version": "2.0", "generator": GENERATOR}}
+
+    def _list(self, key):
+        return self.doc.setdefault(key, [])
+
+    def add(self, key, item):
+        self._list(key).append(item)
+        return len(self.doc[key]) - 1
+
+    def view(self, data, stride=None, target=None):
+        while len(self.data) % 4:
+            self.data.append(0)
+        view = {"buffer": 0, "byteOffset": len(self.data), "byteLength": len(data)}
+        if stride is not None:
+            view["byteStride"] = stride
+        if target is not None:
+            view["target"] = target
+        self.data += data
+        return self.add("bufferViews", view)
+
+    def accessor(self, view, component_type, count, type_, byte_offset=0, **extra):
+        accessor = {"bufferView": view, "componentType": component_type, "count": count,
+                    "type": type_}
+        if byte_offset:
+            accessor["byteOffset"] = byte_offset
+        accessor.update(extra)
+        return self.add("accessors", accessor)
+
+    def positions(self, values):
+        lo = [min(v[i] for v in values) for i in range(3)]
+        hi = [max(v[i] for v in values) for i in range(3)]
+        view = self.view(floats(values), target=ARRAY_BUFFER)
+        return self.accessor(view, FLOAT, len(values), "VEC3", min=lo, max=hi)
+
+    def normals(self, values):
+        return self.accessor(self.view(floats(values), target=ARRAY_BUFFER), FLOAT, len(values),
+                             "VEC3")
+
+    def indices(self, values, component_type=UNSIGNED_SHORT):
+        view = self.view(unsigned(values, component_type), target=ELEMENT_ARRAY_BUFFER)
+        return self.accessor(view, component_type, len(values), "SCALAR")
+
+    def mesh(self, primitives, name=None):
+        mesh = {"primitives": primitives}
+        if name:
+            mesh["name"] = name
+        return self.add("meshes", mesh)
+
+    def node(self, **fields):
+        return self.add("nodes", fields)
+
+    def embed_buffer(self):
+        """Declares the buffer with its bytes inside, as a base64 data URI."""
+        data = self.finish_buffer()
+        self.doc["buffers"][0]["uri"] = data_uri(data)
+
+    def scene(self, nodes):
+        self.doc["scene"] = 0
+        self.doc["scenes"] = [{"nodes": nodes}]
+
+    def finish_buffer(self, uri=None):
+        """Declares the buffer and returns its bytes; uri None means the .glb BIN chunk."""
+        while len(self.data) % 4:
+            self.data.append(0)
+        buffer = {"byteLength": len(self.data)}
+        if uri is not None:
+            buffer["uri"] = uri
+        self.doc["buffers"] = [buffer]
+        return bytes(self.data)
+
+
+def primitive(position, normal=None, indices=None, material=None, mode=None):
+    result = {"attributes": {"POSITION": position}}
+    if normal is not None:
+        result["attributes"]["NORMAL"] = normal
+    if indices is not None:
+        result["indices"] = indices
+    if material is not None:
+        result["material"] = material
+    if mode is not None:
+        result["mode"] = mode
+    return result
+
+
+def json_text(doc):
+    text = json.dumps(doc, indent=1)
+    # Arrays of numbers on one line, so that a person can read the files.
+    return re.sub(r"\[\s+([-+\d.eE,\s]+?)\s+\]",
+                  lambda m: "[" + ", ".join(x.strip() for x in m.group(1).split(",")) + "]",
+                  text) + "\n"
+
+
+def write(path, data):
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_bytes(data.encode("utf-8") if isinstance(data, str) else data)
+
+
+def write_embedded(path, gltf):
+    gltf.embed_buffer()
+    write(path, json_text(gltf.doc))
+
+
+def write_external(path, gltf):
+    data = gltf.finish_buffer(uri=path.with_suffix(".bin").name)
+    write(path.with_suffix(".bin"), data)
+    write(path, json_text(gltf.doc))
+
+
+def glb_bytes(doc, binary):
+    chunk_json = json.dumps(doc, separators=(",", ":")).encode("utf-8")
+    chunk_json += b" " * (-len(chunk_json) % 4)
+    chunks = struct.pack("<II", len(chunk_json), 0x4E4F534A) + chunk_json
+    if binary is not None:
+        binary += b"\0" * (-len(binary) % 4)
+        chunks += struct.pack("<II", len(binary), 0x004E4942) + binary
+    return struct.pack("<4sII", b"glTF", 2, 12 + len(chunks)) + chunks
+
+
+def write_glb(path, gltf):
+    write(path, glb_bytes(gltf.doc, gltf.finish_buffer()))
+
+
+# --------------------------------------------------------------------------------------------
+# Valid scenes
+
+
+def quad(index_type):
+    gltf = Gltf()
+    mesh = gltf.mesh([primitive(gltf.positions(QUAD_POSITIONS), gltf.normals(QUAD_NORMALS),
+                                gltf.indices(QUAD_INDICES, index_type))])
+    gltf.scene([gltf.node(mesh=mesh)])
+    return gltf
+
+
+def non_indexed():
+    corners = [QUAD_POSITIONS[i] for i in QUAD_INDICES]
+    gltf = Gltf()
+    mesh = gltf.mesh([primitive(gltf.positions(corners), gltf.normals([(0, 0, 1)] * 6))])
+    gltf.scene([gltf.node(mesh=mesh)])
+    return gltf
+
+
+def no_normals():
+    # A slanted triangle: its flat normal is (1, 1, 1) / sqrt(3).
+    gltf = Gltf()
+    mesh = gltf.mesh([primitive(gltf.positions([(1, 0, 0), (0, 1, 0), (0, 0, 1)]))])
+    gltf.scene([gltf.node(mesh=mesh)])
+    return gltf
+
+
+INTERLEAVED_NORMALS = [(0, 0, 1), (0, 0.6, 0.8), (0.6, 0, 0.8), (0.8, 0, 0.6)]
+
+
+def interleaved():
+    # position, normal, one padding float per vertex: stride 28, normals at byte offset 12.
+    # The padding holds a value that would show if the stride were ignored.
+    vertices = b"".join(floats([p, n, 1234.5])
+                        for p, n in zip(QUAD_POSITIONS, INTERLEAVED_NORMALS))
+    gltf = Gltf()
+    view = gltf.view(vertices, stride=28, target=ARRAY_BUFFER)
+    position = gltf.accessor(view, FLOAT, 4, "VEC3", min=[0, 0, 0], max=[1, 1, 0])
+    normal = gltf.accessor(view, FLOAT, 4, "VEC3", byte_offset=12)
+    mesh = gltf.mesh([primitive(position, normal, gltf.indices(QUAD_INDICES, UNSIGNED_BYTE))])
+    gltf.scene([gltf.node(mesh=mesh)])
+    return gltf
+
+
+def binary():
+    gltf = quad(UNSIGNED_SHORT)
+    gltf.doc["nodes"][0]["translation"] = [0, 0, -2]
+    return gltf
+
+
+def negative_scale():
+    # The same triangle plain, mirrored in x (with normals) and mirrored in z (flat normals).
+    gltf = Gltf()
+    position = gltf.positions(TRIANGLE_POSITIONS)
+    with_normals = gltf.mesh([primitive(position, gltf.normals([(0, 0, 1)] * 3))])
+    without_normals = gltf.mesh([primitive(position)])
+    gltf.scene([gltf.node(name="plain", mesh=with_normals),
+                gltf.node(name="mirror_x", mesh=with_normals, scale=[-1, 1, 1]),
+                gltf.node(name="mirror_z", mesh=without_normals, scale=[1, 1, -1])])
+    return gltf
+
+
+def transforms():
+    # Node 0 (T, R, S) and node 1 (the same as a matrix) must agree; node 3 is a rotated child
+    # of the translated node 2.
+    gltf = Gltf()
+    mesh = gltf.mesh([primitive(gltf.positions([(1, 0, 0), (0, 1, 0), (0, 0, 1)]))])
+    trs = gltf.node(name="trs", mesh=mesh, translation=[1, 2, 3], rotation=[0, S45, 0, S45],
+                    scale=[2, 2, 2])
+    matrix = gltf.node(name="matrix", mesh=mesh,
+                       matrix=[0, 0, -2, 0, 0, 2, 0, 0, 2, 0, 0, 0, 1, 2, 3, 1])
+    child = gltf.node(name="child", mesh=mesh, rotation=[0, 0, S45, S45])
+    parent = gltf.node(name="parent", translation=[10, 0, 0], children=[child])
+    gltf.scene([trs, matrix, parent])
+    return gltf
+
+
+def materials():
+    gltf = Gltf()
+    gltf.doc["extensionsUsed"] = ["KHR_materials_emissive_strength"]
+    gltf.doc["materials"] = [
+        {"name": "defaults"},
+        {"name": "factors", "doubleSided": True, "alphaMode": "MASK", "alphaCutoff": 0.25,
+         "pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.25, 0.125, 0.75],
+                                  "metallicFactor": 0.25, "roughnessFactor": 0.5}},
+        {"name": "emissive", "emissiveFactor": [1, 0.5, 0.25],
+         "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 4}}},
+        {"name": "blend", "alphaMode": "BLEND"},
+    ]
+    position = gltf.positions(TRIANGLE_POSITIONS)
+    mesh = gltf.mesh([primitive(position, material=m) for m in (0, 1, 2, 3, None)])
+    gltf.scene([gltf.node(mesh=mesh)])
+    return gltf
+
+
+def default_scene():
+    gltf = Gltf()
+    mesh = gltf.mesh([primitive(gltf.positions(TRIANGLE_POSITIONS))])
+    hidden = gltf.node(name="in_scene_0", mesh=mesh)
+    shown = gltf.node(name="in_scene_1", mesh=mesh, translation=[0, 0, 5])
+    gltf.doc["scenes"] = [{"nodes": [hidden]}, {"nodes": [shown]}]
+    gltf.doc["scene"] = 1
+    return gltf
+
+
+def cameras():
+    # Cameras come in node-walk order: "rotated" (node 1), then "child" (node 4, under a parent
+    # rotated 90 degrees about X); the orthographic one is skipped.
+    gltf = Gltf()
+    gltf.doc["cameras"] = [
+        {"name": "rotated", "type": "perspective", "perspective": {"yfov": 0.5, "znear": 0.1}},
+        {"name": "ortho", "type": "orthographic",
+         "orthographic": {"xmag": 1, "ymag": 1, "znear": 0.1, "zfar": 10}},
+        {"name": "child", "type": "perspective",
+         "perspective": {"yfov": 1.0, "znear": 0.1, "aspectRatio": 1.5}},
+    ]
+    mesh = gltf.mesh([primitive(gltf.positions(TRIANGLE_POSITIONS))])
+    geometry = gltf.node(name="geometry", mesh=mesh)
+    rotated = gltf.node(name="rotated_camera", camera=0, translation=[1, 2, 3],
+                        rotation=[0, S45, 0, S45], scale=[2, 2, 2])
+    ortho = gltf.node(name="ortho_camera", camera=1)
+    child = gltf.node(name="child_camera", camera=2)
+    parent = gltf.node(name="camera_parent", translation=[0, 0, 10], rotation=[S45, 0, 0, S45],
+                       children=[child])
+    gltf.scene([geometry, rotated, ortho, parent])
+    return gltf
+
+
+def extensions():
+    gltf = quad(UNSIGNED_SHORT)
+    gltf.doc["extensionsUsed"] = ["KHR_materials_emissive_strength", "KHR_texture_transform",
+                                  "NV_materials_mdl", "KHR_texture_transform"]
+    return gltf
+
+
+VALID_SCENES = [
+    # (file, builder, writer, what it exercises)
+    ("indices_u8.gltf", lambda: quad(UNSIGNED_BYTE), write_embedded,
+     "unit quad, UNSIGNED_BYTE indices"),
+    ("indices_u16.gltf", lambda: quad(UNSIGNED_SHORT), write_external,
+     "unit quad, UNSIGNED_SHORT indices, external indices_u16.bin"),
+    ("indices_u32.gltf", lambda: quad(UNSIGNED_INT), write_embedded,
+     "unit quad, UNSIGNED_INT indices"),
+    ("non_indexed.gltf", non_indexed, write_embedded, "unit quad without indices"),
+    ("no_normals.gltf", no_normals, write_embedded,
+     "slanted triangle without NORMAL: flat normal (1, 1, 1) / sqrt(3)"),
+    ("interleaved.gltf", interleaved, write_embedded,
+     "unit quad, POSITION and NORMAL interleaved with padding (byteStride 28)"),
+    ("binary.glb", binary, write_glb, "unit quad in a .glb, translated to z = -2"),
+    ("negative_scale.gltf", negative_scale, write_embedded,
+     "a triangle plain, mirrored in x and mirrored in z (winding flip)"),
+    ("transforms.gltf", transforms, write_embedded,
+     "T/R/S node and the same as a matrix; a rotated child of a translated parent"),
+    ("materials.gltf", materials, write_embedded,
+     "material factors, emissive strength, alpha modes, a primitive without material"),
+    ("default_scene.gltf", default_scene, write_embedded, "two scenes, `scene` selects the second"),
+    ("cameras.gltf", cameras, write_embedded,
+     "perspective cameras on rotated and child nodes, one orthographic camera"),
+    ("extensions.gltf", extensions, write_embedded,
+     "extensionsUsed with supported, unsupported and repeated entries"),
+]
+
+
+def write_readme(directory, title, rows):
+    lines = ["# " + title, "",
+             "Generated by `scenes/generate_loader_scenes.py`; do not edit by hand.", "",
+             "| File | What it holds |", "|---|---|"]
+    lines += ["| `%s` | %s |" % (name, text) for name, text in rows]
+    write(directory / "README.md", "\n".join(lines) + "\n")
+
+
+def write_valid_scenes():
+    for name, build, writer, _ in VALID_SCENES:
+        writer(LOADER_DIR / name, build())
+    write_readme(LOADER_DIR, "Loader test scenes (valid)",
+                 [(name, text) for name, _, _, text in VALID_SCENES])
+
+
+# --------------------------------------------------------------------------------------------
+# Invalid scenes: each starts from one good triangle and breaks one thing.
+
+
+DEFAULT = object()
+
+
+def triangle(normal=DEFAULT, indices=DEFAULT, **fields):
+    """Accessor and buffer view 0 are POSITION, 1 NORMAL, 2 indices (unless left out)."""
+    gltf = Gltf()
+    position = gltf.positions(TRIANGLE_POSITIONS)
+    if normal is DEFAULT:
+        normal = gltf.normals([(0, 0, 1)] * 3)
+    if indices is DEFAULT:
+        indices = gltf.indices([0, 1, 2])
+    mesh = gltf.mesh([primitive(position, normal, indices, **fields)])
+    gltf.scene([gltf.node(mesh=mesh)])
+    return gltf
+
+
+def glb_of(gltf):
+    return glb_bytes(gltf.doc, gltf.finish_buffer())
+
+
+def embedded_text(gltf):
+    gltf.embed_buffer()
+    return json_text(gltf.doc)
+
+
+def garbage():
+    # Deterministic noise that starts like nothing in particular.
+    state, out = 12345, bytearray()
+    for _ in range(256):
+        state = (state * 1103515245 + 12345) % (1 << 31)
+        out.append(state >> 23)
+    return bytes(out)
+
+
+def missing_buffer():
+    gltf = triangle()
+    gltf.finish_buffer(uri="missing_buffer.bin")
+    return json_text(gltf.doc)
+
+
+def short_buffer():
+    """The .bin is 12 bytes shorter than the buffer's byteLength."""
+    gltf = triangle()
+    data = gltf.finish_buffer(uri="short_buffer.bin")
+    write(INVALID_DIR / "short_buffer.bin", data[:-12])
+    return json_text(gltf.doc)
+
+
+def short_bin_chunk():
+    gltf = triangle()
+    data = gltf.finish_buffer()
+    gltf.doc["buffers"][0]["byteLength"] = len(data) + 64
+    return glb_bytes(gltf.doc, data)
+
+
+def buffer_view_out_of_range():
+    gltf = triangle()
+    gltf.doc["bufferViews"][0]["byteLength"] += 4
+    gltf.doc["bufferViews"][0]["byteOffset"] = 100
+    return embedded_text(gltf)
+
+
+def accessor_out_of_range():
+    gltf = triangle(normal=None, indices=None)
+    gltf.doc["accessors"][0]["count"] = 4
+    return embedded_text(gltf)
+
+
+def stride_too_small():
+    gltf = triangle()
+    gltf.doc["bufferViews"][0]["byteStride"] = 8
+    return embedded_text(gltf)
+
+
+def index_out_of_range():
+    # The bad index is in mesh 1, primitive 1, so that the message must name the right place.
+    gltf = triangle()
+    position = gltf.doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"]
+    good = primitive(position, indices=gltf.indices([2, 1, 0]))
+    bad = primitive(position, indices=gltf.indices([0, 1, 3]))
+    mesh = gltf.mesh([good, bad])
+    gltf.doc["scenes"][0]["nodes"].append(gltf.node(mesh=mesh))
+    return embedded_text(gltf)
+
+
+def nan_position():
+    gltf = Gltf()
+    nan = struct.unpack("<f", struct.pack("<I", 0x7FC00000))[0]
+    view = gltf.view(floats([(0, 0, 0), (1, 0, 0), (0, nan, 0)]), target=ARRAY_BUFFER)
+    position = gltf.accessor(view, FLOAT, 3, "VEC3")
+    gltf.scene([gltf.node(mesh=gltf.mesh([primitive(position)]))])
+    return embedded_text(gltf)
+
+
+def points_mode():
+    return embedded_text(triangle(mode=POINTS))
+
+
+def position_not_float():
+    gltf = Gltf()
+    view = gltf.view(unsigned([0, 0, 0, 1, 0, 0, 0, 1, 0], UNSIGNED_SHORT), target=ARRAY_BUFFER)
+    position = gltf.accessor(view, UNSIGNED_SHORT, 3, "VEC3")
+    gltf.scene([gltf.node(mesh=gltf.mesh([primitive(position)]))])
+    return embedded_text(gltf)
+
+
+def indices_not_integer():
+    gltf = triangle(normal=None, indices=None)
+    view = gltf.view(floats([0, 1, 2]), target=ELEMENT_ARRAY_BUFFER)
+    gltf.doc["meshes"][0]["primitives"][0]["indices"] = gltf.accessor(view, FLOAT, 3, "SCALAR")
+    return embedded_text(gltf)
+
+
+def no_position():
+    gltf = triangle()
+    attributes = gltf.doc["meshes"][0]["primitives"][0]["attributes"]
+    del attributes["POSITION"]
+    return embedded_text(gltf)
+
+
+def sparse_accessor():
+    gltf = triangle(normal=None, indices=None)
+    sparse_indices = gltf.view(unsigned([1], UNSIGNED_SHORT))
+    sparse_values = gltf.view(floats([(2, 0, 0)]))
+    gltf.doc["accessors"][0]["sparse"] = {
+        "count": 1, "indices": {"bufferView": sparse_indices, "componentType": UNSIGNED_SHORT},
+        "values": {"bufferView": sparse_values}}
+    return embedded_text(gltf)
+
+
+def no_triangles():
+    gltf = triangle()
+    gltf.doc["nodes"].append({"name": "empty"})
+    gltf.doc["scenes"][0]["nodes"] = [1]
+    return embedded_text(gltf)
+
+
+def required_extension():
+    gltf = triangle()
+    gltf.doc["extensionsUsed"] = ["KHR_draco_mesh_compression"]
+    gltf.doc["extensionsRequired"] = ["KHR_draco_mesh_compression"]
+    return embedded_text(gltf)
+
+
+def node_cycle():
+    gltf = triangle()
+    gltf.doc["nodes"][0]["children"] = [1]
+    gltf.doc["nodes"].append({"name": "loops_back", "children": [0]})
+    return embedded_text(gltf)
+
+
+def missing_node():
+    gltf = triangle()
+    gltf.doc["nodes"].append({"name": "empty"})
+    gltf.doc["scenes"][0]["nodes"] = [0, 1, 7]
+    return embedded_text(gltf)
+
+
+def missing_material():
+    gltf = triangle(material=3)
+    gltf.doc["materials"] = [{"name": "first"}, {"name": "second"}]
+    return embedded_text(gltf)
+
+
+def partial_triangle():
+    gltf = triangle()
+    gltf.doc["meshes"][0]["primitives"][0]["indices"] = gltf.indices([0, 1, 2, 0])
+    return embedded_text(gltf)
+
+
+def normal_count_mismatch():
+    gltf = triangle()
+    gltf.doc["accessors"][1]["count"] = 2  # NORMAL
+    return embedded_text(gltf)
+
+
+def missing_accessor():
+    gltf = triangle()
+    gltf.doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 7
+    return embedded_text(gltf)
+
+
+def write_invalid_scenes():
+    good_glb = glb_of(triangle())
+    files = [
+        # (file, bytes or text, what is broken)
+        ("empty.glb", b"", "zero bytes"),
+        ("not_gltf.gltf", "This is not a glTF file.\n", "plain text"),
+        ("garbage.glb", garbage(), "noise without the glTF magic"),
+        ("no_asset.gltf", json_text({"scenes": [{"nodes": []}]}), "JSON without `asset`"),
+        ("truncated.glb", good_glb[: len(good_glb) // 2], "a .glb cut in half"),
+        ("missing_buffer.gltf", missing_buffer(), "its .bin does not exist"),
+        ("short_buffer.gltf", short_buffer(), "its .bin is shorter than byteLength"),
+        ("short_bin_chunk.glb", short_bin_chunk(), "BIN chunk shorter than byteLength"),
+        ("buffer_view_out_of_range.gltf", buffer_view_out_of_range(),
+         "a buffer view past the end of its buffer"),
+        ("accessor_out_of_range.gltf", accessor_out_of_range(),
+         "an accessor past the end of its buffer view"),
+        ("stride_too_small.gltf", stride_too_small(), "byteStride smaller than an element"),
+        ("index_out_of_range.gltf", index_out_of_range(),
+         "index 3 of 3 vertices, in mesh 1, primitive 1"),
+        ("nan_position.gltf", nan_position(), "a NaN vertex position"),
+        ("points_mode.gltf", points_mode(), "a POINTS primitive"),
+        ("position_not_float.gltf", position_not_float(), "UNSIGNED_SHORT positions"),
+        ("indices_not_integer.gltf", indices_not_integer(), "FLOAT indices"),
+        ("no_position.gltf", no_position(), "a primitive without POSITION"),
+        ("sparse_accessor.gltf", sparse_accessor(), "a sparse POSITION accessor"),
+        ("no_triangles.gltf", no_triangles(), "a scene whose only node has no mesh"),
+        ("required_extension.gltf", required_extension(),
+         "requires KHR_draco_mesh_compression"),
+        ("node_cycle.gltf", node_cycle(), "node 0 is its own grandchild"),
+        ("missing_node.gltf", missing_node(), "the scene lists node 7 of 2"),
+        ("missing_material.gltf", missing_material(), "material 3 of 2"),
+        ("partial_triangle.gltf", partial_triangle(), "4 indices"),
+        ("normal_count_mismatch.gltf", normal_count_mismatch(), "2 normals for 3 positions"),
+        ("missing_accessor.gltf", missing_accessor(), "POSITION is accessor 7 of 3"),
+    ]
+    for name, data, _ in files:
+        write(INVALID_DIR / name, data)
+    write_readme(INVALID_DIR, "Broken glTF files (invalid on purpose)",
+                 [(name, text) for name, _, text in files] +
+                 [("short_buffer.bin", "the short buffer of `short_buffer.gltf`")])
+
+
+def main():
+    write_valid_scenes()
+    write_invalid_scenes()
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,95 @@
+// reference_bench.cpp — prints vkpt-ref's figures (BVH build time, Mrays/s, work per ray) for
+// the Cornell box and the largest shared scene; a benchmark, never a pass/fail test.
+//
+//   reference_bench [--spp N] [--res W H] [--runs N] [scene ...]
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "common/errors.h"
+#include "prepare/prepared_scene.h"
+#include "reference/reference_renderer.h"
+#include "scene/camera.h"
+#include "scene/gltf_loader.h"
+
+namespace {
+
+using namespace vkpt;
+
+struct BenchOptions {
+    std::uint32_t spp = 4;
+    std::uint32_t width = 256;
+    std::uint32_t height = 256;
+    int runs = 3;
+    std::vector<std::string> scenes;
+};
+
+BenchOptions parse(int argc, char** argv) {
+    BenchOptions o;
+    for (int i = 1; i < argc; ++i) {
+        std::string a = argv[i];
+        if (a == "--spp" && i + 1 < argc) o.spp = std::uint32_t(std::stoul(argv[++i]));
+        else if (a == "--runs" && i + 1 < argc) o.runs = std::stoi(argv[++i]);
+        else if (a == "--res" && i + 2 < argc) {
+            o.width = std::uint32_t(std::stoul(argv[++i]));
+            o.height = std::uint32_t(std::stoul(argv[++i]));
+        } else o.scenes.push_back(a);
+    }
+    if (o.scenes.empty())
+        o.scenes = {std::string(VKPT_SCENES_DIR) + "/cornell-box.gltf",
+                    std::string(VKPT_SCENES_DIR) + "/../../shared/scenes/TransmissionTest/TransmissionTest.glb"};
+    return o;
+}
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    return values[values.size() / 2];
+}
+
+void benchScene(const std::string& path, const BenchOptions& o) {
+    LoadOptions loadOptions;
+    loadOptions.warnUnsupportedExtensions = false;
+    Scene scene = loadGltfScene(path, loadOptions);
+    std::vector<double> buildSeconds, renderSeconds, mrays;
+    RenderStats stats;
+    PreparedScene prepared;
+    for (int run = 0; run < o.runs; ++run) {
+        prepared = prepareScene(scene);
+        buildSeconds.push_back(prepared.bvhStats.buildSeconds);
+    }
+    RenderSettings settings;
+    settings.width = o.width;
+    settings.height = o.height;
+    settings.samplesPerPixel = o.spp;
+    settings.quiet = true;
+    gpu::Camera camera = makeGpuCamera(selectCamera(scene, std::nullopt), o.width, o.height);
+    for (int run = 0; run < o.runs; ++run) {
+        renderReference(prepared, camera, settings, stats);
+        renderSeconds.push_back(stats.seconds);
+        mrays.push_back(stats.megaRaysPerSecond());
+        std::fprintf(stderr, "  run %d/%d: %.3f s\n", run + 1, o.runs, stats.seconds);
+    }
+    std::printf("%s\n  triangles %zu, BVH %u nodes, depth %u, SAH %.2f, build %.3f s (median of %d)\n",
+                path.c_str(), scene.triangleCount(), prepared.bvhStats.nodeCount,
+                prepared.bvhStats.maxDepth, double(prepared.bvhStats.sahCost), median(buildSeconds), o.runs);
+    std::printf("  render %ux%u @ %u spp: %.3f s, %.2f Mrays/s (medians of %d), %.1f nodes and "
+                "%.1f triangle tests per ray, %.2f rays per sample\n",
+                o.width, o.height, o.spp, median(renderSeconds), median(mrays), o.runs,
+                stats.nodesPerRay(), stats.trianglesPerRay(),
+                double(stats.rays.total()) / double(stats.samplesTaken));
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    try {
+        BenchOptions options = parse(argc, argv);
+        for (const std::string& path : options.scenes) benchScene(path, options);
+        return 0;
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "reference_bench: error: %s\n", error.what());
+        return 1;
+    }
+}

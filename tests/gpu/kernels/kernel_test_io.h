@@ -1,0 +1,115 @@
+// kernel_test_io.h — the records that test kernels read and write, declared once for the C++
+// tests and the GLSL kernels, under the same layout rules as shared/host_device.h (vec4s and
+// 4-byte scalars only, so std430 and C++ agree without padding).
+#ifndef VKPT_KERNEL_TEST_IO_H
+#define VKPT_KERNEL_TEST_IO_H
+
+#include "shared/host_device.h"
+
+#ifdef __cplusplus
+namespace vkpt::gpu::test {
+#endif
+
+// run_rng: one call of randomBits and randomFloats per record.
+struct RngInput {
+    uint seed;
+    uint pixel;
+    uint sampleIndex;
+    uint bounce;
+    uint dimension;
+    uint unused0;
+    uint unused1;
+    uint unused2;
+};
+struct RngOutput {
+    uvec4 bits;
+    vec4 floats;
+};
+
+// run_sampling: every function of shared/sampling.h on one record.
+struct SamplingInput {
+    vec4 u;      // .xy: the uniform sample of the warps
+    vec4 normal; // .xyz: unit normal for makeBasis; .w: cos θ for cosineHemispherePdf
+    vec4 mis;    // powerHeuristic(nf, fPdf, ng, gPdf)
+    vec4 color;  // .rgb for luminance
+};
+struct SamplingOutput {
+    vec4 cosineDirection;  // sampleCosineHemisphere(u); .w: cosineHemispherePdf(normal.w)
+    vec4 uniformDirection; // sampleUniformHemisphere(u); .w: uniformHemispherePdf()
+    vec4 barycentrics;     // sampleTriangleBarycentrics(u); .w: luminance(color)
+    vec4 tangent;          // makeBasis(normal).tangent; .w: powerHeuristic(mis)
+    vec4 bitangent;        // makeBasis(normal).bitangent
+    vec4 worldDirection;   // basisToWorld(makeBasis(normal), cosineDirection)
+};
+
+// run_intersect: one ray against one triangle and one box.
+struct IntersectInput {
+    vec4 origin;    // .w: tMin
+    vec4 direction; // .w: tMax
+    vec4 v0;
+    vec4 v1;
+    vec4 v2;
+    vec4 boxMin;
+    vec4 boxMax;
+};
+struct IntersectOutput {
+    vec4 triangle;         // t, u, v of intersectTriangle
+    uvec4 hits;            // .x: triangle hit, .y: box hit (entry < VKPT_FAR)
+    vec4 box;              // .x: intersectBox entry distance
+    vec4 inverseDirection; // safeInverseDirection(direction)
+    vec4 faceNormal;       // triangleFaceNormal
+};
+
+// read_layouts / write_layouts: each shared struct flattened to 32-bit words in declaration
+// order, one region per struct type, LAYOUT_COUNT records per region.
+#define LAYOUT_COUNT 5u
+#define LAYOUT_WORDS_BVH_NODE 8u
+#define LAYOUT_WORDS_TRIANGLE 12u
+#define LAYOUT_WORDS_TRIANGLE_NORMALS 12u
+#define LAYOUT_WORDS_MATERIAL 12u
+#define LAYOUT_WORDS_EMITTER 4u
+#define LAYOUT_WORDS_CAMERA 16u
+#define LAYOUT_OFFSET_BVH_NODES 0u
+#define LAYOUT_OFFSET_TRIANGLES (LAYOUT_OFFSET_BVH_NODES + LAYOUT_COUNT * LAYOUT_WORDS_BVH_NODE)
+#define LAYOUT_OFFSET_TRIANGLE_NORMALS                                                             \
+    (LAYOUT_OFFSET_TRIANGLES + LAYOUT_COUNT * LAYOUT_WORDS_TRIANGLE)
+#define LAYOUT_OFFSET_MATERIALS                                                                    \
+    (LAYOUT_OFFSET_TRIANGLE_NORMALS + LAYOUT_COUNT * LAYOUT_WORDS_TRIANGLE_NORMALS)
+#define LAYOUT_OFFSET_EMITTERS (LAYOUT_OFFSET_MATERIALS + LAYOUT_COUNT * LAYOUT_WORDS_MATERIAL)
+#define LAYOUT_OFFSET_CAMERAS (LAYOUT_OFFSET_EMITTERS + LAYOUT_COUNT * LAYOUT_WORDS_EMITTER)
+#define LAYOUT_TOTAL_WORDS (LAYOUT_OFFSET_CAMERAS + LAYOUT_COUNT * LAYOUT_WORDS_CAMERA)
+
+// count_loop_iterations: per invocation, how many iterations each loop really ran.
+struct LoopCounts {
+    uint first;  // a loop of firstLoop iterations
+    uint second; // then a loop of secondLoop iterations
+    uint nested; // then outer × inner iterations of a nested loop, counted in the inner body
+    uint unused;
+};
+#define ALL_INVOCATIONS 0xffffffffu
+struct LoopParams {
+    uint firstLoop;
+    uint secondLoop;
+    uint outerLoop;
+    uint innerLoop;
+    uint firstLoopInvocation; // the only invocation that runs the first loop, or ALL_INVOCATIONS
+    uint unused0;
+    uint unused1;
+    uint unused2;
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(RngInput) == 32 && sizeof(RngOutput) == 32);
+static_assert(sizeof(SamplingInput) == 64 && sizeof(SamplingOutput) == 96);
+static_assert(sizeof(IntersectInput) == 112 && sizeof(IntersectOutput) == 80);
+static_assert(sizeof(BvhNode) == 4 * LAYOUT_WORDS_BVH_NODE &&
+              sizeof(Triangle) == 4 * LAYOUT_WORDS_TRIANGLE &&
+              sizeof(TriangleNormals) == 4 * LAYOUT_WORDS_TRIANGLE_NORMALS &&
+              sizeof(Material) == 4 * LAYOUT_WORDS_MATERIAL &&
+              sizeof(Emitter) == 4 * LAYOUT_WORDS_EMITTER &&
+              sizeof(Camera) == 4 * LAYOUT_WORDS_CAMERA);
+static_assert(sizeof(LoopCounts) == 16 && sizeof(LoopParams) == 32);
+} // namespace vkpt::gpu::test
+#endif
+
+#endif // VKPT_KERNEL_TEST_IO_H

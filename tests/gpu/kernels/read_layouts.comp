@@ -1,0 +1,86 @@
+// read_layouts.comp — reads every field of every shared struct through its GLSL (std430)
+// declaration and writes it as 32-bit words in declaration order, so the host can compare the
+// words with the bytes of its C++ layout.
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "kernel_test_io.h"
+#include "lib/buffers.glsl"
+#include "shared/host_device.h"
+
+layout(local_size_x = WORKGROUP_SIZE) in;
+
+VKPT_READONLY_BUFFER(0, BvhNode, bvhNodes)
+VKPT_READONLY_BUFFER(1, Triangle, triangles)
+VKPT_READONLY_BUFFER(2, TriangleNormals, triangleNormals)
+VKPT_READONLY_BUFFER(3, Material, materials)
+VKPT_READONLY_BUFFER(4, Emitter, emitters)
+VKPT_READONLY_BUFFER(5, Camera, cameras)
+VKPT_WRITEONLY_BUFFER(6, uint, words)
+
+uint cursor;
+
+void putUint(uint value) {
+    words[cursor] = value;
+    cursor += 1u;
+}
+void putFloat(float value) {
+    putUint(floatBitsToUint(value));
+}
+void putVec3(vec3 value) {
+    putFloat(value.x);
+    putFloat(value.y);
+    putFloat(value.z);
+}
+void putVec4(vec4 value) {
+    putVec3(value.xyz);
+    putFloat(value.w);
+}
+
+void main() {
+    uint i = gl_GlobalInvocationID.x;
+    if (i >= LAYOUT_COUNT) return;
+
+    cursor = LAYOUT_OFFSET_BVH_NODES + i * LAYOUT_WORDS_BVH_NODE;
+    putVec3(bvhNodes[i].boundsMin);
+    putUint(bvhNodes[i].missIndex);
+    putVec3(bvhNodes[i].boundsMax);
+    putUint(bvhNodes[i].leafTriangles);
+
+    cursor = LAYOUT_OFFSET_TRIANGLES + i * LAYOUT_WORDS_TRIANGLE;
+    putVec3(triangles[i].v0);
+    putUint(triangles[i].materialIndex);
+    putVec3(triangles[i].v1);
+    putUint(triangles[i].emitterIndex);
+    putVec3(triangles[i].v2);
+    putUint(triangles[i].sourceIndex);
+
+    cursor = LAYOUT_OFFSET_TRIANGLE_NORMALS + i * LAYOUT_WORDS_TRIANGLE_NORMALS;
+    putVec4(triangleNormals[i].n0);
+    putVec4(triangleNormals[i].n1);
+    putVec4(triangleNormals[i].n2);
+
+    cursor = LAYOUT_OFFSET_MATERIALS + i * LAYOUT_WORDS_MATERIAL;
+    putVec4(materials[i].baseColor);
+    putVec3(materials[i].emission);
+    putUint(materials[i].flags);
+    putFloat(materials[i].metallic);
+    putFloat(materials[i].roughness);
+    putFloat(materials[i].alphaCutoff);
+    putUint(materials[i].alphaMode);
+
+    cursor = LAYOUT_OFFSET_EMITTERS + i * LAYOUT_WORDS_EMITTER;
+    putUint(emitters[i].triangleIndex);
+    putFloat(emitters[i].area);
+    putFloat(emitters[i].selectProbability);
+    putFloat(emitters[i].cdf);
+
+    cursor = LAYOUT_OFFSET_CAMERAS + i * LAYOUT_WORDS_CAMERA;
+    putVec3(cameras[i].position);
+    putFloat(cameras[i].tanHalfFovY);
+    putVec3(cameras[i].right);
+    putFloat(cameras[i].aspect);
+    putVec3(cameras[i].up);
+    putUint(cameras[i].width);
+    putVec3(cameras[i].forward);
+    putUint(cameras[i].height);
+}

@@ -1,0 +1,87 @@
+// write_layouts.comp — the reverse of read_layouts: takes 32-bit words in declaration order and
+// stores them field by field through the GLSL declarations, so the host can compare the bytes
+// with its C++ layout.
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "kernel_test_io.h"
+#include "lib/buffers.glsl"
+#include "shared/host_device.h"
+
+layout(local_size_x = WORKGROUP_SIZE) in;
+
+VKPT_WRITEONLY_BUFFER(0, BvhNode, bvhNodes)
+VKPT_WRITEONLY_BUFFER(1, Triangle, triangles)
+VKPT_WRITEONLY_BUFFER(2, TriangleNormals, triangleNormals)
+VKPT_WRITEONLY_BUFFER(3, Material, materials)
+VKPT_WRITEONLY_BUFFER(4, Emitter, emitters)
+VKPT_WRITEONLY_BUFFER(5, Camera, cameras)
+VKPT_READONLY_BUFFER(6, uint, words)
+
+uint cursor;
+
+uint takeUint() {
+    cursor += 1u;
+    return words[cursor - 1u];
+}
+float takeFloat() {
+    return uintBitsToFloat(takeUint());
+}
+vec3 takeVec3() {
+    float x = takeFloat();
+    float y = takeFloat();
+    float z = takeFloat();
+    return vec3(x, y, z);
+}
+vec4 takeVec4() {
+    vec3 xyz = takeVec3();
+    return vec4(xyz, takeFloat());
+}
+
+void main() {
+    uint i = gl_GlobalInvocationID.x;
+    if (i >= LAYOUT_COUNT) return;
+
+    cursor = LAYOUT_OFFSET_BVH_NODES + i * LAYOUT_WORDS_BVH_NODE;
+    bvhNodes[i].boundsMin = takeVec3();
+    bvhNodes[i].missIndex = takeUint();
+    bvhNodes[i].boundsMax = takeVec3();
+    bvhNodes[i].leafTriangles = takeUint();
+
+    cursor = LAYOUT_OFFSET_TRIANGLES + i * LAYOUT_WORDS_TRIANGLE;
+    triangles[i].v0 = takeVec3();
+    triangles[i].materialIndex = takeUint();
+    triangles[i].v1 = takeVec3();
+    triangles[i].emitterIndex = takeUint();
+    triangles[i].v2 = takeVec3();
+    triangles[i].sourceIndex = takeUint();
+
+    cursor = LAYOUT_OFFSET_TRIANGLE_NORMALS + i * LAYOUT_WORDS_TRIANGLE_NORMALS;
+    triangleNormals[i].n0 = takeVec4();
+    triangleNormals[i].n1 = takeVec4();
+    triangleNormals[i].n2 = takeVec4();
+
+    cursor = LAYOUT_OFFSET_MATERIALS + i * LAYOUT_WORDS_MATERIAL;
+    materials[i].baseColor = takeVec4();
+    materials[i].emission = takeVec3();
+    materials[i].flags = takeUint();
+    materials[i].metallic = takeFloat();
+    materials[i].roughness = takeFloat();
+    materials[i].alphaCutoff = takeFloat();
+    materials[i].alphaMode = takeUint();
+
+    cursor = LAYOUT_OFFSET_EMITTERS + i * LAYOUT_WORDS_EMITTER;
+    emitters[i].triangleIndex = takeUint();
+    emitters[i].area = takeFloat();
+    emitters[i].selectProbability = takeFloat();
+    emitters[i].cdf = takeFloat();
+
+    cursor = LAYOUT_OFFSET_CAMERAS + i * LAYOUT_WORDS_CAMERA;
+    cameras[i].position = takeVec3();
+    cameras[i].tanHalfFovY = takeFloat();
+    cameras[i].right = takeVec3();
+    cameras[i].aspect = takeFloat();
+    cameras[i].up = takeVec3();
+    cameras[i].width = takeUint();
+    cameras[i].forward = takeVec3();
+    cameras[i].height = takeUint();
+}

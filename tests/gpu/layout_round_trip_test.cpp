@@ -1,0 +1,140 @@
+// layout_round_trip_test.cpp — the GLSL (std430) and C++ layouts of every struct in
+// shared/host_device.h agree byte for byte: the device reads each field of C++-written structs
+// and writes it out as words in declaration order, and writes each field of structs from
+// words; both must match the C++ bytes exactly. Every word is distinct, so a swapped or
+// shifted field cannot go unnoticed.
+#include "gpu_test_support.h"
+#include "kernel_test_io.h"
+
+#include <cstring>
+
+namespace vkpt::test {
+namespace {
+
+using namespace vkpt::gpu;
+
+// Float fields get distinct normal numbers (no NaN or denormal a device could canonicalise or
+// flush); uint fields get distinct patterns with high bits set.
+class Values {
+public:
+    float f() { return 1000.0f + static_cast<float>(next_++) * 0.25f; }
+    uint u() { return 0xA5000000u | next_++; }
+    vec3 v3() { return {f(), f(), f()}; }
+    vec4 v4() { return {f(), f(), f(), f()}; }
+
+private:
+    uint next_ = 1;
+};
+
+struct SharedStructs {
+    std::vector<BvhNode> bvhNodes;
+    std::vector<Triangle> triangles;
+    std::vector<TriangleNormals> triangleNormals;
+    std::vector<Material> materials;
+    std::vector<Emitter> emitters;
+    std::vector<Camera> cameras;
+};
+
+// Field by field in declaration order (designated initialisers would let a field be missed).
+SharedStructs makeStructs() {
+    Values x;
+    SharedStructs s;
+    for (uint i = 0; i < LAYOUT_COUNT; ++i) {
+        s.bvhNodes.push_back({x.v3(), x.u(), x.v3(), x.u()});
+        s.triangles.push_back({x.v3(), x.u(), x.v3(), x.u(), x.v3(), x.u()});
+        s.triangleNormals.push_back({x.v4(), x.v4(), x.v4()});
+        s.materials.push_back({x.v4(), x.v3(), x.u(), x.f(), x.f(), x.f(), x.u()});
+        s.emitters.push_back({x.u(), x.f(), x.f(), x.f()});
+        s.cameras.push_back({x.v3(), x.f(), x.v3(), x.f(), x.v3(), x.u(), x.v3(), x.u()});
+    }
+    return s;
+}
+
+template <typename T> void appendWords(std::vector<uint>& words, const std::vector<T>& structs) {
+    const std::size_t start = words.size();
+    words.resize(start + structs.size() * sizeof(T) / sizeof(uint));
+    std::memcpy(words.data() + start, structs.data(), structs.size() * sizeof(T));
+}
+
+// The C++ bytes as words, region by region as kernel_test_io.h lays them out.
+std::vector<uint> flatten(const SharedStructs& s) {
+    std::vector<uint> words;
+    appendWords(words, s.bvhNodes);
+    appendWords(words, s.triangles);
+    appendWords(words, s.triangleNormals);
+    appendWords(words, s.materials);
+    appendWords(words, s.emitters);
+    appendWords(words, s.cameras);
+    return words;
+}
+
+template <typename T>
+void expectSameBytes(const std::vector<T>& device, const std::vector<T>& cpu, const char* name) {
+    std::vector<uint> deviceWords;
+    std::vector<uint> cpuWords;
+    appendWords(deviceWords, device);
+    appendWords(cpuWords, cpu);
+    ASSERT_EQ(deviceWords.size(), cpuWords.size()) << name;
+    for (std::size_t i = 0; i < cpuWords.size(); ++i) {
+        EXPECT_EQ(deviceWords[i], cpuWords[i]) << name << " word " << i;
+    }
+}
+
+class LayoutRoundTrip : public GpuTest {
+protected:
+    template <typename T> Buffer structBuffer(const char* name, const std::vector<T>& values) {
+        return makeStorageBuffer(name, std::span<const T>(values));
+    }
+};
+
+TEST_F(LayoutRoundTrip, DeviceReadsEveryFieldAtItsCppOffset) {
+    const SharedStructs s = makeStructs();
+    const Buffer bvhNodes = structBuffer("bvhNodes", s.bvhNodes);
+    const Buffer triangles = structBuffer("triangles", s.triangles);
+    const Buffer triangleNormals = structBuffer("triangleNormals", s.triangleNormals);
+    const Buffer materials = structBuffer("materials", s.materials);
+    const Buffer emitters = structBuffer("emitters", s.emitters);
+    const Buffer cameras = structBuffer("cameras", s.cameras);
+    const Buffer words = makeStorageBuffer("words", LAYOUT_TOTAL_WORDS * sizeof(uint));
+    const Kernel kernel = makeKernel("read_layouts", 7, 0);
+    runKernel(kernel,
+              {&bvhNodes, &triangles, &triangleNormals, &materials, &emitters, &cameras, &words},
+              LAYOUT_COUNT);
+
+    const std::vector<uint> expected = flatten(s);
+    ASSERT_EQ(expected.size(), LAYOUT_TOTAL_WORDS);
+    const std::vector<uint> device = download<uint>(context(), words, LAYOUT_TOTAL_WORDS);
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+        EXPECT_EQ(device[i], expected[i]) << "word " << i;
+    }
+}
+
+TEST_F(LayoutRoundTrip, DeviceWritesEveryFieldAtItsCppOffset) {
+    const SharedStructs s = makeStructs();
+    const std::vector<uint> flat = flatten(s);
+    const Buffer words = makeStorageBuffer("words", std::span<const uint>(flat));
+    const Buffer bvhNodes = makeStorageBuffer("bvhNodes", LAYOUT_COUNT * sizeof(BvhNode));
+    const Buffer triangles = makeStorageBuffer("triangles", LAYOUT_COUNT * sizeof(Triangle));
+    const Buffer triangleNormals =
+        makeStorageBuffer("triangleNormals", LAYOUT_COUNT * sizeof(TriangleNormals));
+    const Buffer materials = makeStorageBuffer("materials", LAYOUT_COUNT * sizeof(Material));
+    const Buffer emitters = makeStorageBuffer("emitters", LAYOUT_COUNT * sizeof(Emitter));
+    const Buffer cameras = makeStorageBuffer("cameras", LAYOUT_COUNT * sizeof(Camera));
+    const Kernel kernel = makeKernel("write_layouts", 7, 0);
+    runKernel(kernel,
+              {&bvhNodes, &triangles, &triangleNormals, &materials, &emitters, &cameras, &words},
+              LAYOUT_COUNT);
+
+    expectSameBytes(download<BvhNode>(context(), bvhNodes, LAYOUT_COUNT), s.bvhNodes, "bvhNodes");
+    expectSameBytes(download<Triangle>(context(), triangles, LAYOUT_COUNT), s.triangles,
+                    "triangles");
+    expectSameBytes(download<TriangleNormals>(context(), triangleNormals, LAYOUT_COUNT),
+                    s.triangleNormals, "triangleNormals");
+    expectSameBytes(download<Material>(context(), materials, LAYOUT_COUNT), s.materials,
+                    "materials");
+    expectSameBytes(download<Emitter>(context(), emitters, LAYOUT_COUNT), s.emitters, "emitters");
+    expectSameBytes(download<Camera>(context(), cameras, LAYOUT_COUNT), s.cameras, "cameras");
+}
+
+} // namespace
+} // namespace vkpt::test

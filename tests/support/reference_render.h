@@ -1,0 +1,54 @@
+// reference_render.h — renders a scene file with the CPU reference in-process for tests,
+// quietly, with the settings a test chooses.
+#pragma once
+
+#include <string>
+
+#include "common/render_settings.h"
+#include "common/render_stats.h"
+#include "image/render_output.h"
+#include "prepare/prepared_scene.h"
+#include "reference/reference_renderer.h"
+#include "scene/camera.h"
+#include "scene/gltf_loader.h"
+
+namespace vkpt::test {
+
+inline std::string scenePath(const std::string& relative) {
+    return std::string(VKPT_SCENES_DIR) + "/" + relative;
+}
+
+// Small, fast defaults for tests: 32×32, 16 spp, no progress output.
+inline RenderSettings testSettings(std::uint32_t size = 32, std::uint32_t spp = 16) {
+    RenderSettings settings;
+    settings.width = size;
+    settings.height = size;
+    settings.samplesPerPixel = spp;
+    settings.quiet = true;
+    return settings;
+}
+
+struct LoadedTestScene {
+    Scene scene;
+    PreparedScene prepared;
+};
+
+inline LoadedTestScene loadTestScene(const std::string& relative) {
+    LoadOptions options;
+    options.warnUnsupportedExtensions = false;
+    LoadedTestScene loaded{loadGltfScene(scenePath(relative), options), {}};
+    loaded.prepared = prepareScene(loaded.scene);
+    return loaded;
+}
+
+inline RenderOutput renderTestScene(const LoadedTestScene& loaded, const RenderSettings& settings,
+                                    RenderStats* statsOut = nullptr) {
+    gpu::Camera camera = makeGpuCamera(selectCamera(loaded.scene, settings.cameraIndex),
+                                       settings.width, settings.height);
+    RenderStats stats;
+    RenderOutput output = renderReference(loaded.prepared, camera, settings, stats);
+    if (statsOut) *statsOut = stats;
+    return output;
+}
+
+} // namespace vkpt::test

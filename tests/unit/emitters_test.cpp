@@ -1,0 +1,129 @@
+// emitters_test.cpp — the light list: selection in proportion to power (chi-square), and a
+// light-sampling pdf that integrates to 1 over the directions that reach an emitter.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "../support/chi_square.h"
+#include "prepare/emitters.h"
+#include "prepare/prepared_scene.h"
+#include "reference/light_sampling.h"
+#include "reference/scene_tracer.h"
+#include "reference/surface.h"
+#include "shared/rng.h"
+#include "shared/sampling.h"
+
+namespace vkpt {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+void addQuad(Scene& scene, glm::vec3 corner, glm::vec3 edgeA, glm::vec3 edgeB, std::uint32_t material) {
+    glm::vec3 p[4] = {corner, corner + edgeA, corner + edgeA + edgeB, corner + edgeB};
+    glm::vec3 n = glm::normalize(glm::cross(edgeA, edgeB));
+    for (int t : {0, 2}) {
+        glm::vec3 tri[3] = {p[0], p[1 + t / 2], p[2 + t / 2]};
+        for (const glm::vec3& v : tri) {
+            scene.positions.push_back(v);
+            scene.normals.push_back(n);
+        }
+        scene.materialIndices.push_back(material);
+    }
+}
+
+SceneMaterial emitter(glm::vec3 radiance, bool doubleSided) {
+    SceneMaterial m;
+    m.emission = radiance;
+    m.doubleSided = doubleSided;
+    m.baseColor = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
+    return m;
+}
+
+// Three emitters of different power: a dim large quad, a bright small one, a double-sided
+// one, plus a non-emitting quad that must not enter the list.
+Scene threeEmitterScene() {
+    Scene scene;
+    scene.materials = {emitter(glm::vec3(1.0f), false), emitter(glm::vec3(8.0f), false),
+                       emitter(glm::vec3(2.0f), true), emitter(glm::vec3(0.0f), false)};
+    addQuad(scene, {-1, -1, -2}, {2, 0, 0}, {0, 2, 0}, 0);       // faces +z, towards the origin
+    addQuad(scene, {-0.2f, 1.5f, -0.2f}, {0, 0, 0.4f}, {0.4f, 0, 0}, 1); // faces −y
+    addQuad(scene, {2, -0.5f, -0.5f}, {0, 1, 0}, {0, 0, 1}, 2);
+    addQuad(scene, {-3, -3, 3}, {6, 0, 0}, {0, 6, 0}, 3);
+    return scene;
+}
+
+TEST(Emitters, ListHoldsEmittingTrianglesWithPowerProportionalProbabilities) {
+    PreparedScene prepared = prepareScene(threeEmitterScene());
+    ASSERT_EQ(prepared.emitters.size(), 6u);
+    double total = 0.0;
+    for (const gpu::Emitter& e : prepared.emitters) {
+        const gpu::Triangle& t = prepared.triangles[e.triangleIndex];
+        const gpu::Material& m = prepared.materials[t.materialIndex];
+        double sides = (m.flags & MATERIAL_DOUBLE_SIDED) ? 2.0 : 1.0;
+        double power = gpu::luminance(m.emission) * triangleArea(t) * sides;
+        total += power;
+        EXPECT_NEAR(e.selectProbability, power / prepared.totalEmittedPower, 1e-6);
+        EXPECT_EQ(&prepared.emitters[t.emitterIndex], &e);
+    }
+    EXPECT_NEAR(total, prepared.totalEmittedPower, 1e-9);
+    EXPECT_EQ(prepared.emitters.back().cdf, 1.0f);
+}
+
+TEST(Emitters, SelectionFrequenciesMatchProbabilitiesByChiSquare) {
+    PreparedScene prepared = prepareScene(threeEmitterScene());
+    const int n = 100000;
+    std::vector<double> observed(prepared.emitters.size(), 0.0), expected(observed.size());
+    for (uint32_t i = 0; i < uint32_t(n); ++i)
+        observed[selectEmitter(prepared.emitters, gpu::randomFloats(9, i, 0, 0, DIM_LIGHT_FIRST).x)] += 1;
+    for (std::size_t i = 0; i < expected.size(); ++i) expected[i] = n * double(prepared.emitters[i].selectProbability);
+    test::ChiSquareResult r = test::chiSquareTest(observed, expected);
+    EXPECT_GT(r.pValue, 0.01) << "chi2 " << r.statistic;
+}
+
+TEST(Emitters, SelectionCoversTheUnitIntervalEnds) {
+    PreparedScene prepared = prepareScene(threeEmitterScene());
+    EXPECT_EQ(selectEmitter(prepared.emitters, 0.0f), 0u);
+    EXPECT_EQ(selectEmitter(prepared.emitters, std::nextafter(1.0f, 0.0f)), prepared.emitters.size() - 1);
+}
+
+// ∫ p_light(ω) dω over the sphere = 1 when every emitter point is visible: estimated with
+// uniform directions as 4π·E[p_light], within 4.42 standard errors (p = 1e-5) of 1.
+TEST(Emitters, LightPdfIntegratesToOneOverDirections) {
+    PreparedScene prepared = prepareScene(threeEmitterScene());
+    SceneTracer tracer(prepared);
+    const glm::vec3 origin(0.1f, 0.05f, -0.3f);
+    const int n = 400000;
+    double sum = 0.0, sumSq = 0.0;
+    for (uint32_t i = 0; i < uint32_t(n); ++i) {
+        glm::vec4 u = gpu::randomFloats(5, i, 0, 0, DIM_BSDF);
+        float z = 1.0f - 2.0f * u.x, r = std::sqrt(std::max(0.0f, 1.0f - z * z));
+        float phi = 2.0f * float(kPi) * u.y;
+        glm::vec3 d(r * std::cos(phi), r * std::sin(phi), z);
+        ClosestHit hit = tracer.closest(origin, d, RayKind::Extension);
+        if (!hit.hit) continue;
+        SurfacePoint s = makeSurfacePoint(prepared, hit, d);
+        double value = 4.0 * kPi * lightPdf(prepared, s, origin);
+        sum += value;
+        sumSq += value * value;
+    }
+    double mean = sum / n, variance = sumSq / n - mean * mean;
+    EXPECT_NEAR(mean, 1.0, 4.42 * std::sqrt(variance / n));
+}
+
+// A light sample's pdf must equal lightPdf() for the same point: the two halves of MIS.
+TEST(Emitters, SampledPdfEqualsEvaluatedPdf) {
+    PreparedScene prepared = prepareScene(threeEmitterScene());
+    SceneTracer tracer(prepared);
+    const glm::vec3 origin(0.1f, 0.05f, -0.3f);
+    for (uint32_t i = 0; i < 2000; ++i) {
+        LightSample light = sampleLight(prepared, origin, gpu::randomFloats(6, i, 0, 0, DIM_LIGHT_FIRST));
+        ASSERT_TRUE(light.valid);
+        ClosestHit hit = tracer.closest(origin, light.direction, RayKind::Extension);
+        ASSERT_TRUE(hit.hit);
+        SurfacePoint s = makeSurfacePoint(prepared, hit, light.direction);
+        EXPECT_NEAR(lightPdf(prepared, s, origin), light.pdfSolidAngle, 1e-3f * light.pdfSolidAngle);
+    }
+}
+
+} // namespace
+} // namespace vkpt
