@@ -60,6 +60,29 @@ void writeBvh(JsonWriter& json, const RenderReport& r) {
     json.endObject();
 }
 
+void writeDeviceRun(JsonWriter& json, const DeviceRunReport& d) {
+    json.key("wavefront").beginObject();
+    json.field("passes", d.passes).field("pathSlots", d.pathSlots);
+    json.field("setupSeconds", d.setupSeconds);
+    json.field("truncatedTraversals", d.truncatedTraversals).field("interrupted", d.interrupted);
+    json.key("kernels").beginArray();
+    for (const KernelTiming& k : d.kernelTimes) {
+        json.beginObject().field("name", k.kernel).field("dispatches", k.dispatches);
+        json.field("seconds", k.seconds).endObject();
+    }
+    json.endArray();
+    json.endObject();
+}
+
+void printDeviceRun(const RenderReport& r, const DeviceRunReport& d) {
+    std::printf("  device: %u passes of up to %u path slots, setup %.3f s, peak memory %.1f MiB\n",
+                d.passes, d.pathSlots, d.setupSeconds, double(r.deviceMemoryBytes) / 1048576.0);
+    for (const KernelTiming& k : d.kernelTimes)
+        std::printf("  kernel %-20s %9.3f ms in %llu dispatches\n", k.kernel.c_str(),
+                    k.seconds * 1e3, (unsigned long long)k.dispatches);
+    if (d.interrupted) std::printf("  interrupted: the image holds the passes finished so far\n");
+}
+
 } // namespace
 
 void printRenderSummary(const RenderReport& r) {
@@ -77,6 +100,7 @@ void printRenderSummary(const RenderReport& r) {
     if (st.nonFiniteSamples) std::printf("; %llu non-finite samples discarded",
                                          (unsigned long long)st.nonFiniteSamples);
     std::printf("\n");
+    if (r.deviceRun) printDeviceRun(r, *r.deviceRun);
 }
 
 void writeStatsJson(const RenderReport& r, const std::string& path) {
@@ -87,6 +111,7 @@ void writeStatsJson(const RenderReport& r, const std::string& path) {
     writeSettings(json, *r.settings);
     writeBvh(json, r);
     writeStats(json, r);
+    if (r.deviceRun) writeDeviceRun(json, *r.deviceRun);
     json.endObject();
     out << "\n";
     if (!out) throw InputError(path + ": write failed");

@@ -2,13 +2,32 @@
 // asked, every figure as JSON.
 #pragma once
 
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "bvh/bvh_build.h"
 #include "common/render_settings.h"
 #include "common/render_stats.h"
 
 namespace vkpt {
+
+// GPU time of one kernel over the render (vkpt --stats, from timestamp queries).
+struct KernelTiming {
+    std::string kernel;
+    std::uint64_t dispatches = 0;
+    double seconds = 0.0;
+};
+
+// What only the device executor (vkpt) has to report.
+struct DeviceRunReport {
+    std::uint32_t passes = 0;
+    std::uint32_t pathSlots = 0;
+    double setupSeconds = 0.0;            // device, upload and pipelines, before the first pass
+    std::uint64_t truncatedTraversals = 0; // BVH walks a driver loop limit cut short
+    std::vector<KernelTiming> kernelTimes; // empty unless --stats
+    bool interrupted = false;              // Ctrl-C: the image holds the passes done
+};
 
 struct RenderReport {
     std::string program;      // "vkpt-ref" or "vkpt"
@@ -19,7 +38,8 @@ struct RenderReport {
     std::size_t emitters = 0;
     RenderStats stats;
     double loadSeconds = 0.0;
-    std::uint64_t deviceMemoryBytes = 0; // 0 on the CPU
+    std::uint64_t deviceMemoryBytes = 0; // peak device memory held; 0 on the CPU
+    std::optional<DeviceRunReport> deviceRun; // vkpt only
 };
 
 void printRenderSummary(const RenderReport& report);

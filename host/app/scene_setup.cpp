@@ -15,7 +15,10 @@ SceneSetup setUpScene(const RenderSettings& settings, const std::string& program
     Scene scene = loadGltfScene(settings.scenePath);
     setup.loadSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    setup.prepared = prepareScene(scene);
+    float aspect = float(settings.width) / float(settings.height);
+    SceneCamera camera = selectCamera(scene, settings.cameraIndex, aspect);
+    setup.camera = makeGpuCamera(camera, settings.width, settings.height);
+    setup.prepared = prepareScene(scene, {{}, camera.forward});
     const BvhStats& bvh = setup.prepared.bvhStats;
     std::fprintf(stderr,
                  "%s: %s: %zu triangles, %zu emitters; BVH %u nodes, depth %u, SAH cost %.2f, "
@@ -26,9 +29,6 @@ SceneSetup setUpScene(const RenderSettings& settings, const std::string& program
     if (setup.prepared.emitters.empty())
         std::fprintf(stderr, "%s: %s: the scene has no emitters; the image will be black\n",
                      program.c_str(), settings.scenePath.c_str());
-    float aspect = float(settings.width) / float(settings.height);
-    SceneCamera camera = selectCamera(scene, settings.cameraIndex, aspect);
-    setup.camera = makeGpuCamera(camera, settings.width, settings.height);
     return setup;
 }
 

@@ -51,7 +51,8 @@ struct Bin {
 };
 
 // Maps a centroid coordinate to its bin along one axis (Wald 2007, section 3.1: bins of equal
-// width over the centroid bounds, not the node bounds, so that no bin is empty by design).
+// width over the centroid bounds, not the node bounds, so that the end bins are never empty
+// and some plane separates any two distinct centroids).
 struct BinMapping {
     float origin = 0.0f;
     float scale = 0.0f;

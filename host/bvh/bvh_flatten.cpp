@@ -14,6 +14,8 @@ struct ChildPair {
 };
 
 // Left first, unless a direction is given and the right child's centre lies nearer along it.
+// Centres stand in for the split plane, which the tree does not keep: for the two sides of a
+// split they say which side a ray travelling along the direction reaches first.
 ChildPair orderChildren(const BvhTree& tree, const BvhBuildNode& n, const FlattenOptions& options) {
     if (!options.nearFirstDirection) return {n.leftChild, n.rightChild};
     glm::vec3 gap =

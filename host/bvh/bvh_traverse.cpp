@@ -113,7 +113,7 @@ bool walkStack(const BvhTree& tree, std::span<const gpu::Triangle> triangles, Wa
     return any;
 }
 
-// The GPU's walk (shaders/lib/traverse.glsl): no stack, children in stored order; a missed
+// The GPU kernels' walk: no stack, children in stored order; a missed
 // box or a finished leaf continues at missIndex, an entered interior node at index + 1.
 bool walkStackless(std::span<const gpu::BvhNode> nodes, std::span<const gpu::Triangle> triangles,
                    Walk& walk, bool stopAtFirst) {

@@ -40,16 +40,16 @@ void makeGpuTriangles(const Scene& scene, const BvhTree& tree,
     }
 }
 
-PreparedScene prepareScene(const Scene& scene, const BvhBuildOptions& bvhOptions) {
+PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options) {
     VKPT_ASSERT(scene.positions.size() == 3 * scene.triangleCount(), "three vertices a triangle");
     VKPT_ASSERT(scene.triangleCount() < BVH_MAX_TRIANGLES, "triangle count fits a leaf word");
     PreparedScene prepared;
     auto start = std::chrono::steady_clock::now();
-    prepared.tree = buildBvh(triangleBounds(scene.positions), bvhOptions);
+    prepared.tree = buildBvh(triangleBounds(scene.positions), options.bvh);
     std::chrono::duration<double> buildTime = std::chrono::steady_clock::now() - start;
-    prepared.bvhStats = computeBvhStats(prepared.tree, bvhOptions);
+    prepared.bvhStats = computeBvhStats(prepared.tree, options.bvh);
     prepared.bvhStats.buildSeconds = buildTime.count();
-    prepared.nodes = flattenBvh(prepared.tree);
+    prepared.nodes = flattenBvh(prepared.tree, {options.nearFirstDirection});
     makeGpuTriangles(scene, prepared.tree, prepared.triangles, prepared.normals);
     prepared.materials = makeGpuMaterials(scene.materials);
     EmitterList emitters = buildEmitters(prepared.triangles, prepared.materials);

@@ -2,6 +2,7 @@
 // its flattened nodes, triangles and normals in BVH order, materials and the emitter list.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "bvh/bvh_build.h"
@@ -21,7 +22,14 @@ struct PreparedScene {
     double totalEmittedPower = 0.0;
 };
 
-PreparedScene prepareScene(const Scene& scene, const BvhBuildOptions& bvhOptions = {});
+struct PrepareOptions {
+    BvhBuildOptions bvh;
+    // Flatten so that the skip-link walk meets nearer children first along this direction:
+    // the camera's forward direction makes camera rays walk near-first (docs/bvh.md).
+    std::optional<glm::vec3> nearFirstDirection;
+};
+
+PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options = {});
 
 std::vector<gpu::Material> makeGpuMaterials(const std::vector<SceneMaterial>& materials);
 

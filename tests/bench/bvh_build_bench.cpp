@@ -135,16 +135,14 @@ void printWalk(const char* label, const WalkResult& r) {
 
 struct BuiltScene {
     BvhTree tree;
-    std::vector<gpu::BvhNode> nodes;       // left child first
-    std::vector<gpu::BvhNode> cameraNodes; // near child first along the camera's forward
+    std::vector<gpu::BvhNode> nodes; // left child first
     std::vector<gpu::Triangle> triangles;
 };
 
-BuiltScene buildScene(const std::vector<glm::vec3>& positions, const SceneCamera& camera) {
+BuiltScene buildScene(const std::vector<glm::vec3>& positions) {
     BuiltScene s;
     s.tree = buildBvh(triangleBounds(positions));
     s.nodes = flattenBvh(s.tree);
-    s.cameraNodes = flattenBvh(s.tree, {camera.forward});
     s.triangles.reserve(s.tree.primitiveOrder.size());
     for (std::uint32_t source : s.tree.primitiveOrder) {
         const glm::vec3* p = &positions[3 * std::size_t(source)];
@@ -159,7 +157,7 @@ void benchBuild(const BenchScene& scene) {
     oneThread.threadCount = 1;
     double serial = medianSeconds(kBuildRuns, [&] { buildBvh(bounds, oneThread); });
     double parallel = medianSeconds(kBuildRuns, [&] { buildBvh(bounds); });
-    BuiltScene built = buildScene(scene.positions, scene.camera);
+    BuiltScene built = buildScene(scene.positions);
     double flatten = medianSeconds(kBuildRuns, [&] { flattenBvh(built.tree); });
     BvhStats stats = computeBvhStats(built.tree);
     std::printf("  build: %.4f s on 1 thread, %.4f s on %u threads (median of %d); "
@@ -230,7 +228,9 @@ bool largerRightFirst(const BvhBuildNode& left, const BvhBuildNode& right, const
     return right.bounds.surfaceArea() > left.bounds.surfaceArea();
 }
 
-void benchTraversal(const BuiltScene& s, const char* label, const std::vector<RayQuery>& rays) {
+// cameraNodes: the tree flattened near child first along the camera's forward direction.
+void benchTraversal(const BuiltScene& s, const char* label, const std::vector<RayQuery>& rays,
+                    const std::vector<gpu::BvhNode>& cameraNodes) {
     std::printf("  %s, %zu rays, closest hit, 1 thread:\n", label, rays.size());
     std::printf("    %-26s %9s %9s %9s %9s %9s\n", "walk", "nodes/ray", "tris/ray", "max nodes",
                 "max iter.", "Mrays/s");
@@ -243,7 +243,7 @@ void benchTraversal(const BuiltScene& s, const char* label, const std::vector<Ra
               }));
     printWalk("stackless, camera order",
               measureWalk(rays, [&](const RayQuery& r, TraversalCounters* c) {
-                  return closestHitStackless(s.cameraNodes, s.triangles, r, c);
+                  return closestHitStackless(cameraNodes, s.triangles, r, c);
               }));
     // Simulated walks print no speed: their recursion is not what the renderer would run.
     ChildOrder octant = octantRightFirst, larger = largerRightFirst;
@@ -261,12 +261,27 @@ void benchTraversal(const BuiltScene& s, const char* label, const std::vector<Ra
                                              false));
 }
 
+// The camera reflected through the centre of the bounds, looking the other way: a fixed child
+// order that is far-first for one is near-first for the other.
+SceneCamera mirrored(const SceneCamera& camera, const BuiltScene& s) {
+    SceneCamera m = camera;
+    m.position = 2.0f * s.tree.nodes[0].bounds.centre() - camera.position;
+    m.forward = -camera.forward;
+    return m;
+}
+
 void benchScene(const BenchScene& scene) {
     std::printf("\n%s: %zu triangles\n", scene.name.c_str(), scene.positions.size() / 3);
     benchBuild(scene);
-    BuiltScene built = buildScene(scene.positions, scene.camera);
-    benchTraversal(built, "camera rays", cameraRays(scene.camera, kRays));
-    benchTraversal(built, "scattered rays", scatteredRays(built.tree.nodes[0].bounds, kRays));
+    BuiltScene built = buildScene(scene.positions);
+    SceneCamera back = mirrored(scene.camera, built);
+    std::vector<gpu::BvhNode> cameraNodes = flattenBvh(built.tree, {scene.camera.forward});
+    benchTraversal(built, "camera rays", cameraRays(scene.camera, kRays), cameraNodes);
+    benchTraversal(built, "mirrored camera rays", cameraRays(back, kRays),
+                   flattenBvh(built.tree, {back.forward}));
+    // Secondary rays walk the nodes flattened for the camera, as in a render.
+    benchTraversal(built, "scattered rays", scatteredRays(built.tree.nodes[0].bounds, kRays),
+                   cameraNodes);
 }
 
 BenchScene syntheticSphere() {

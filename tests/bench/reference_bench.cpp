@@ -55,8 +55,9 @@ void benchScene(const std::string& path, const BenchOptions& o) {
     std::vector<double> buildSeconds, renderSeconds, mrays;
     RenderStats stats;
     PreparedScene prepared;
+    SceneCamera sceneCamera = selectCamera(scene, std::nullopt, float(o.width) / float(o.height));
     for (int run = 0; run < o.runs; ++run) {
-        prepared = prepareScene(scene);
+        prepared = prepareScene(scene, {{}, sceneCamera.forward});
         buildSeconds.push_back(prepared.bvhStats.buildSeconds);
     }
     RenderSettings settings;
@@ -64,7 +65,7 @@ void benchScene(const std::string& path, const BenchOptions& o) {
     settings.height = o.height;
     settings.samplesPerPixel = o.spp;
     settings.quiet = true;
-    gpu::Camera camera = makeGpuCamera(selectCamera(scene, std::nullopt), o.width, o.height);
+    gpu::Camera camera = makeGpuCamera(sceneCamera, o.width, o.height);
     for (int run = 0; run < o.runs; ++run) {
         renderReference(prepared, camera, settings, stats);
         renderSeconds.push_back(stats.seconds);

@@ -37,7 +37,7 @@ inline LoadedTestScene loadTestScene(const std::string& relative) {
     LoadOptions options;
     options.warnUnsupportedExtensions = false;
     LoadedTestScene loaded{loadGltfScene(scenePath(relative), options), {}};
-    loaded.prepared = prepareScene(loaded.scene);
+    loaded.prepared = prepareScene(loaded.scene, {{}, selectCamera(loaded.scene, {}).forward});
     return loaded;
 }
 

@@ -153,6 +153,7 @@ struct WalkFigures {
     TraversalCounters stackless;
     std::uint64_t maxStackNodes = 0;
     std::uint64_t maxStacklessNodes = 0;
+    std::uint64_t maxStacklessIterations = 0; // nodes + triangle tests: the kernel's loops
     int hits = 0;
 };
 
@@ -168,6 +169,8 @@ bool checkRay(const BuiltScene& s, const RayQuery& ray, bool bruteForce, WalkFig
     f.stackless.triangleTests += stacklessCount.triangleTests;
     f.maxStackNodes = std::max(f.maxStackNodes, stackCount.nodesVisited);
     f.maxStacklessNodes = std::max(f.maxStacklessNodes, stacklessCount.nodesVisited);
+    f.maxStacklessIterations = std::max(f.maxStacklessIterations,
+                                        stacklessCount.nodesVisited + stacklessCount.triangleTests);
     f.hits += stack.hit ? 1 : 0;
     EXPECT_TRUE(sameHit(s, ray, stack, stackless)) << "stack vs stackless, " << describe(ray);
     EXPECT_TRUE(sameHit(s, ray, stack, closestHitStackless(s.viewNodes, s.triangles, ray)))
@@ -195,7 +198,8 @@ void reportFigures(const std::string& name, const BuiltScene& s, const WalkFigur
          << " triangles, " << s.nodes.size() << " nodes, " << 100.0 * f.hits / rays
          << "% hit; nodes/ray stack " << double(f.stack.nodesVisited) / rays << " (max "
          << f.maxStackNodes << "), stackless " << double(f.stackless.nodesVisited) / rays
-         << " (max " << f.maxStacklessNodes << "); triangle tests/ray stack "
+         << " (max " << f.maxStacklessNodes << ", max nodes + triangle tests "
+         << f.maxStacklessIterations << "); triangle tests/ray stack "
          << double(f.stack.triangleTests) / rays << ", stackless "
          << double(f.stackless.triangleTests) / rays;
     std::cout << line.str() << "\n";

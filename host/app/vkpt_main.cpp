@@ -1,0 +1,178 @@
+// vkpt_main.cpp — vkpt, the wavefront path tracer on a Vulkan compute device: load, build,
+// upload, render, write. Same options and outputs as vkpt-ref, plus the device's own.
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "app/command_line.h"
+#include "app/render_options.h"
+#include "app/render_report.h"
+#include "app/scene_setup.h"
+#include "common/errors.h"
+#include "gpu/context.h"
+#include "gpu/device_list.h"
+#include "gpu/vk_check.h"
+#include "image/image_io.h"
+#include "render/wavefront.h"
+
+namespace {
+
+using namespace vkpt;
+
+const char* const kProgram = "vkpt";
+constexpr int kExitInterrupted = 130; // 128 + SIGINT, as shells report it
+
+struct Invocation {
+    RenderSettings settings;
+    GpuOptions gpu;
+    bool listDevices = false;
+    bool kernelStats = false;
+    std::uint32_t pathSlots = 0; // 0: chosen from the device
+    bool showHelp = false;
+};
+
+void addDeviceOptions(CommandLine& commandLine, Invocation& invocation) {
+    commandLine.add({"device", {}, "N|NAME", "Vulkan device by index or name substring",
+                     [&](auto v) { invocation.gpu.device = parseDeviceSelection(v[0]); }});
+    commandLine.add({"list-devices", {}, "", "list the Vulkan devices and exit",
+                     [&](auto) { invocation.listDevices = true; }});
+    commandLine.add({"validate", {}, "", "enable the Vulkan validation layer (or VKPT_VALIDATION=1)",
+                     [&](auto) { invocation.gpu.validation = true; }});
+    commandLine.add({"stats", {}, "", "print per-kernel GPU times (timestamp queries)",
+                     [&](auto) { invocation.kernelStats = true; }});
+    commandLine.add({"path-slots", {}, "N", "paths in flight per pass (default: from the device)",
+                     [&](auto v) { invocation.pathSlots = parseUnsigned("path-slots", v[0], 64); }});
+}
+
+Invocation parseArguments(int argc, char** argv) {
+    Invocation invocation;
+    CommandLine commandLine(kProgram);
+    addRenderOptions(commandLine, invocation.settings);
+    addDeviceOptions(commandLine, invocation);
+    commandLine.add({"help", {'h'}, "", "show this help", [&](auto) { invocation.showHelp = true; }});
+    std::vector<std::string> arguments(argv + 1, argv + argc);
+    std::vector<std::string> positional = commandLine.parse(arguments);
+    if (invocation.showHelp) {
+        std::fputs(commandLine.usage("scene.gltf|scene.glb").c_str(), stdout);
+        return invocation;
+    }
+    if (invocation.listDevices) return invocation;
+    if (positional.size() > 1) throw InputError("more than one scene file given");
+    if (!positional.empty()) invocation.settings.scenePath = positional[0];
+    validateRenderSettings(invocation.settings);
+    return invocation;
+}
+
+int printDevices() {
+    std::vector<DeviceInfo> devices = vkpt::listDevices();
+    if (devices.empty()) throw VulkanError("no Vulkan device found");
+    for (const DeviceInfo& device : devices) std::printf("%s\n", describeDevice(device).c_str());
+    return 0;
+}
+
+// Ctrl-C asks the renderer to stop after the current pass; a second one ends the process
+// (SA_RESETHAND restores the default action).
+std::atomic<bool> interruptRequested{false};
+static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler");
+
+extern "C" void onInterrupt(int) {
+    interruptRequested.store(true);
+}
+
+void installInterruptHandler() {
+    struct sigaction action {};
+    action.sa_handler = onInterrupt;
+    action.sa_flags = SA_RESETHAND;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, nullptr);
+}
+
+void writeOutputs(const RenderOutput& output, const RenderSettings& settings) {
+    writeImage(output.image, settings.outputPath, settings.exposure);
+    std::string heatMap = heatMapPathFor(settings.outputPath);
+    writeSampleCountHeatMap(output.sampleCounts, output.image.width, output.image.height, heatMap);
+}
+
+DeviceRunReport deviceRunReport(const WavefrontResult& result, double setupSeconds) {
+    DeviceRunReport d;
+    d.passes = result.passes;
+    d.pathSlots = result.slotCount;
+    d.setupSeconds = setupSeconds;
+    d.truncatedTraversals = result.truncatedTraversals;
+    d.interrupted = result.interrupted;
+    for (const KernelTimeTotal& t : result.kernelTimes)
+        d.kernelTimes.push_back({t.kernel, t.dispatches, double(t.nanoseconds) * 1e-9});
+    return d;
+}
+
+RenderReport makeReport(const Invocation& invocation, const SceneSetup& setup,
+                        const GpuContext& context, const WavefrontResult& result,
+                        double setupSeconds) {
+    RenderReport report;
+    report.program = kProgram;
+    report.device = context.deviceInfo().name;
+    report.settings = &invocation.settings;
+    report.bvh = setup.prepared.bvhStats;
+    report.triangles = setup.prepared.triangles.size();
+    report.emitters = setup.prepared.emitters.size();
+    report.stats = result.stats;
+    report.loadSeconds = setup.loadSeconds;
+    report.deviceMemoryBytes = context.memoryStats().peakBytes;
+    report.deviceRun = deviceRunReport(result, setupSeconds);
+    return report;
+}
+
+// A walk the driver cut short means a wrong image, not a slow one: say so loudly.
+void warnAboutTruncation(const WavefrontResult& result) {
+    if (result.truncatedTraversals == 0) return;
+    std::fprintf(stderr,
+                 "%s: warning: %llu BVH traversals were cut short by the driver's loop limit; "
+                 "the image is missing hits (see docs/wavefront.md)\n",
+                 kProgram, (unsigned long long)result.truncatedTraversals);
+}
+
+int render(const Invocation& invocation) {
+    const RenderSettings& settings = invocation.settings;
+    SceneSetup setup = setUpScene(settings, kProgram);
+    const auto start = std::chrono::steady_clock::now();
+    GpuContext context(invocation.gpu);
+    std::fprintf(stderr, "%s: device %s\n", kProgram, describeDevice(context.deviceInfo()).c_str());
+    installInterruptHandler();
+    WavefrontOptions options;
+    options.timeKernels = invocation.kernelStats;
+    options.slotCount = invocation.pathSlots;
+    options.interrupt = &interruptRequested;
+    WavefrontResult result =
+        renderWavefront(context, setup.prepared, setup.camera, settings, options);
+    const std::chrono::duration<double> total = std::chrono::steady_clock::now() - start;
+    writeOutputs(result.output, settings);
+    RenderReport report = makeReport(invocation, setup, context, result,
+                                     total.count() - result.stats.seconds);
+    printRenderSummary(report);
+    if (!settings.statsJsonPath.empty()) writeStatsJson(report, settings.statsJsonPath);
+    warnAboutTruncation(result);
+    if (context.validationMessageCount() > 0)
+        throw InternalError("the validation layer reported " +
+                            std::to_string(context.validationMessageCount()) + " messages");
+    return result.interrupted ? kExitInterrupted : 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    try {
+        Invocation invocation = parseArguments(argc, argv);
+        if (invocation.showHelp) return 0;
+        if (invocation.listDevices) return printDevices();
+        return render(invocation);
+    } catch (const vkpt::InputError& error) {
+        return vkpt::reportFailure(kProgram, error, 1);
+    } catch (const vkpt::VulkanError& error) {
+        return vkpt::reportFailure(kProgram, error, 2);
+    } catch (const std::exception& error) {
+        return vkpt::reportFailure(kProgram, error, 3);
+    }
+}
