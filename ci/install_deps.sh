@@ -7,7 +7,7 @@ packages=(
     build-essential cmake pkg-config
     libvulkan-dev libvulkan-volk-dev mesa-vulkan-drivers vulkan-validationlayers
     glslang-tools glslang-dev
-    libglm-dev libstb-dev libtinygltf-dev nlohmann-json3-dev
+    libglm-dev libstb-dev libtinygltf-dev
     libgtest-dev
 )
 
