@@ -23,7 +23,7 @@ struct KernelTiming {
 struct DeviceRunReport {
     std::uint32_t passes = 0;
     std::uint32_t pathSlots = 0;
-    double setupSeconds = 0.0;            // device, upload and pipelines, before the first pass
+    double setupSeconds = 0.0;            // upload, buffers and pipelines, before the first pass
     std::uint64_t truncatedTraversals = 0; // BVH walks a driver loop limit cut short
     std::vector<KernelTiming> kernelTimes; // empty unless --stats
     bool interrupted = false;              // Ctrl-C: the image holds the passes done

@@ -35,16 +35,25 @@ struct Invocation {
 };
 
 void addDeviceOptions(CommandLine& commandLine, Invocation& invocation) {
-    commandLine.add({"device", {}, "N|NAME", "Vulkan device by index or name substring",
-                     [&](auto v) { invocation.gpu.device = parseDeviceSelection(v[0]); }});
-    commandLine.add({"list-devices", {}, "", "list the Vulkan devices and exit",
-                     [&](auto) { invocation.listDevices = true; }});
-    commandLine.add({"validate", {}, "", "enable the Vulkan validation layer (or VKPT_VALIDATION=1)",
+    commandLine.add(
+        {"device", {}, "N|NAME", "Vulkan device by index or name substring", [&](auto v) {
+             invocation.gpu.device = parseDeviceSelection(v[0]);
+         }});
+    commandLine.add({"list-devices", {}, "", "list the Vulkan devices and exit", [&](auto) {
+                         invocation.listDevices = true;
+                     }});
+    commandLine.add({"validate",
+                     {},
+                     "",
+                     "enable the Vulkan validation layer (or VKPT_VALIDATION=1)",
                      [&](auto) { invocation.gpu.validation = true; }});
-    commandLine.add({"stats", {}, "", "print per-kernel GPU times (timestamp queries)",
-                     [&](auto) { invocation.kernelStats = true; }});
-    commandLine.add({"path-slots", {}, "N", "paths in flight per pass (default: from the device)",
-                     [&](auto v) { invocation.pathSlots = parseUnsigned("path-slots", v[0], 64); }});
+    commandLine.add({"stats", {}, "", "print per-kernel GPU times (timestamp queries)", [&](auto) {
+                         invocation.kernelStats = true;
+                     }});
+    commandLine.add(
+        {"path-slots", {}, "N", "paths in flight per pass (default: from the device)", [&](auto v) {
+             invocation.pathSlots = parseUnsigned("path-slots", v[0], 64);
+         }});
 }
 
 Invocation parseArguments(int argc, char** argv) {
@@ -52,7 +61,8 @@ Invocation parseArguments(int argc, char** argv) {
     CommandLine commandLine(kProgram);
     addRenderOptions(commandLine, invocation.settings);
     addDeviceOptions(commandLine, invocation);
-    commandLine.add({"help", {'h'}, "", "show this help", [&](auto) { invocation.showHelp = true; }});
+    commandLine.add(
+        {"help", {'h'}, "", "show this help", [&](auto) { invocation.showHelp = true; }});
     std::vector<std::string> arguments(argv + 1, argv + argc);
     std::vector<std::string> positional = commandLine.parse(arguments);
     if (invocation.showHelp) {
@@ -69,7 +79,8 @@ Invocation parseArguments(int argc, char** argv) {
 int printDevices() {
     std::vector<DeviceInfo> devices = vkpt::listDevices();
     if (devices.empty()) throw VulkanError("no Vulkan device found");
-    for (const DeviceInfo& device : devices) std::printf("%s\n", describeDevice(device).c_str());
+    for (const DeviceInfo& device : devices)
+        std::printf("%s\n", describeDevice(device).c_str());
     return 0;
 }
 
@@ -136,11 +147,12 @@ void warnAboutTruncation(const WavefrontResult& result) {
 
 int render(const Invocation& invocation) {
     const RenderSettings& settings = invocation.settings;
+    // The device first: without one, the user hears that (one line) before a long load.
+    GpuContext context(invocation.gpu);
     SceneSetup setup = setUpScene(settings, kProgram);
     const auto start = std::chrono::steady_clock::now();
-    GpuContext context(invocation.gpu);
-    std::fprintf(stderr, "%s: device %s\n", kProgram, describeDevice(context.deviceInfo()).c_str());
     installInterruptHandler();
+    std::fprintf(stderr, "%s: device %s\n", kProgram, describeDevice(context.deviceInfo()).c_str());
     WavefrontOptions options;
     options.timeKernels = invocation.kernelStats;
     options.slotCount = invocation.pathSlots;
@@ -149,8 +161,8 @@ int render(const Invocation& invocation) {
         renderWavefront(context, setup.prepared, setup.camera, settings, options);
     const std::chrono::duration<double> total = std::chrono::steady_clock::now() - start;
     writeOutputs(result.output, settings);
-    RenderReport report = makeReport(invocation, setup, context, result,
-                                     total.count() - result.stats.seconds);
+    RenderReport report =
+        makeReport(invocation, setup, context, result, total.count() - result.stats.seconds);
     printRenderSummary(report);
     if (!settings.statsJsonPath.empty()) writeStatsJson(report, settings.statsJsonPath);
     warnAboutTruncation(result);

@@ -17,7 +17,7 @@ glm::vec3 directByHemisphere(IntegratorContext& context, const SampleKey& key,
                              const SurfacePoint& s) {
     glm::vec3 f = lambertAlbedo(s) * VKPT_INV_PI;
     gpu::Basis basis = gpu::makeBasis(s.shadingNormal);
-    glm::vec3 origin = gpu::offsetRayOrigin(s.position, s.geometricNormal);
+    glm::vec3 origin = gpu::offsetFromSurface(s.position, s.geometricNormal, s.coordinateScale);
     glm::vec3 sum(0.0f);
     for (std::uint32_t i = 0; i < context.settings.lightSamples; ++i) {
         glm::vec4 u = gpu::randomFloats(key.seed, key.pixel, key.sampleIndex, 0, DIM_LIGHT_FIRST + i);

@@ -16,8 +16,10 @@ DirectLightSample sampleDirectLight(SceneTracer& tracer, const SurfacePoint& sur
     if (cosSurface <= 0.0f || glm::dot(light.direction, surface.geometricNormal) <= 0.0f)
         return result;
     // Both ends move off their surfaces, so the shadow ray can hit neither of them.
-    glm::vec3 origin = gpu::offsetRayOrigin(surface.position, surface.geometricNormal);
-    glm::vec3 target = gpu::offsetRayOrigin(light.position, light.towardsReceiver);
+    glm::vec3 origin =
+        gpu::offsetFromSurface(surface.position, surface.geometricNormal, surface.coordinateScale);
+    glm::vec3 target =
+        gpu::offsetFromSurface(light.position, light.towardsReceiver, light.coordinateScale);
     if (tracer.occluded(origin, target - origin)) return result;
     result.unweighted = lambertAlbedo(surface) * VKPT_INV_PI * light.radiance * cosSurface;
     result.lightPdf = light.pdfSolidAngle;

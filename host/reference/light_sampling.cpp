@@ -4,6 +4,7 @@
 #include "prepare/emitters.h"
 #include "shared/intersect.h"
 #include "shared/path_rules.h"
+#include "shared/ray_offset.h"
 #include "shared/sampling.h"
 
 namespace vkpt {
@@ -15,6 +16,7 @@ LightSample sampleLight(const PreparedScene& scene, const glm::vec3& receiver, c
     const gpu::Triangle& tri = scene.triangles[emitter.triangleIndex];
     glm::vec3 b = gpu::sampleTriangleBarycentrics(glm::vec2(u.y, u.z));
     sample.position = b.x * tri.v0 + b.y * tri.v1 + b.z * tri.v2;
+    sample.coordinateScale = gpu::triangleCoordinateScale(tri.v0, tri.v1, tri.v2);
     glm::vec3 toLight = sample.position - receiver;
     float distanceSquared = glm::dot(toLight, toLight);
     if (!(distanceSquared > 0.0f)) return sample;

@@ -13,6 +13,7 @@ struct LightSample {
     glm::vec3 direction{0.0f};       // unit, receiver → light
     glm::vec3 radiance{0.0f};        // emitted towards the receiver (0 from a back face)
     float pdfSolidAngle = 0.0f;
+    float coordinateScale = 0.0f;    // of the emitter triangle, for gpu::offsetFromSurface
     bool valid = false;              // false: no emitters, or the point is seen edge-on
 };
 

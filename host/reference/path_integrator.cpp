@@ -89,7 +89,8 @@ glm::vec3 integratePath(IntegratorContext& context, const SampleKey& key, const 
         if (bsdf.russianRoulette >= survival) break;
         throughput /= survival;
         previousBsdfPdf = bsdf.pdf;
-        origin = gpu::offsetRayOrigin(surface.position, surface.geometricNormal);
+        origin = gpu::offsetFromSurface(surface.position, surface.geometricNormal,
+                                        surface.coordinateScale);
         direction = bsdf.direction;
     }
     return radiance;

@@ -13,6 +13,7 @@ struct SurfacePoint {
     glm::vec3 shadingNormal{0.0f};   // unit, interpolated, on the same side
     glm::vec3 rawShadingNormal{0.0f}; // interpolated as stored, for the normals integrator
     bool frontFace = false;          // the ray arrived on the counter-clockwise side
+    float coordinateScale = 0.0f;    // of the triangle's vertices, for gpu::offsetFromSurface
     std::uint32_t triangle = 0;
     const gpu::Material* material = nullptr;
 };

@@ -31,18 +31,20 @@ struct LightSample {
     vec3 direction;       // unit, receiver → light
     vec3 radiance;        // emitted towards the receiver (0 from a back face)
     float pdfSolidAngle;
-    bool valid;           // false: no emitters, or the point is seen edge-on
+    float coordinateScale; // of the emitter triangle's vertices, for offsetFromSurface
+    bool valid; // false: no emitters, or the point is seen edge-on
 };
 
 // u.x selects the emitter, u.yz the point on it.
 LightSample sampleLight(vec3 receiver, vec4 u) {
     // Named `light`: `sample` is a GLSL keyword.
-    LightSample light = LightSample(vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), 0.0, false);
+    LightSample light = LightSample(vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), 0.0, 0.0, false);
     if (frame.emitterCount == 0u) return light;
     Emitter emitter = emitters[selectEmitter(u.x)];
     Triangle tri = triangles[emitter.triangleIndex];
     vec3 b = sampleTriangleBarycentrics(vec2(u.y, u.z));
     light.position = b.x * tri.v0 + b.y * tri.v1 + b.z * tri.v2;
+    light.coordinateScale = triangleCoordinateScale(tri.v0, tri.v1, tri.v2);
     vec3 toLight = light.position - receiver;
     float distanceSquared = dot(toLight, toLight);
     if (!(distanceSquared > 0.0)) return light;
@@ -53,8 +55,8 @@ LightSample sampleLight(vec3 receiver, vec4 u) {
     bool doubleSided = (material.flags & MATERIAL_DOUBLE_SIDED) != 0u;
     light.radiance = (cosAtLight > 0.0 || doubleSided) ? material.emission : vec3(0.0);
     light.towardsReceiver = cosAtLight > 0.0 ? face : -face;
-    light.pdfSolidAngle = areaToSolidAnglePdf(emitter.selectProbability / emitter.area,
-                                               distanceSquared, cosAtLight);
+    light.pdfSolidAngle =
+        areaToSolidAnglePdf(emitter.selectProbability / emitter.area, distanceSquared, cosAtLight);
     light.valid = light.pdfSolidAngle > 0.0;
     return light;
 }
@@ -83,8 +85,8 @@ ShadowRay makeLightSampleRay(SurfacePoint s, vec4 u, out float lightPdfOut, out 
     float cosSurface = dot(light.direction, s.shadingNormal);
     if (cosSurface <= 0.0 || dot(light.direction, s.geometricNormal) <= 0.0) return ray;
     // Both ends move off their surfaces, so the shadow ray can hit neither of them.
-    vec3 origin = offsetRayOrigin(s.position, s.geometricNormal);
-    vec3 target = offsetRayOrigin(light.position, light.towardsReceiver);
+    vec3 origin = offsetFromSurface(s.position, s.geometricNormal, s.coordinateScale);
+    vec3 target = offsetFromSurface(light.position, light.towardsReceiver, light.coordinateScale);
     ray.origin = origin;
     ray.flags = SHADOW_SEGMENT;
     ray.direction = target - origin;

@@ -6,6 +6,7 @@
 #define VKPT_SURFACE_GLSL
 
 #include "shared/intersect.h"
+#include "shared/ray_offset.h"
 
 struct SurfacePoint {
     vec3 position;
@@ -13,6 +14,7 @@ struct SurfacePoint {
     vec3 shadingNormal;    // unit, interpolated, on the same side
     vec3 rawShadingNormal; // interpolated as stored, for the normals integrator
     bool frontFace;        // the ray arrived on the counter-clockwise side
+    float coordinateScale; // of the triangle's vertices, for offsetFromSurface
     uint triangle;
     uint materialIndex;
 };
@@ -26,6 +28,7 @@ SurfacePoint makeSurfacePoint(HitRecord hit, vec3 rayDirection) {
     // Barycentric interpolation keeps the point on the triangle's plane, unlike o + t·d.
     float w = 1.0 - hit.u - hit.v;
     s.position = tri.v0 * w + tri.v1 * hit.u + tri.v2 * hit.v;
+    s.coordinateScale = triangleCoordinateScale(tri.v0, tri.v1, tri.v2);
     vec3 face = normalize(triangleFaceNormal(tri.v0, tri.v1, tri.v2));
     s.frontFace = dot(face, rayDirection) < 0.0;
     s.geometricNormal = s.frontFace ? face : -face;

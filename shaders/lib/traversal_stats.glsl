@@ -1,11 +1,13 @@
 // traversal_stats.glsl — a workgroup's traversal work (BVH nodes and triangles tested, walks
 // cut short), summed in shared memory and added to queueCounters once per workgroup, so the
 // statistics cost one global atomic per 64 rays. Kernels call beginTraversalStats() and
-// endTraversalStats() from every invocation (they contain barriers). Needs queueCounters.
+// endTraversalStats() from every invocation (they contain barriers). Needs queueCounters
+// and what traverse.glsl needs.
 #ifndef VKPT_TRAVERSAL_STATS_GLSL
 #define VKPT_TRAVERSAL_STATS_GLSL
 
 #include "lib/counters.glsl"
+#include "lib/traverse.glsl"
 
 shared uint groupNodesVisited;
 shared uint groupTriangleTests;

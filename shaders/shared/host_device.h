@@ -37,8 +37,12 @@ using glm::vec4;
 using uint = std::uint32_t;
 // Shared functions are header-only on the C++ side.
 #define VKPT_FN inline
+// C++ builds do not contract a·b − c·d into an FMA unless asked (-ffp-contract=off where it
+// matters); GLSL needs the precise qualifier for the same guarantee.
+#define VKPT_PRECISE
 #else
 #define VKPT_FN
+#define VKPT_PRECISE precise
 #endif
 
 #define WORKGROUP_SIZE 64

@@ -9,24 +9,29 @@
 namespace vkpt::gpu {
 #endif
 
-// Wächter and Binder, "A Fast and Robust Method for Avoiding Self-Intersection", Ray Tracing
-// Gems, chapter 6, 2019: move the point a fixed number of float ULPs along the geometric
-// normal (which scales with the point's magnitude, as the hit point's rounding error does),
-// and by a small absolute distance near the origin where ULPs become tiny.
-#define RAY_OFFSET_ORIGIN (1.0f / 32.0f)
-#define RAY_OFFSET_FLOAT_SCALE (1.0f / 65536.0f)
-#define RAY_OFFSET_INT_SCALE 256.0f
-
-VKPT_FN float offsetCoordinate(float p, float n) {
-    int ulps = int(RAY_OFFSET_INT_SCALE * n);
-    float moved = intBitsToFloat(floatBitsToInt(p) + (p < 0.0f ? -ulps : ulps));
-    return abs(p) < RAY_OFFSET_ORIGIN ? p + RAY_OFFSET_FLOAT_SCALE * n : moved;
+// The largest coordinate magnitude of a triangle: the scale of the rounding error in any point
+// computed from its vertices (barycentric interpolation errs by a few ulps of it).
+VKPT_FN float triangleCoordinateScale(vec3 v0, vec3 v1, vec3 v2) {
+    vec3 m = max(max(abs(v0), abs(v1)), abs(v2));
+    return max(max(m.x, m.y), m.z);
 }
 
-// normal: the unit geometric normal on the side the new ray leaves towards.
-VKPT_FN vec3 offsetRayOrigin(vec3 p, vec3 normal) {
-    return vec3(offsetCoordinate(p.x, normal.x), offsetCoordinate(p.y, normal.y),
-                offsetCoordinate(p.z, normal.z));
+// A point moved off its surface along the geometric normal by RAY_OFFSET_EPSILONS float
+// epsilons of the surface's coordinate scale. The error of a hit point interpolated from the
+// vertices, and of the intersection test's plane distance, are a few epsilons of that scale
+// wherever the triangle is, so the offset serves a millimetre part at the origin and a city
+// block a million units away alike. Wächter and Binder ("A Fast and Robust Method for Avoiding
+// Self-Intersection", Ray Tracing Gems ch. 6, 2019) move the point by 256 ulps of itself,
+// with an absolute 1/65536 near the origin: that absolute step swallows a 1e-4-scale scene,
+// and 256 ulps are a quarter of a metre at 1e4 (docs/numerical-stability.md measures both).
+// 64 epsilons: tests/extremes/self_intersection_test.cpp found re-hits at 16 (1 in 10^6) and
+// 32 (2 in 2·10^7), none at 64 in 2·10^7 triangles of size 1e-4..1e4 up to 1e6 away, leaving
+// at grazing angles down to cos θ = 1e-4.
+#define RAY_OFFSET_EPSILONS 64.0f
+#define FLOAT_EPSILON 1.1920929e-7f
+
+VKPT_FN vec3 offsetFromSurface(vec3 p, vec3 normal, float coordinateScale) {
+    return p + normal * (RAY_OFFSET_EPSILONS * FLOAT_EPSILON * coordinateScale);
 }
 
 #ifdef __cplusplus

@@ -1,0 +1,136 @@
+// ray_queries.cpp — uploads rays as queue records, dispatches one traversal kernel, downloads.
+#include "render/ray_queries.h"
+
+#include <algorithm>
+
+#include "gpu/context.h"
+#include "gpu/dispatch.h"
+#include "gpu/submit.h"
+#include "gpu/upload.h"
+#include "render/accumulation.h"
+#include "render/device_scene.h"
+#include "render/wavefront_kernels.h"
+#include "render/work_buffers.h"
+
+namespace vkpt {
+
+struct DeviceRayQueries::State {
+    State(GpuContext& c, const PreparedScene& scene, std::uint32_t batch)
+        : context(c), batchSize(batch), deviceScene(uploadScene(c, scene)), buffers(c, batch, 1, 1),
+          closestKernel(makeWavefrontKernel(c, WavefrontKernel::TraceClosest)),
+          shadowKernel(makeWavefrontKernel(c, WavefrontKernel::TraceShadow)),
+          closestSet(bindWavefrontKernel(closestKernel, WavefrontKernel::TraceClosest, table())),
+          shadowSet(bindWavefrontKernel(shadowKernel, WavefrontKernel::TraceShadow, table())) {
+        gpu::FrameParams frame{};
+        frame.lightSamples = 1;
+        frame.slotCount = batch;
+        frame.pixelCount = 1;
+        frame.nodeCount = deviceScene.nodeCount;
+        frame.emitterCount = deviceScene.emitterCount;
+        upload(context, buffers.frameParams, std::span<const gpu::FrameParams>(&frame, 1));
+        fillBuffer(context, buffers.queueCounters, 0);
+    }
+
+    BufferTable table() const {
+        BufferTable t;
+        t.set(BINDING_FRAME_PARAMS, buffers.frameParams);
+        t.set(BINDING_BVH_NODES, deviceScene.bvhNodes);
+        t.set(BINDING_TRIANGLES, deviceScene.triangles);
+        t.set(BINDING_MATERIALS, deviceScene.materials);
+        t.set(BINDING_RAYS, buffers.rays);
+        t.set(BINDING_HITS, buffers.hits);
+        t.set(BINDING_SHADOW_RAYS, buffers.shadowRays);
+        t.set(BINDING_QUEUE_COUNTERS, buffers.queueCounters);
+        return t;
+    }
+
+    // The kernels read the current queue's ray count from queueCounters[COUNTER_RAYS].
+    void setRayCount(std::uint32_t count) {
+        upload(context, buffers.queueCounters, std::span<const std::uint32_t>(&count, 1),
+               COUNTER_RAYS * sizeof(std::uint32_t));
+    }
+
+    void run(const Kernel& kernel, const DescriptorSet& set, std::uint32_t count) {
+        const gpu::PassParams params{};
+        submitAndWait(context, kernel.name(), [&](VkCommandBuffer commands) {
+            recordDispatch(commands, kernel, set, {workgroupsFor(count, WORKGROUP_SIZE), 1, 1},
+                           pushConstantBytes(params));
+        });
+    }
+
+    DeviceCounters counters() {
+        std::vector<std::uint32_t> words =
+            download<std::uint32_t>(context, buffers.queueCounters, COUNTER_WORDS);
+        DeviceCounters result;
+        std::copy(words.begin(), words.end(), result.words);
+        return result;
+    }
+
+    GpuContext& context;
+    std::uint32_t batchSize;
+    DeviceScene deviceScene;
+    WorkBuffers buffers;
+    Kernel closestKernel;
+    Kernel shadowKernel;
+    DescriptorSet closestSet;
+    DescriptorSet shadowSet;
+};
+
+DeviceRayQueries::DeviceRayQueries(GpuContext& context, const PreparedScene& scene,
+                                   std::uint32_t batchSize)
+    : state_(std::make_unique<State>(context, scene, batchSize)) {}
+
+DeviceRayQueries::~DeviceRayQueries() = default;
+
+std::vector<gpu::HitRecord> DeviceRayQueries::closest(std::span<const DeviceRay> rays) {
+    State& s = *state_;
+    std::vector<gpu::HitRecord> hits;
+    for (std::size_t first = 0; first < rays.size(); first += s.batchSize) {
+        const auto count =
+            static_cast<std::uint32_t>(std::min<std::size_t>(s.batchSize, rays.size() - first));
+        std::vector<gpu::RayRecord> records;
+        for (std::uint32_t i = 0; i < count; ++i) {
+            const DeviceRay& r = rays[first + i];
+            records.push_back({r.origin, i, r.direction, 0u});
+        }
+        upload(s.context, s.buffers.rays, std::span<const gpu::RayRecord>(records));
+        s.setRayCount(count);
+        s.run(s.closestKernel, s.closestSet, count);
+        std::vector<gpu::HitRecord> batch =
+            download<gpu::HitRecord>(s.context, s.buffers.hits, count);
+        hits.insert(hits.end(), batch.begin(), batch.end());
+    }
+    return hits;
+}
+
+std::vector<bool> DeviceRayQueries::occluded(std::span<const DeviceRay> rays) {
+    State& s = *state_;
+    std::vector<bool> result;
+    for (std::size_t first = 0; first < rays.size(); first += s.batchSize) {
+        const auto count =
+            static_cast<std::uint32_t>(std::min<std::size_t>(s.batchSize, rays.size() - first));
+        std::vector<gpu::ShadowRay> records;
+        for (std::uint32_t i = 0; i < count; ++i) {
+            const DeviceRay& r = rays[first + i];
+            records.push_back(
+                {r.origin, SHADOW_SEGMENT, r.direction, r.tMax, glm::vec3(0.0f), 0.0f});
+        }
+        upload(s.context, s.buffers.shadowRays, std::span<const gpu::ShadowRay>(records));
+        s.setRayCount(count);
+        s.run(s.shadowKernel, s.shadowSet, count);
+        for (const gpu::ShadowRay& r :
+             download<gpu::ShadowRay>(s.context, s.buffers.shadowRays, count))
+            result.push_back((r.flags & SHADOW_VISIBLE) == 0);
+    }
+    return result;
+}
+
+std::uint32_t DeviceRayQueries::truncatedTraversals() {
+    return state_->counters().words[COUNTER_TRUNCATED];
+}
+
+std::uint64_t DeviceRayQueries::nodesVisited() {
+    return state_->counters().wide(COUNTER_NODES_VISITED);
+}
+
+} // namespace vkpt

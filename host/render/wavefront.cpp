@@ -1,0 +1,284 @@
+// wavefront.cpp — the pass loop: plan k samples for the active pixels, run each chunk's
+// bounces from one command buffer, read the counters, compact, repeat.
+#include "render/wavefront.h"
+
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "common/progress.h"
+#include "gpu/context.h"
+#include "gpu/submit.h"
+#include "gpu/upload.h"
+#include "render/accumulation.h"
+#include "render/device_scene.h"
+#include "render/pass_recorder.h"
+#include "render/pass_schedule.h"
+#include "render/wavefront_kernels.h"
+#include "render/work_buffers.h"
+#include "shared/adaptive.h"
+
+namespace vkpt {
+
+namespace {
+
+// Bounces recorded into one command buffer. Default depths (16) need one submission per
+// chunk; deeper limits continue in further submissions while the queue holds rays, so
+// recording stays bounded whatever --max-depth says.
+constexpr std::uint32_t kBouncesPerSubmission = 32;
+
+std::uint32_t integratorCode(const RenderSettings& settings) {
+    switch (settings.integrator) {
+    case Integrator::Path:
+        return INTEGRATOR_PATH;
+    case Integrator::Direct:
+        return settings.lightSampling == LightSampling::Hemisphere ? INTEGRATOR_DIRECT_HEMISPHERE
+                                                                   : INTEGRATOR_DIRECT_LIGHT;
+    case Integrator::Normals:
+        return INTEGRATOR_NORMALS;
+    }
+    return INTEGRATOR_PATH;
+}
+
+// Camera ray plus maxDepth scattering events for the path tracer; the direct and normals
+// integrators trace their camera rays only (the direct one's light samples ride along).
+std::uint64_t bouncesToTrace(const RenderSettings& settings) {
+    if (settings.integrator != Integrator::Path) return 1;
+    return std::uint64_t(settings.maxDepth) + 1;
+}
+
+// The same expression as the reference's adaptiveDarkFloor, so both stop at the same floor.
+float darkFloor(float exposure) {
+    return ADAPTIVE_DARK_FLOOR * std::exp2(-exposure);
+}
+
+gpu::FrameParams makeFrameParams(const RenderSettings& settings, const gpu::Camera& camera,
+                                 const DeviceScene& scene, std::uint32_t slotCount) {
+    gpu::FrameParams f{};
+    f.camera = camera;
+    f.seed = settings.seed;
+    f.maxDepth = settings.maxDepth;
+    f.rrStartDepth = settings.rrStartDepth;
+    f.lightSamples = settings.integrator == Integrator::Normals ? 0u : settings.lightSamples;
+    f.integrator = integratorCode(settings);
+    f.pathFilter = static_cast<std::uint32_t>(settings.pathFilter);
+    f.emitterCount = scene.emitterCount;
+    f.adaptive = settings.adaptive.enabled ? 1u : 0u;
+    f.adaptiveBatch = settings.adaptive.batchSize;
+    f.adaptiveMinSamples = settings.adaptive.minSamples;
+    f.adaptiveTolerance = settings.adaptive.tolerance;
+    f.adaptiveDarkFloor = darkFloor(settings.exposure);
+    f.slotCount = slotCount;
+    f.pixelCount = camera.width * camera.height;
+    f.nodeCount = scene.nodeCount;
+    return f;
+}
+
+BufferTable makeBufferTable(const DeviceScene& scene, const WorkBuffers& work) {
+    BufferTable table;
+    table.set(BINDING_FRAME_PARAMS, work.frameParams);
+    table.set(BINDING_BVH_NODES, scene.bvhNodes);
+    table.set(BINDING_TRIANGLES, scene.triangles);
+    table.set(BINDING_TRIANGLE_NORMALS, scene.triangleNormals);
+    table.set(BINDING_MATERIALS, scene.materials);
+    table.set(BINDING_EMITTERS, scene.emitters);
+    table.set(BINDING_PATH_STATES, work.pathStates);
+    table.set(BINDING_RAYS, work.rays);
+    table.set(BINDING_HITS, work.hits);
+    table.set(BINDING_SHADOW_RAYS, work.shadowRays);
+    table.set(BINDING_PIXEL_STATES, work.pixelStates);
+    table.set(BINDING_ACTIVE_PIXELS, work.activePixels);
+    table.set(BINDING_QUEUE_COUNTERS, work.queueCounters);
+    table.set(BINDING_DISPATCH_ARGS, work.dispatchArgs);
+    return table;
+}
+
+std::uint32_t slotCountFor(const GpuContext& context, const RenderSettings& settings,
+                           const WavefrontOptions& options) {
+    SlotRequest request;
+    request.lightSamples = settings.lightSamples;
+    request.pathsWanted =
+        std::uint64_t(settings.width) * settings.height * settings.samplesPerPixel;
+    request.requestedSlots = options.slotCount;
+    return chooseSlotCount(context, request);
+}
+
+std::unique_ptr<GpuTimer> makeTimer(const GpuContext& context, const WavefrontOptions& options) {
+    if (!options.timeKernels) return nullptr;
+    return std::make_unique<GpuTimer>(context, PassRecorder::timerCapacity(kBouncesPerSubmission),
+                                      "kernelTimer");
+}
+
+class WavefrontRenderer {
+public:
+    WavefrontRenderer(GpuContext& context, const PreparedScene& scene, const gpu::Camera& camera,
+                      const RenderSettings& settings, const WavefrontOptions& options)
+        : context_(context), settings_(settings), camera_(camera), options_(options),
+          pixelCount_(camera.width * camera.height), scene_(uploadScene(context, scene)),
+          buffers_(context, slotCountFor(context, settings, options), settings.lightSamples,
+                   pixelCount_),
+          table_(makeBufferTable(scene_, buffers_)), pipelines_(context, table_),
+          timer_(makeTimer(context, options)),
+          recorder_(pipelines_, buffers_, timer_.get(),
+                    settings.integrator != Integrator::Normals && settings.lightSamples > 0),
+          bounces_(bouncesToTrace(settings)) {}
+
+    WavefrontResult run();
+
+private:
+    void initialise();
+    ScheduleInputs schedule() const;
+    gpu::PassParams chunkParams(std::uint32_t samplesPerPass, std::uint32_t start,
+                                std::uint32_t pixels) const;
+    bool runPass(); // false once nothing is left to sample
+    void runChunk(const gpu::PassParams& params, bool firstChunk);
+    void submit(const std::string& label, const std::function<void()>& record);
+    WavefrontResult finish(double seconds);
+
+    GpuContext& context_;
+    const RenderSettings& settings_;
+    gpu::Camera camera_;
+    const WavefrontOptions& options_;
+    std::uint32_t pixelCount_;
+    DeviceScene scene_;
+    WorkBuffers buffers_;
+    BufferTable table_;
+    WavefrontPipelines pipelines_;
+    std::unique_ptr<GpuTimer> timer_;
+    PassRecorder recorder_;
+    std::uint64_t bounces_;
+    KernelTimeTotals times_;
+    std::unique_ptr<ProgressBar> progress_;
+
+    // Where the render stands between passes.
+    std::uint32_t activePixels_ = 0;
+    std::uint32_t samplesDone_ = 0;
+    std::uint32_t activeParity_ = 0;
+    bool useActiveList_ = false;
+    std::uint32_t passes_ = 0;
+    bool interrupted_ = false;
+};
+
+void WavefrontRenderer::initialise() {
+    gpu::FrameParams frame = makeFrameParams(settings_, camera_, scene_, buffers_.slotCount);
+    upload(context_, buffers_.frameParams, std::span<const gpu::FrameParams>(&frame, 1));
+    fillBuffer(context_, buffers_.pixelStates, 0);
+    fillBuffer(context_, buffers_.queueCounters, 0);
+    activePixels_ = pixelCount_;
+}
+
+void WavefrontRenderer::submit(const std::string& label, const std::function<void()>& record) {
+    submitAndWait(context_, label, [&](VkCommandBuffer commands) {
+        recorder_.begin(commands);
+        record();
+        recorder_.readBackCounters();
+    });
+    if (timer_) times_.add(timer_->results());
+}
+
+// Bounces in submissions of kBouncesPerSubmission; between two, the host looks at the queue
+// and stops early when every path of the chunk has ended.
+void WavefrontRenderer::runChunk(const gpu::PassParams& params, bool firstChunk) {
+    const std::string label =
+        "pass " + std::to_string(passes_) + " chunk " + std::to_string(params.chunkStart);
+    std::uint64_t bounce = 0;
+    while (true) {
+        const std::uint64_t end = std::min(bounces_, bounce + kBouncesPerSubmission);
+        const bool last = end == bounces_;
+        submit(label, [&] {
+            if (bounce == 0 && firstChunk) recorder_.resetActiveList();
+            if (bounce == 0) recorder_.generateCameraRays(params);
+            for (std::uint64_t b = bounce; b < end; ++b) {
+                gpu::PassParams bounceParams = params;
+                bounceParams.bounce = static_cast<std::uint32_t>(b);
+                recorder_.traceBounce(bounceParams);
+            }
+            if (last) recorder_.accumulate(params);
+        });
+        bounce = end;
+        if (last) return;
+        if (readCounters(buffers_.countersReadback).raysInQueue(bounce & 1) == 0) {
+            submit(label + " accumulate", [&] { recorder_.accumulate(params); });
+            return;
+        }
+    }
+}
+
+ScheduleInputs WavefrontRenderer::schedule() const {
+    const AdaptiveSettings& adaptive = settings_.adaptive;
+    return {settings_.samplesPerPixel, samplesDone_,       activePixels_,      buffers_.slotCount,
+            adaptive.enabled,          adaptive.batchSize, adaptive.minSamples};
+}
+
+gpu::PassParams WavefrontRenderer::chunkParams(std::uint32_t samplesPerPass, std::uint32_t start,
+                                               std::uint32_t pixels) const {
+    gpu::PassParams params{};
+    params.sampleBase = samplesDone_;
+    params.samplesPerPass = samplesPerPass;
+    params.chunkStart = start;
+    params.chunkPixels = pixels;
+    params.activeParity = activeParity_;
+    params.useActiveList = useActiveList_ ? 1u : 0u;
+    return params;
+}
+
+bool WavefrontRenderer::runPass() {
+    const std::uint32_t k = samplesForPass(schedule());
+    const std::uint32_t chunk = pixelsPerChunk(activePixels_, k, buffers_.slotCount);
+    for (std::uint32_t start = 0; start < activePixels_; start += chunk)
+        runChunk(chunkParams(k, start, std::min(chunk, activePixels_ - start)), start == 0);
+    activePixels_ = readCounters(buffers_.countersReadback).nextActivePixels();
+    activeParity_ ^= 1u;
+    useActiveList_ = true;
+    samplesDone_ += k;
+    ++passes_;
+    progress_->setStatus("active pixels " + std::to_string(activePixels_));
+    progress_->advance(k);
+    return samplesDone_ < settings_.samplesPerPixel && activePixels_ > 0;
+}
+
+WavefrontResult WavefrontRenderer::finish(double seconds) {
+    std::vector<gpu::PixelState> pixels =
+        download<gpu::PixelState>(context_, buffers_.pixelStates, pixelCount_);
+    WavefrontResult result;
+    result.output = makeRenderOutput(pixels, camera_.width, camera_.height);
+    DeviceCounters counters = readCounters(buffers_.countersReadback);
+    addCounterStats(counters, result.stats);
+    result.stats.seconds = seconds;
+    result.stats.samplesTaken = totalSamplesTaken(pixels);
+    result.stats.uniformBudget = std::uint64_t(pixelCount_) * settings_.samplesPerPixel;
+    result.kernelTimes = times_.totals();
+    result.truncatedTraversals = counters.words[COUNTER_TRUNCATED];
+    result.passes = passes_;
+    result.slotCount = buffers_.slotCount;
+    result.interrupted = interrupted_;
+    return result;
+}
+
+WavefrontResult WavefrontRenderer::run() {
+    initialise();
+    const auto start = std::chrono::steady_clock::now();
+    progress_ = makeProgressBar("vkpt", settings_.samplesPerPixel, settings_.quiet);
+    while (runPass()) {
+        if (options_.interrupt && options_.interrupt->load()) {
+            interrupted_ = true;
+            break;
+        }
+    }
+    progress_->finish();
+    const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+    return finish(elapsed.count());
+}
+
+} // namespace
+
+WavefrontResult renderWavefront(GpuContext& context, const PreparedScene& scene,
+                                const gpu::Camera& camera, const RenderSettings& settings,
+                                const WavefrontOptions& options) {
+    WavefrontRenderer renderer(context, scene, camera, settings, options);
+    return renderer.run();
+}
+
+} // namespace vkpt

@@ -1,0 +1,69 @@
+// wavefront_kernels.h — the wavefront's kernels by name (file ↔ enum ↔ pipeline and dispatch
+// label: trace_closest.comp ↔ WavefrontKernel::TraceClosest ↔ "trace_closest"), which buffers
+// each one binds, and their pipelines.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "gpu/descriptor_set.h"
+#include "gpu/kernel.h"
+
+namespace vkpt {
+
+class Buffer;
+class GpuContext;
+
+// In the order a pass runs them.
+enum class WavefrontKernel : std::uint32_t {
+    GenerateCameraRays,
+    PrepareDispatches,
+    TraceClosest,
+    ShadeHits,
+    TraceShadow,
+    AddLightSamples,
+    Accumulate,
+};
+inline constexpr std::size_t kWavefrontKernelCount = 7;
+
+std::string_view kernelName(WavefrontKernel kernel);
+
+// The storage-buffer bindings (BINDING_* of lib/wavefront.h) the kernel declares.
+std::span<const std::uint32_t> kernelBindings(WavefrontKernel kernel);
+
+inline constexpr std::uint32_t kWavefrontBindingCount = 14;
+
+// Which buffer each binding number refers to; a kernel's descriptor set takes its bindings
+// from here.
+struct BufferTable {
+    std::array<const Buffer*, kWavefrontBindingCount> buffers{};
+
+    void set(std::uint32_t binding, const Buffer& buffer) { buffers.at(binding) = &buffer; }
+};
+
+// The pipeline of one kernel, with the PassParams push constants.
+Kernel makeWavefrontKernel(const GpuContext& context, WavefrontKernel kernel);
+
+// A descriptor set for `kernel` with each of its bindings pointing into `table`.
+DescriptorSet bindWavefrontKernel(const Kernel& kernel, WavefrontKernel id,
+                                  const BufferTable& table);
+
+// Every kernel's pipeline and descriptor set, created together.
+class WavefrontPipelines {
+public:
+    WavefrontPipelines(const GpuContext& context, const BufferTable& table);
+
+    const Kernel& kernel(WavefrontKernel id) const { return kernels_[index(id)]; }
+    const DescriptorSet& set(WavefrontKernel id) const { return sets_[index(id)]; }
+
+private:
+    static std::size_t index(WavefrontKernel id) { return static_cast<std::size_t>(id); }
+
+    std::vector<Kernel> kernels_;
+    std::vector<DescriptorSet> sets_;
+};
+
+} // namespace vkpt

@@ -1,0 +1,81 @@
+// work_buffers.cpp — sizing and creating the wavefront's buffers.
+#include "render/work_buffers.h"
+
+#include <algorithm>
+
+#include "lib/wavefront.h"
+
+namespace vkpt {
+
+namespace {
+
+constexpr std::uint32_t kGpuSlots = 1u << 20;
+constexpr std::uint32_t kCpuSlots = 1u << 16;
+
+// Usage of every working buffer: kernels read and write them; transfers fill, upload and
+// download them (tests inspect them too).
+constexpr VkBufferUsageFlags kWorkUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                          VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                                          VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+
+std::uint64_t recordsPerSlot(std::uint32_t lightSamples) {
+    return std::max<std::uint64_t>(lightSamples, 1);
+}
+
+// The largest per-slot array (light samples or the two ray queues) decides the per-buffer cap.
+std::uint64_t largestBytesPerSlot(std::uint32_t lightSamples) {
+    return std::max<std::uint64_t>({sizeof(gpu::PathState), 2 * sizeof(gpu::RayRecord),
+                                    recordsPerSlot(lightSamples) * sizeof(gpu::ShadowRay)});
+}
+
+std::uint64_t totalBytesPerSlot(std::uint32_t lightSamples) {
+    return sizeof(gpu::PathState) + 2 * sizeof(gpu::RayRecord) + sizeof(gpu::HitRecord) +
+           recordsPerSlot(lightSamples) * sizeof(gpu::ShadowRay);
+}
+
+Buffer makeWorkBuffer(GpuContext& context, const char* name, std::uint64_t bytes,
+                      VkBufferUsageFlags extraUsage = 0) {
+    return Buffer(context, {name, bytes, kWorkUsage | extraUsage, MemoryLocation::DeviceLocal});
+}
+
+} // namespace
+
+std::uint32_t chooseSlotCount(const GpuContext& context, const SlotRequest& request) {
+    const DeviceLimits& limits = context.limits();
+    const bool cpu = context.deviceInfo().type == VK_PHYSICAL_DEVICE_TYPE_CPU;
+    std::uint64_t slots =
+        request.requestedSlots ? request.requestedSlots : (cpu ? kCpuSlots : kGpuSlots);
+    std::uint64_t bufferCap =
+        std::min(limits.maxStorageBufferRange, limits.maxMemoryAllocationSize);
+    slots = std::min(slots, bufferCap / largestBytesPerSlot(request.lightSamples));
+    if (limits.deviceLocalHeapSize > 0)
+        slots = std::min(slots,
+                         limits.deviceLocalHeapSize / 4 / totalBytesPerSlot(request.lightSamples));
+    if (request.pathsWanted > 0) slots = std::min(slots, request.pathsWanted + WORKGROUP_SIZE - 1);
+    slots = std::max<std::uint64_t>(slots / WORKGROUP_SIZE, 1) * WORKGROUP_SIZE;
+    return static_cast<std::uint32_t>(slots);
+}
+
+WorkBuffers::WorkBuffers(GpuContext& context, std::uint32_t slots, std::uint32_t lightSamples,
+                         std::uint32_t pixelCount)
+    : slotCount(slots),
+      frameParams(makeWorkBuffer(context, "frameParams", sizeof(gpu::FrameParams))),
+      pathStates(
+          makeWorkBuffer(context, "pathStates", std::uint64_t(slots) * sizeof(gpu::PathState))),
+      rays(makeWorkBuffer(context, "rays", 2 * std::uint64_t(slots) * sizeof(gpu::RayRecord))),
+      hits(makeWorkBuffer(context, "hits", std::uint64_t(slots) * sizeof(gpu::HitRecord))),
+      shadowRays(makeWorkBuffer(context, "shadowRays",
+                                std::uint64_t(slots) * recordsPerSlot(lightSamples) *
+                                    sizeof(gpu::ShadowRay))),
+      pixelStates(makeWorkBuffer(context, "pixelStates",
+                                 std::uint64_t(pixelCount) * sizeof(gpu::PixelState))),
+      activePixels(makeWorkBuffer(context, "activePixels",
+                                  2 * std::uint64_t(pixelCount) * sizeof(std::uint32_t))),
+      queueCounters(
+          makeWorkBuffer(context, "queueCounters", COUNTER_WORDS * sizeof(std::uint32_t))),
+      dispatchArgs(makeWorkBuffer(context, "dispatchArgs", DISPATCH_WORDS * sizeof(std::uint32_t),
+                                  VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT)),
+      countersReadback(context, {"queueCounters.readback", COUNTER_WORDS * sizeof(std::uint32_t),
+                                 VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryLocation::Readback}) {}
+
+} // namespace vkpt

@@ -1,0 +1,42 @@
+// work_buffers.h — the wavefront's working set: path states, the double-buffered ray queue,
+// hits, light-sample records, per-pixel estimates, the active pixel lists, counters and the
+// indirect dispatch arguments; and how many path slots the device can afford.
+#pragma once
+
+#include <cstdint>
+
+#include "gpu/buffer.h"
+#include "gpu/context.h"
+
+namespace vkpt {
+
+struct SlotRequest {
+    std::uint32_t lightSamples = 1;   // light-sample records per slot
+    std::uint64_t pathsWanted = 0;    // pixels × spp: more slots than this would sit idle
+    std::uint32_t requestedSlots = 0; // 0: choose from the device
+};
+
+// Slots in flight: 2^20 on a GPU, 2^16 on a CPU device (lavapipe runs them on a few cores,
+// where more buys nothing but memory), then bounded so that every per-slot buffer fits
+// maxStorageBufferRange and maxMemoryAllocationSize and all of them a quarter of the
+// device-local heap; never more than the render needs. A multiple of WORKGROUP_SIZE.
+std::uint32_t chooseSlotCount(const GpuContext& context, const SlotRequest& request);
+
+struct WorkBuffers {
+    WorkBuffers(GpuContext& context, std::uint32_t slotCount, std::uint32_t lightSamples,
+                std::uint32_t pixelCount);
+
+    std::uint32_t slotCount;
+    Buffer frameParams;      // FrameParams
+    Buffer pathStates;       // PathState per slot
+    Buffer rays;             // RayRecord, two queues of slotCount
+    Buffer hits;             // HitRecord per ray of the current queue
+    Buffer shadowRays;       // ShadowRay, lightSamples per ray of the current queue
+    Buffer pixelStates;      // PixelState per pixel
+    Buffer activePixels;     // uint, two lists of pixelCount
+    Buffer queueCounters;    // COUNTER_WORDS uints
+    Buffer dispatchArgs;     // DISPATCH_WORDS uints: VkDispatchIndirectCommands
+    Buffer countersReadback; // host-visible copy of queueCounters, written at the end of a pass
+};
+
+} // namespace vkpt

@@ -1,0 +1,75 @@
+// accumulate.comp — the last stage of a pass, one invocation per active pixel of the chunk: adds
+// the pixel's k samples in sample order to its running estimate, applies the adaptive stopping
+// rule after every sample that completes a batch (exactly where the reference does), and
+// appends the pixels that go on to the next pass's active list.
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "lib/frame.glsl"
+
+layout(local_size_x = WORKGROUP_SIZE) in;
+
+VKPT_READONLY_BUFFER(BINDING_PATH_STATES, PathState, pathStates)
+VKPT_BUFFER(BINDING_PIXEL_STATES, PixelState, pixelStates)
+VKPT_WRITEONLY_BUFFER(BINDING_ACTIVE_PIXELS, uint, activePixels)
+VKPT_BUFFER(BINDING_QUEUE_COUNTERS, uint, queueCounters)
+
+#include "lib/counters.glsl"
+#include "shared/adaptive.h"
+#include "shared/sampling.h"
+
+// Tests the exponent bits, which no compiler may assume away (isnan can be, under fast math).
+bool isFiniteRadiance(vec3 v) {
+    uvec3 exponent = floatBitsToUint(v) & 0x7f800000u;
+    return all(notEqual(exponent, uvec3(0x7f800000u)));
+}
+
+// Kahan summation of the radiance (precise: reassociation would cancel the compensation) and
+// Welford's running mean and M2 of the luminance.
+void addSample(inout PixelState pixel, vec3 radiance) {
+    precise vec3 corrected = radiance - pixel.compensation;
+    precise vec3 total = pixel.radianceSum + corrected;
+    precise vec3 lost = (total - pixel.radianceSum) - corrected;
+    pixel.compensation = lost;
+    pixel.radianceSum = total;
+    pixel.count += 1u;
+    float value = luminance(radiance);
+    float delta = value - pixel.luminanceMean;
+    pixel.luminanceMean += delta / float(pixel.count);
+    pixel.luminanceM2 += delta * (value - pixel.luminanceMean);
+}
+
+bool batchConverged(PixelState pixel) {
+    if (frame.adaptive == 0u || pixel.samplesTaken % frame.adaptiveBatch != 0u) return false;
+    return isPixelConverged(pixel.count, pixel.luminanceMean, pixel.luminanceM2,
+                            frame.adaptiveMinSamples, frame.adaptiveTolerance,
+                            frame.adaptiveDarkFloor);
+}
+
+void main() {
+    uint activeIndex = flatInvocationIndex();
+    if (activeIndex >= passParams.chunkPixels) return;
+    uint k = passParams.samplesPerPass;
+    uint first = activeIndex * k;
+    uint pixelIndex = pathStates[first].pixel;
+    PixelState pixel = pixelStates[pixelIndex];
+    uint nonFinite = 0u;
+    for (uint j = 0u; j < k; ++j) {
+        PathState path = pathStates[first + j];
+        if (isFiniteRadiance(path.radiance)) {
+            addSample(pixel, path.radiance);
+        } else {
+            ++nonFinite; // discarded: one NaN would poison the pixel for good
+        }
+        pixel.samplesTaken = path.sampleIndex + 1u;
+        // A converged pixel ignores the rest of the pass, so it takes the reference's samples.
+        if (batchConverged(pixel)) {
+            pixel.converged = 1u;
+            break;
+        }
+    }
+    pixelStates[pixelIndex] = pixel;
+    addToCounter64(COUNTER_NON_FINITE, nonFinite);
+    if (pixel.converged != 0u) return;
+    uint next = atomicAdd(queueCounters[COUNTER_ACTIVE_NEXT], 1u);
+    activePixels[(passParams.activeParity ^ 1u) * frame.pixelCount + next] = pixelIndex;
+}

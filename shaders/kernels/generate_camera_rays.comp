@@ -1,0 +1,37 @@
+// generate_camera_rays.comp — the first stage of a pass: one camera ray per path slot, slot =
+// (active pixel of the chunk) · k + (sample j of the pass), into half 0 of the ray queue.
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "lib/frame.glsl"
+#include "shared/camera.h"
+#include "shared/rng.h"
+
+layout(local_size_x = WORKGROUP_SIZE) in;
+
+VKPT_READONLY_BUFFER(BINDING_ACTIVE_PIXELS, uint, activePixels)
+VKPT_WRITEONLY_BUFFER(BINDING_PATH_STATES, PathState, pathStates)
+VKPT_WRITEONLY_BUFFER(BINDING_RAYS, RayRecord, rays)
+VKPT_BUFFER(BINDING_QUEUE_COUNTERS, uint, queueCounters)
+
+uint activePixel(uint activeIndex) {
+    if (passParams.useActiveList == 0u) return activeIndex;
+    return activePixels[passParams.activeParity * frame.pixelCount + activeIndex];
+}
+
+void main() {
+    uint slot = flatInvocationIndex();
+    uint k = passParams.samplesPerPass;
+    uint slots = passParams.chunkPixels * k;
+    if (slot >= slots) return;
+    uint pixel = activePixel(passParams.chunkStart + slot / k);
+    uint sampleIndex = passParams.sampleBase + slot % k;
+    uint x = pixel % frame.camera.width;
+    uint y = pixel / frame.camera.width;
+    // The reference's camera sample (docs/integrator.md): a one-pixel box filter.
+    vec4 jitter = randomFloats(frame.seed, pixel, sampleIndex, 0u, DIM_CAMERA);
+    vec2 film = vec2(float(x) + jitter.x, float(y) + jitter.y);
+    vec3 direction = cameraRayDirection(frame.camera, film);
+    pathStates[slot] = PathState(vec3(1.0), pixel, vec3(0.0), sampleIndex, vec3(0.0), 0.0);
+    rays[slot] = RayRecord(frame.camera.position, slot, direction, 0u);
+    if (slot == 0u) queueCounters[COUNTER_RAYS] = slots;
+}

@@ -1,0 +1,169 @@
+// wavefront.h — the records and bindings of the wavefront path tracer (vkpt), declared once for
+// host/render (C++) and shaders/kernels (GLSL), under the rules of shared/host_device.h: every
+// vec3 is followed by a 4-byte scalar and every struct is a multiple of 16 bytes.
+// It lives beside the kernels rather than in shared/ because only vkpt uses it: the CPU
+// reference has no queues.
+#ifndef VKPT_WAVEFRONT_H
+#define VKPT_WAVEFRONT_H
+
+#include "shared/host_device.h"
+
+#ifdef __cplusplus
+namespace vkpt::gpu {
+#endif
+
+// ---------------------------------------------------------------------------------------------
+// Bindings of descriptor set 0 (plain ints: GLSL layout qualifiers take them). Each kernel
+// declares only the buffers it uses, and its pipeline layout lists exactly those.
+#define BINDING_FRAME_PARAMS 0
+#define BINDING_BVH_NODES 1
+#define BINDING_TRIANGLES 2
+#define BINDING_TRIANGLE_NORMALS 3
+#define BINDING_MATERIALS 4
+#define BINDING_EMITTERS 5
+#define BINDING_PATH_STATES 6
+#define BINDING_RAYS 7
+#define BINDING_HITS 8
+#define BINDING_SHADOW_RAYS 9
+#define BINDING_PIXEL_STATES 10
+#define BINDING_ACTIVE_PIXELS 11
+#define BINDING_QUEUE_COUNTERS 12
+#define BINDING_DISPATCH_ARGS 13
+
+// ---------------------------------------------------------------------------------------------
+// What every kernel needs to know about the render, uploaded once (buffer frameParams).
+#define INTEGRATOR_PATH 0u
+#define INTEGRATOR_DIRECT_LIGHT 1u      // CS184 direct lighting, light sampling
+#define INTEGRATOR_DIRECT_HEMISPHERE 2u // CS184 direct lighting, uniform hemisphere directions
+#define INTEGRATOR_NORMALS 3u
+
+struct FrameParams {
+    Camera camera;
+    uint seed;
+    uint maxDepth;
+    uint rrStartDepth;
+    uint lightSamples; // N per shading point
+    uint integrator;   // INTEGRATOR_*
+    uint pathFilter;   // PATH_FILTER_*
+    uint emitterCount;
+    uint adaptive; // 1: adaptive sampling on
+    uint adaptiveBatch;
+    uint adaptiveMinSamples;
+    float adaptiveTolerance;
+    float adaptiveDarkFloor; // ADAPTIVE_DARK_FLOOR · 2^-EV
+    uint slotCount;          // path slots; each half of the rays buffer holds this many
+    uint pixelCount;         // each half of the activePixels buffer holds this many
+    uint nodeCount;
+    uint unused0;
+};
+
+// Push constants: what changes from dispatch to dispatch.
+struct PassParams {
+    uint sampleBase;     // sample index of sample j = 0 of this pass
+    uint samplesPerPass; // k: samples per active pixel in this pass
+    uint chunkStart;     // first entry of the active list in this chunk
+    uint chunkPixels;    // active pixels in this chunk; slots used = chunkPixels · k
+    uint bounce;         // scattering events before the vertices this dispatch shades
+    uint activeParity;   // which half of activePixels is read (the other is appended to)
+    uint useActiveList;  // 0: the first pass, active pixel a is pixel a
+    uint unused0;
+};
+
+// ---------------------------------------------------------------------------------------------
+// One path in flight, slot = (active pixel of the chunk) · k + (sample j of the pass).
+struct PathState {
+    vec3 throughput; // of the next vertex
+    uint pixel;
+    vec3 radiance; // gathered so far, in the reference's order of additions
+    uint sampleIndex;
+    vec3 lightScale;       // factor of this bounce's light-sample sum: throughput at the vertex
+    float previousBsdfPdf; // solid-angle pdf of the BSDF sample that made the current ray
+};
+
+// A ray queue entry. The rays buffer holds two queues of slotCount entries: bounce b reads half
+// b & 1 and appends the next bounce's rays to the other half.
+struct RayRecord {
+    vec3 origin;
+    uint slot;
+    vec3 direction;
+    uint unused0;
+};
+
+#define NO_HIT 0xffffffffu
+
+// trace_closest's answer for ray i of the queue, at index i.
+struct HitRecord {
+    float t;
+    float u;       // barycentric weight of v1
+    float v;       // barycentric weight of v2
+    uint triangle; // BVH-ordered index, NO_HIT on a miss
+};
+
+// Light sample k of ray i sits at index i·N + k, so no atomics order them and add_light_samples
+// sums them in the reference's order. A segment is a shadow ray from origin to origin +
+// direction (t in (0, 1)); a probe (the hemisphere estimator) is a closest-hit ray whose
+// contribution is multiplied by the emission it finds.
+#define SHADOW_NONE 0u
+#define SHADOW_SEGMENT 1u
+#define SHADOW_PROBE 2u
+#define SHADOW_KIND_MASK 3u
+#define SHADOW_VISIBLE 4u // set by trace_shadow: the contribution counts
+
+struct ShadowRay {
+    vec3 origin;
+    uint flags; // SHADOW_* kind | SHADOW_VISIBLE
+    vec3 direction;
+    float tMax;
+    vec3 contribution; // segment: added when unoccluded; probe: f, times Le·factor on a hit
+    float factor;      // probe: cos θ / pdf
+};
+
+// One pixel's running estimate: Kahan-compensated radiance sum and Welford's luminance
+// statistics, as the reference's PixelAccumulator keeps them (in double there).
+struct PixelState {
+    vec3 radianceSum;
+    uint count;        // finite samples accumulated
+    vec3 compensation; // Kahan's running error of radianceSum
+    uint samplesTaken; // samples traced, non-finite ones included
+    float luminanceMean;
+    float luminanceM2;
+    uint converged; // 1 once the adaptive test stopped the pixel
+    uint unused0;
+};
+
+// ---------------------------------------------------------------------------------------------
+// queueCounters: 32-bit words. Ray counts are per queue half; the statistics are 64-bit
+// counts kept as (low, high) pairs so that long passes cannot wrap them.
+#define COUNTER_RAYS 0u        // + half: rays in that half of the queue
+#define COUNTER_ACTIVE_NEXT 2u // pixels appended to the next active list
+#define COUNTER_CAMERA_RAYS 4u // (low, high)
+#define COUNTER_EXTENSION_RAYS 6u
+#define COUNTER_SHADOW_RAYS 8u
+#define COUNTER_NON_FINITE 10u     // samples discarded for a NaN or infinite value
+#define COUNTER_TRUNCATED 12u      // traversals the driver's loop limit cut short
+#define COUNTER_NODES_VISITED 14u  // (low, high): BVH boxes tested
+#define COUNTER_TRIANGLE_TESTS 16u // (low, high)
+#define COUNTER_WORDS 20u
+
+// dispatchArgs: VkDispatchIndirectCommand triples written by prepare_dispatches.
+#define DISPATCH_RAYS 0u   // one invocation per ray of the current queue
+#define DISPATCH_SHADOW 3u // one invocation per light-sample record
+#define DISPATCH_WORDS 8u
+
+#ifdef __cplusplus
+static_assert(sizeof(FrameParams) == 128 && offsetof(FrameParams, seed) == 64 &&
+              offsetof(FrameParams, adaptiveDarkFloor) == 108 &&
+              offsetof(FrameParams, nodeCount) == 120);
+static_assert(sizeof(PassParams) == 32);
+static_assert(sizeof(PathState) == 48 && offsetof(PathState, radiance) == 16 &&
+              offsetof(PathState, lightScale) == 32 && offsetof(PathState, previousBsdfPdf) == 44);
+static_assert(sizeof(RayRecord) == 32 && offsetof(RayRecord, direction) == 16);
+static_assert(sizeof(HitRecord) == 16);
+static_assert(sizeof(ShadowRay) == 48 && offsetof(ShadowRay, tMax) == 28 &&
+              offsetof(ShadowRay, factor) == 44);
+static_assert(sizeof(PixelState) == 48 && offsetof(PixelState, samplesTaken) == 28 &&
+              offsetof(PixelState, converged) == 40);
+} // namespace vkpt::gpu
+#endif
+
+#endif // VKPT_WAVEFRONT_H

@@ -1,0 +1,155 @@
+// gpu_bench.cpp — prints vkpt's figures on the device (Mrays/s, seconds, samples/s, per-kernel
+// GPU times) beside the CPU reference's on the same machine, for the Cornell box and the
+// largest shared scene; medians of several runs. A benchmark: it prints, never asserts.
+//
+//   gpu_bench [--quick] [--spp N] [--res W H] [--runs N] [--device N|NAME] [scene ...]
+//
+// Defaults: 64 spp at 512 × 512, 3 runs. --quick (2 spp at 128 × 128) suits lavapipe in CI.
+#include <algorithm>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "common/errors.h"
+#include "gpu/context.h"
+#include "gpu/vk_check.h"
+#include "prepare/prepared_scene.h"
+#include "reference/reference_renderer.h"
+#include "render/wavefront.h"
+#include "scene/camera.h"
+#include "scene/gltf_loader.h"
+
+namespace {
+
+using namespace vkpt;
+
+struct BenchOptions {
+    std::uint32_t spp = 64;
+    std::uint32_t width = 512;
+    std::uint32_t height = 512;
+    int runs = 3;
+    GpuOptions gpu;
+    std::vector<std::string> scenes;
+};
+
+BenchOptions parse(int argc, char** argv) {
+    BenchOptions o;
+    for (int i = 1; i < argc; ++i) {
+        std::string a = argv[i];
+        if (a == "--quick") {
+            o.spp = 2;
+            o.width = o.height = 128;
+        } else if (a == "--spp" && i + 1 < argc) {
+            o.spp = std::uint32_t(std::stoul(argv[++i]));
+        } else if (a == "--runs" && i + 1 < argc) {
+            o.runs = std::max(1, std::stoi(argv[++i]));
+        } else if (a == "--device" && i + 1 < argc) {
+            o.gpu.device = parseDeviceSelection(argv[++i]);
+        } else if (a == "--res" && i + 2 < argc) {
+            o.width = std::uint32_t(std::stoul(argv[++i]));
+            o.height = std::uint32_t(std::stoul(argv[++i]));
+        } else {
+            o.scenes.push_back(a);
+        }
+    }
+    if (o.scenes.empty())
+        o.scenes = {std::string(VKPT_SCENES_DIR) + "/cornell-box.gltf",
+                    std::string(VKPT_SCENES_DIR) +
+                        "/../../shared/scenes/TransmissionTest/TransmissionTest.glb"};
+    return o;
+}
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    return values[values.size() / 2];
+}
+
+struct Figures {
+    std::vector<double> seconds, mrays, samplesPerSecond;
+    RenderStats last;
+
+    void add(const RenderStats& stats) {
+        seconds.push_back(stats.seconds);
+        mrays.push_back(stats.megaRaysPerSecond());
+        samplesPerSecond.push_back(double(stats.samplesTaken) / stats.seconds);
+        last = stats;
+    }
+    void print(const char* who, int runs) const {
+        std::printf("  %-8s %8.3f s  %8.3f Mrays/s  %10.0f samples/s  (medians of %d); "
+                    "%.2f rays per sample, %.1f nodes per ray\n",
+                    who, median(seconds), median(mrays), median(samplesPerSecond), runs,
+                    double(last.rays.total()) / double(last.samplesTaken), last.nodesPerRay());
+    }
+};
+
+RenderSettings benchSettings(const BenchOptions& o) {
+    RenderSettings settings;
+    settings.width = o.width;
+    settings.height = o.height;
+    settings.samplesPerPixel = o.spp;
+    settings.quiet = true;
+    return settings;
+}
+
+void printKernelTimes(const WavefrontResult& result) {
+    std::uint64_t total = 0;
+    for (const KernelTimeTotal& t : result.kernelTimes)
+        total += t.nanoseconds;
+    for (const KernelTimeTotal& t : result.kernelTimes)
+        std::printf("    %-20s %9.2f ms %5.1f %% in %llu dispatches\n", t.kernel.c_str(),
+                    double(t.nanoseconds) * 1e-6, 100.0 * double(t.nanoseconds) / double(total),
+                    (unsigned long long)t.dispatches);
+}
+
+void benchScene(GpuContext& context, const std::string& path, const BenchOptions& o) {
+    LoadOptions loadOptions;
+    loadOptions.warnUnsupportedExtensions = false;
+    Scene scene = loadGltfScene(path, loadOptions);
+    PreparedScene prepared = prepareScene(scene);
+    gpu::Camera camera = makeGpuCamera(
+        selectCamera(scene, std::nullopt, float(o.width) / float(o.height)), o.width, o.height);
+    RenderSettings settings = benchSettings(o);
+    std::printf("%s: %zu triangles, %ux%u at %u spp\n", path.c_str(), scene.triangleCount(),
+                o.width, o.height, o.spp);
+    Figures device, reference;
+    for (int run = 0; run < o.runs; ++run) {
+        WavefrontResult result = renderWavefront(context, prepared, camera, settings);
+        device.add(result.stats);
+        std::fprintf(stderr, "  vkpt run %d/%d: %.3f s\n", run + 1, o.runs, result.stats.seconds);
+        RenderStats stats;
+        renderReference(prepared, camera, settings, stats);
+        reference.add(stats);
+        std::fprintf(stderr, "  vkpt-ref run %d/%d: %.3f s\n", run + 1, o.runs, stats.seconds);
+    }
+    device.print("vkpt", o.runs);
+    reference.print("vkpt-ref", o.runs);
+    std::printf("  vkpt / vkpt-ref speed: %.2f\n",
+                median(reference.seconds) / median(device.seconds));
+    WavefrontOptions timed;
+    timed.timeKernels = true;
+    WavefrontResult result = renderWavefront(context, prepared, camera, settings, timed);
+    std::printf("  per-kernel GPU time (one more run with timestamps, %.3f s, %u passes of %u "
+                "slots):\n",
+                result.stats.seconds, result.passes, result.slotCount);
+    printKernelTimes(result);
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    try {
+        BenchOptions options = parse(argc, argv);
+        GpuContext context(options.gpu);
+        std::printf("device: %s%s\n", describeDevice(context.deviceInfo()).c_str(),
+                    context.validationEnabled() ? " (validation on: figures are slower)" : "");
+        for (const std::string& path : options.scenes)
+            benchScene(context, path, options);
+        return 0;
+    } catch (const vkpt::VulkanError& error) {
+        std::fprintf(stderr, "gpu_bench: error: %s\n", error.what());
+        return 2;
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "gpu_bench: error: %s\n", error.what());
+        return 1;
+    }
+}

@@ -1,0 +1,48 @@
+// pass_schedule_test.cpp — how vkpt cuts a render into passes and chunks (CPU only).
+#include <gtest/gtest.h>
+
+#include "render/pass_schedule.h"
+
+namespace vkpt {
+namespace {
+
+ScheduleInputs uniform(std::uint32_t spp, std::uint32_t done, std::uint32_t active,
+                       std::uint32_t slots) {
+    return {spp, done, active, slots, false, 1, 0};
+}
+
+ScheduleInputs adaptive(std::uint32_t done, std::uint32_t active, std::uint32_t slots) {
+    return {512, done, active, slots, true, 16, 64};
+}
+
+TEST(PassSchedule, UniformPassesFillTheSlotsWithinTheBudget) {
+    EXPECT_EQ(samplesForPass(uniform(16, 0, 1024, 65536)), 16u);    // all in one pass
+    EXPECT_EQ(samplesForPass(uniform(512, 0, 1024, 65536)), 64u);   // as many as fit
+    EXPECT_EQ(samplesForPass(uniform(512, 500, 1024, 65536)), 12u); // the rest of the budget
+    EXPECT_EQ(samplesForPass(uniform(512, 0, 1 << 20, 65536)), 1u); // more pixels than slots
+    EXPECT_EQ(samplesForPass(uniform(1 << 20, 0, 1, 65536)), kMaxSamplesPerPass);
+}
+
+TEST(PassSchedule, AdaptivePassesEndWhereTheStoppingRuleIsTested) {
+    // Before the minimum count no test happens: the pass may end anywhere up to it.
+    EXPECT_EQ(samplesForPass(adaptive(0, 65536, 65536)), 1u);
+    // A test point within reach: the pass ends on a batch multiple >= the minimum of 64.
+    for (std::uint32_t active : {1u, 10u, 100u, 1000u, 4096u}) {
+        std::uint32_t k = samplesForPass(adaptive(64, active, 65536));
+        EXPECT_EQ((64 + k) % 16, 0u) << active << " active pixels";
+        EXPECT_LE(std::uint64_t(k) * active, 65536u);
+        EXPECT_GE(std::uint64_t(k) * active, std::min<std::uint64_t>(65536 / 4, 16 * active));
+    }
+    EXPECT_EQ(samplesForPass(adaptive(0, 1024, 65536)), 64u);  // the first test point
+    EXPECT_EQ(samplesForPass(adaptive(64, 1024, 65536)), 16u); // one batch keeps 16384 paths
+    EXPECT_EQ(samplesForPass(adaptive(500, 1, 65536)), 12u);   // the budget ends it
+}
+
+TEST(PassSchedule, ChunksCoverTheActivePixels) {
+    EXPECT_EQ(pixelsPerChunk(1024, 16, 65536), 1024u);
+    EXPECT_EQ(pixelsPerChunk(1 << 20, 1, 65536), 65536u);
+    EXPECT_EQ(pixelsPerChunk(1000, 3, 256), 85u);
+}
+
+} // namespace
+} // namespace vkpt

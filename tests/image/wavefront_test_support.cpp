@@ -1,0 +1,70 @@
+// wavefront_test_support.cpp — device renders and comparisons for the image tests.
+#include "wavefront_test_support.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "image/image_io.h"
+
+namespace vkpt::test {
+
+RenderOutput renderOnDevice(GpuContext& context, const LoadedTestScene& loaded,
+                            const RenderSettings& settings, RenderStats* stats,
+                            const WavefrontOptions& options) {
+    gpu::Camera camera = makeGpuCamera(selectCamera(loaded.scene, settings.cameraIndex),
+                                       settings.width, settings.height);
+    WavefrontResult result = renderWavefront(context, loaded.prepared, camera, settings, options);
+    EXPECT_EQ(result.truncatedTraversals, 0u) << "BVH walks cut short by a loop limit";
+    if (stats) *stats = result.stats;
+    return std::move(result.output);
+}
+
+SameSeedAgreement compareSameSeed(const RenderOutput& gpu, const RenderOutput& cpu) {
+    SameSeedAgreement agreement;
+    agreement.pixels = cpu.image.pixels.size();
+    for (std::size_t i = 0; i < cpu.image.pixels.size(); ++i) {
+        double worst = 0.0;
+        bool ok = true;
+        for (int c = 0; c < 3; ++c) {
+            double a = gpu.image.pixels[i][c];
+            double b = cpu.image.pixels[i][c];
+            double difference = std::abs(a - b);
+            ok = ok && difference <= kSameSeedRelative * std::abs(b) + kSameSeedAbsolute;
+            worst = std::max(worst, difference / std::max(std::abs(b), kSameSeedAbsolute));
+        }
+        agreement.within += ok ? 1 : 0;
+        agreement.aboveOneMillionth += worst > 1e-6 ? 1 : 0;
+        if (worst > agreement.largestRelative) {
+            agreement.largestRelative = worst;
+            agreement.largestPixel = static_cast<std::uint32_t>(i);
+        }
+    }
+    return agreement;
+}
+
+std::string SameSeedAgreement::summary() const {
+    char line[256];
+    std::snprintf(line, sizeof(line),
+                  "%llu of %llu pixels within the bound (%.2f %%), %llu outside; %llu differ by "
+                  "more than 1e-6 relative, the most by %.3g (pixel %u)",
+                  (unsigned long long)within, (unsigned long long)pixels, 100.0 * fraction(),
+                  (unsigned long long)(pixels - within), (unsigned long long)aboveOneMillionth,
+                  largestRelative, largestPixel);
+    return line;
+}
+
+std::string writeComparisonImages(const std::string& name, const RenderOutput& gpu,
+                                  const RenderOutput& cpu) {
+    Image difference(cpu.image.width, cpu.image.height);
+    for (std::size_t i = 0; i < difference.pixels.size(); ++i)
+        difference.pixels[i] = glm::abs(gpu.image.pixels[i] - cpu.image.pixels[i]);
+    const std::filesystem::path directory = std::filesystem::current_path();
+    const std::string base = (directory / name).string();
+    writePfm(gpu.image, base + ".gpu.pfm");
+    writePfm(cpu.image, base + ".cpu.pfm");
+    writePfm(difference, base + ".diff.pfm");
+    return "images written: " + base + ".gpu.pfm, " + base + ".cpu.pfm, " + base + ".diff.pfm";
+}
+
+} // namespace vkpt::test

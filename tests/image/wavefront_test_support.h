@@ -1,0 +1,51 @@
+// wavefront_test_support.h — what the image tests share: a validated device (the GpuTest
+// fixture of tests/gpu), renders with vkpt's wavefront executor in-process, and the evidence a
+// failed comparison leaves behind (both images and their difference as PFM files).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "../support/reference_render.h"
+#include "gpu_test_support.h"
+#include "image/render_output.h"
+#include "render/wavefront.h"
+
+namespace vkpt::test {
+
+// The scenes shared between projects, for tests that skip when they are absent.
+inline std::string sharedScenePath(const std::string& relative) {
+    return std::string(VKPT_SCENES_DIR) + "/../../shared/scenes/" + relative;
+}
+
+// Renders `loaded` on the device with the camera renderTestScene uses, so that both
+// executors see the same rays. Fails the test if a traversal was cut short.
+RenderOutput renderOnDevice(GpuContext& context, const LoadedTestScene& loaded,
+                            const RenderSettings& settings, RenderStats* stats = nullptr,
+                            const WavefrontOptions& options = {});
+
+// Same seed on both executors: per pixel and channel, |gpu − cpu| ≤ relative·|cpu| + absolute.
+struct SameSeedAgreement {
+    std::uint64_t pixels = 0;
+    std::uint64_t within = 0;
+    double largestRelative = 0.0; // max over pixels and channels of |gpu − cpu| / max(|cpu|, abs)
+    std::uint32_t largestPixel = 0;
+    std::uint64_t aboveOneMillionth = 0; // pixels whose relative difference exceeds 1e-6
+    double fraction() const { return pixels ? double(within) / double(pixels) : 0.0; }
+    std::string summary() const; // one line of the figures above
+};
+
+// The bound of docs/wavefront.md: 1e-4 relative (float rounding over a path of up to ~100
+// operations in a different order and with fused multiply-adds) plus 1e-6 absolute (sums
+// that cancel to near zero, e.g. the normals image's components).
+inline constexpr double kSameSeedRelative = 1e-4;
+inline constexpr double kSameSeedAbsolute = 1e-6;
+
+SameSeedAgreement compareSameSeed(const RenderOutput& gpu, const RenderOutput& cpu);
+
+// Writes <name>.gpu.pfm, <name>.cpu.pfm and <name>.diff.pfm (|gpu − cpu|) into the working
+// directory and returns a line naming them, for a failure message.
+std::string writeComparisonImages(const std::string& name, const RenderOutput& gpu,
+                                  const RenderOutput& cpu);
+
+} // namespace vkpt::test
