@@ -5,35 +5,16 @@
 #include <cmath>
 
 #include "../support/reference_render.h"
-#include "image/image_compare.h"
-#include "shared/sampling.h"
+#include "../support/render_checks.h"
 
 namespace vkpt {
 namespace {
 
-struct FurnaceParameters {
-    float emission;
-    float albedo;
-};
+using test::expectFurnaceMean;
+using test::furnaceParameters;
+using test::furnaceRadiance;
+using test::FurnaceParameters;
 
-FurnaceParameters furnaceParameters(const Scene& scene) {
-    const SceneMaterial& m = scene.materials.at(0);
-    return {gpu::luminance(m.emission), gpu::luminance(glm::vec3(m.baseColor))};
-}
-
-double furnaceRadiance(const FurnaceParameters& p, std::uint32_t maxDepth) {
-    double a = p.albedo;
-    return p.emission * (1.0 - std::pow(a, double(maxDepth) + 1.0)) / (1.0 - a);
-}
-
-// The image mean must lie within 4.42 standard errors (two-sided p = 1e-5) of the analytic
-// value, the standard error coming from the render's own per-pixel variances, plus a float
-// rounding allowance of 1e-5 relative.
-void expectFurnaceMean(const RenderOutput& output, double expected, const std::string& what) {
-    MeanEstimate mean = meanLuminance(output);
-    double bound = 4.42 * mean.standardError + 1e-5 * expected;
-    EXPECT_NEAR(mean.mean, expected, bound) << what << ": standard error " << mean.standardError;
-}
 
 class Furnace : public ::testing::TestWithParam<const char*> {};
 
