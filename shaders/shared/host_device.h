@@ -76,7 +76,7 @@ VKPT_FN uint leafTriangleCount(uint leafTriangles) { return leafTriangles & BVH_
 
 // ---------------------------------------------------------------------------------------------
 // Geometry, in BVH leaf order. Vertices rather than edges, so that a watertight test can
-// use the same data as Möller–Trumbore.
+// use the same data as Möller–Trumbore (kept in intersect.h for comparison).
 #define NO_EMITTER 0xffffffffu
 
 struct Triangle {
