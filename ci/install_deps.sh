@@ -9,6 +9,7 @@ packages=(
     glslang-tools glslang-dev
     libglm-dev libstb-dev libtinygltf-dev
     libgtest-dev
+    gnuplot-nox # the trade study's plots (vkpt-study; the CI test label `study` draws them)
 )
 
 missing=()

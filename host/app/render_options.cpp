@@ -67,6 +67,12 @@ void addRunOptions(CommandLine& cl, RenderSettings& s) {
             }});
     cl.add({"adaptive-min", {}, "N", "adaptive: no pixel stops before N samples (default 64)",
             [&s](auto v) { s.adaptive.minSamples = parseUnsigned("adaptive-min", v[0], 2); }});
+    cl.add({"clamp", {}, "X",
+            "scale each sample down so no component exceeds X (biased: loses energy; default off)",
+            [&s](auto v) {
+                s.clamp = parseFloat("clamp", v[0]);
+                if (!(s.clamp > 0.0f)) throw InputError("option --clamp: X must be positive");
+            }});
     cl.add({"threads", {'t'}, "N", "CPU threads (default: all cores)",
             [&s](auto v) { s.threads = parseUnsigned("threads", v[0], 1); }});
     cl.add({"stats-json", {}, "FILE", "write the render statistics as JSON",

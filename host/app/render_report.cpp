@@ -101,6 +101,7 @@ void printRenderSummary(const RenderReport& r) {
                                          (unsigned long long)st.nonFiniteSamples);
     std::printf("\n");
     if (r.deviceRun) printDeviceRun(r, *r.deviceRun);
+    if (r.convergence) printConvergenceSummary(*r.convergence);
 }
 
 void writeStatsJson(const RenderReport& r, const std::string& path) {
@@ -112,6 +113,7 @@ void writeStatsJson(const RenderReport& r, const std::string& path) {
     writeBvh(json, r);
     writeStats(json, r);
     if (r.deviceRun) writeDeviceRun(json, *r.deviceRun);
+    if (r.convergence) writeConvergenceJson(json, *r.convergence);
     json.endObject();
     out << "\n";
     if (!out) throw InputError(path + ": write failed");

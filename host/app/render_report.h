@@ -9,6 +9,7 @@
 #include "bvh/bvh_build.h"
 #include "common/render_settings.h"
 #include "common/render_stats.h"
+#include "study/convergence.h"
 
 namespace vkpt {
 
@@ -40,6 +41,7 @@ struct RenderReport {
     double loadSeconds = 0.0;
     std::uint64_t deviceMemoryBytes = 0; // peak device memory held; 0 on the CPU
     std::optional<DeviceRunReport> deviceRun; // vkpt only
+    std::optional<ConvergenceReport> convergence; // --reference, --target-error, --time-limit
 };
 
 void printRenderSummary(const RenderReport& report);

@@ -4,10 +4,13 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "app/command_line.h"
+#include "app/convergence_options.h"
+#include "app/pass_figures.h"
 #include "app/render_options.h"
 #include "app/render_report.h"
 #include "app/scene_setup.h"
@@ -27,6 +30,7 @@ constexpr int kExitInterrupted = 130; // 128 + SIGINT, as shells report it
 
 struct Invocation {
     RenderSettings settings;
+    ConvergenceSettings convergence;
     GpuOptions gpu;
     bool listDevices = false;
     bool kernelStats = false;
@@ -60,6 +64,7 @@ Invocation parseArguments(int argc, char** argv) {
     Invocation invocation;
     CommandLine commandLine(kProgram);
     addRenderOptions(commandLine, invocation.settings);
+    addConvergenceOptions(commandLine, invocation.convergence, ConvergenceOptionSet::All);
     addDeviceOptions(commandLine, invocation);
     commandLine.add(
         {"help", {'h'}, "", "show this help", [&](auto) { invocation.showHelp = true; }});
@@ -119,6 +124,56 @@ DeviceRunReport deviceRunReport(const WavefrontResult& result, double setupSecon
     return d;
 }
 
+// --reference, --target-error, --time-limit: the tracker sees every pass; with a reference or
+// a target it gets the image (one readback per pass) and prints a line per pass instead of
+// the progress bar.
+bool printsPassLines(const Invocation& invocation) {
+    return invocation.convergence.needsPixels() && !invocation.settings.quiet;
+}
+
+WavefrontOptions wavefrontOptions(const Invocation& invocation, ConvergenceTracker& tracker) {
+    WavefrontOptions options;
+    options.timeKernels = invocation.kernelStats;
+    options.slotCount = invocation.pathSlots;
+    options.interrupt = &interruptRequested;
+    const ConvergenceSettings& convergence = invocation.convergence;
+    options.timeLimitSeconds = convergence.timeLimitSeconds;
+    if (!convergence.any()) return options;
+    options.readPixelsAfterPass = convergence.needsPixels();
+    const bool printLines = printsPassLines(invocation);
+    options.afterPass = [&tracker, printLines](const PassProgress& progress) {
+        const ConvergencePoint& point = tracker.record(passFigures(progress), progress.output);
+        if (printLines) std::fprintf(stderr, "%s: %s\n", kProgram, describePoint(point).c_str());
+        return tracker.targetReached();
+    };
+    return options;
+}
+
+ConvergenceStop convergenceStop(WavefrontStop stop) {
+    switch (stop) {
+    case WavefrontStop::BudgetSpent: return ConvergenceStop::Budget;
+    case WavefrontStop::AllConverged: return ConvergenceStop::Converged;
+    case WavefrontStop::Interrupted: return ConvergenceStop::Interrupted;
+    case WavefrontStop::TimeLimit: return ConvergenceStop::TimeLimit;
+    case WavefrontStop::Observer: return ConvergenceStop::TargetError;
+    }
+    return ConvergenceStop::Budget;
+}
+
+std::optional<ConvergenceReport> convergenceReport(const Invocation& invocation,
+                                                   const ConvergenceTracker& tracker,
+                                                   WavefrontStop stop) {
+    if (!invocation.convergence.any()) return std::nullopt;
+    return ConvergenceReport{invocation.convergence, convergenceStop(stop),
+                             tracker.targetReached(), tracker.curve()};
+}
+
+std::optional<Image> loadReferenceFor(const Invocation& invocation) {
+    const std::string& path = invocation.convergence.referencePath;
+    if (path.empty()) return std::nullopt;
+    return loadReference(path, invocation.settings.width, invocation.settings.height);
+}
+
 RenderReport makeReport(const Invocation& invocation, const SceneSetup& setup,
                         const GpuContext& context, const WavefrontResult& result,
                         double setupSeconds) {
@@ -149,20 +204,22 @@ int render(const Invocation& invocation) {
     const RenderSettings& settings = invocation.settings;
     // The device first: without one, the user hears that (one line) before a long load.
     GpuContext context(invocation.gpu);
+    const std::optional<Image> reference = loadReferenceFor(invocation);
     SceneSetup setup = setUpScene(settings, kProgram);
     const auto start = std::chrono::steady_clock::now();
     installInterruptHandler();
     std::fprintf(stderr, "%s: device %s\n", kProgram, describeDevice(context.deviceInfo()).c_str());
-    WavefrontOptions options;
-    options.timeKernels = invocation.kernelStats;
-    options.slotCount = invocation.pathSlots;
-    options.interrupt = &interruptRequested;
-    WavefrontResult result =
-        renderWavefront(context, setup.prepared, setup.camera, settings, options);
+    ConvergenceTracker tracker(reference ? &*reference : nullptr,
+                               invocation.convergence.targetError);
+    RenderSettings renderSettings = settings;
+    renderSettings.quiet = settings.quiet || printsPassLines(invocation);
+    WavefrontResult result = renderWavefront(context, setup.prepared, setup.camera,
+                                             renderSettings, wavefrontOptions(invocation, tracker));
     const std::chrono::duration<double> total = std::chrono::steady_clock::now() - start;
     writeOutputs(result.output, settings);
     RenderReport report =
         makeReport(invocation, setup, context, result, total.count() - result.stats.seconds);
+    report.convergence = convergenceReport(invocation, tracker, result.stop);
     printRenderSummary(report);
     if (!settings.statsJsonPath.empty()) writeStatsJson(report, settings.statsJsonPath);
     warnAboutTruncation(result);

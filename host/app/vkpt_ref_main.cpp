@@ -1,10 +1,12 @@
 // vkpt_ref_main.cpp — vkpt-ref, the CPU reference renderer: load, build, render, write.
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "app/command_line.h"
+#include "app/convergence_options.h"
 #include "app/render_options.h"
 #include "app/render_report.h"
 #include "app/scene_setup.h"
@@ -20,6 +22,7 @@ const char* const kProgram = "vkpt-ref";
 
 struct Invocation {
     RenderSettings settings;
+    ConvergenceSettings convergence; // --reference only: the CPU renders each pixel to the end
     bool showHelp = false;
 };
 
@@ -27,6 +30,7 @@ Invocation parseArguments(int argc, char** argv) {
     Invocation invocation;
     CommandLine commandLine(kProgram);
     addRenderOptions(commandLine, invocation.settings);
+    addConvergenceOptions(commandLine, invocation.convergence, ConvergenceOptionSet::ReferenceOnly);
     commandLine.add({"help", {'h'}, "", "show this help", [&](auto) { invocation.showHelp = true; }});
     std::vector<std::string> arguments(argv + 1, argv + argc);
     std::vector<std::string> positional = commandLine.parse(arguments);
@@ -51,7 +55,25 @@ void writeOutputs(const RenderOutput& output, const RenderSettings& settings) {
     writeSampleCountHeatMap(output.sampleCounts, output.image.width, output.image.height, heatMap);
 }
 
-void run(const RenderSettings& settings) {
+// The reference renders every pixel to its end, so its curve is one point: the final image.
+std::optional<ConvergenceReport> finalError(const ConvergenceSettings& convergence,
+                                            const Image* reference, const RenderOutput& output,
+                                            const RenderStats& stats, std::uint32_t spp) {
+    if (!convergence.any()) return std::nullopt;
+    ConvergenceTracker tracker(reference, 0.0);
+    PassFigures figures;
+    figures.pass = 1;
+    figures.seconds = figures.renderSeconds = stats.seconds;
+    figures.samplesPerPixel = spp;
+    figures.samplesTaken = stats.samplesTaken;
+    tracker.record(figures, &output);
+    return ConvergenceReport{convergence, ConvergenceStop::Budget, false, tracker.curve()};
+}
+
+void run(const RenderSettings& settings, const ConvergenceSettings& convergence) {
+    std::optional<Image> reference;
+    if (!convergence.referencePath.empty())
+        reference = loadReference(convergence.referencePath, settings.width, settings.height);
     SceneSetup setup = setUpScene(settings, kProgram);
     RenderReport report;
     report.program = kProgram;
@@ -63,6 +85,8 @@ void run(const RenderSettings& settings) {
     report.triangles = setup.prepared.triangles.size();
     report.emitters = setup.prepared.emitters.size();
     report.loadSeconds = setup.loadSeconds;
+    report.convergence = finalError(convergence, reference ? &*reference : nullptr, output,
+                                    report.stats, settings.samplesPerPixel);
     printRenderSummary(report);
     if (!settings.statsJsonPath.empty()) writeStatsJson(report, settings.statsJsonPath);
 }
@@ -72,7 +96,7 @@ void run(const RenderSettings& settings) {
 int main(int argc, char** argv) {
     try {
         Invocation invocation = parseArguments(argc, argv);
-        if (!invocation.showHelp) run(invocation.settings);
+        if (!invocation.showHelp) run(invocation.settings, invocation.convergence);
         return 0;
     } catch (const vkpt::InputError& error) {
         return vkpt::reportFailure(kProgram, error, 1);

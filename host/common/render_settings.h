@@ -34,6 +34,8 @@ struct RenderSettings {
     PathFilter pathFilter = PathFilter::All;
     AdaptiveSettings adaptive;
     float exposure = 0.0f;              // EV applied to 8-bit output only
+    // --clamp X: a sample's largest component is limited to X (biased; 0 = off, the default).
+    float clamp = 0.0f;
     std::optional<int> cameraIndex;
     std::string statsJsonPath;
     bool quiet = false;                 // no progress bar

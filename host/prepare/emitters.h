@@ -14,7 +14,8 @@ struct EmitterList {
 };
 
 // Builds the list and writes each emitting triangle's emitterIndex (NO_EMITTER elsewhere).
-// Zero-area triangles cannot be hit or sampled, so they are left out.
+// Zero-area triangles cannot be hit or sampled, so they are left out; a triangle that repeats an
+// earlier emitting one (same corners in the same order, same material) shares its record.
 EmitterList buildEmitters(std::span<gpu::Triangle> triangles,
                           std::span<const gpu::Material> materials);
 

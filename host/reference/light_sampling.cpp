@@ -21,7 +21,7 @@ LightSample sampleLight(const PreparedScene& scene, const glm::vec3& receiver, c
     float distanceSquared = glm::dot(toLight, toLight);
     if (!(distanceSquared > 0.0f)) return sample;
     sample.direction = toLight / std::sqrt(distanceSquared);
-    glm::vec3 face = glm::normalize(gpu::triangleFaceNormal(tri.v0, tri.v1, tri.v2));
+    glm::vec3 face = gpu::unitFaceNormal(tri.v0, tri.v1, tri.v2);
     float cosAtLight = -glm::dot(face, sample.direction);
     const gpu::Material& material = scene.materials[tri.materialIndex];
     bool doubleSided = (material.flags & MATERIAL_DOUBLE_SIDED) != 0;

@@ -2,6 +2,7 @@
 // mean and M2 of the per-sample luminance (numerically stable, unlike Σx and Σx²).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
 #include <glm/glm.hpp>
@@ -15,13 +16,14 @@ struct PixelAccumulator {
     std::uint32_t count = 0;
 
     // Welford, "Note on a Method for Calculating Corrected Sums of Squares and Products",
-    // Technometrics 4(3), 1962.
+    // Technometrics 4(3), 1962. Each term of M2 is ≥ 0 in exact arithmetic; the max() keeps
+    // rounding from ever making the sum negative.
     void add(const glm::vec3& radiance, float luminance) {
         radianceSum += glm::dvec3(radiance);
         ++count;
         double delta = double(luminance) - luminanceMean;
         luminanceMean += delta / double(count);
-        luminanceM2 += delta * (double(luminance) - luminanceMean);
+        luminanceM2 = std::max(luminanceM2 + delta * (double(luminance) - luminanceMean), 0.0);
     }
 
     glm::vec3 mean() const { return count ? glm::vec3(radianceSum / double(count)) : glm::vec3(0.0f); }

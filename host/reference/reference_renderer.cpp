@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cfloat>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -16,6 +17,7 @@
 #include "shared/adaptive.h"
 #include "shared/camera.h"
 #include "shared/rng.h"
+#include "shared/sample_guard.h"
 #include "shared/sampling.h"
 
 namespace vkpt {
@@ -43,8 +45,10 @@ struct RenderJob {
     RenderStats& stats;
 };
 
-bool isFinite(const glm::vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+// Outputs are float: a statistic beyond the float range saturates instead of becoming infinite
+// (a double-to-float conversion out of range is undefined behaviour besides).
+float saturatedFloat(double value) {
+    return float(std::clamp(value, -double(FLT_MAX), double(FLT_MAX)));
 }
 
 struct ThreadCounters {
@@ -65,7 +69,8 @@ void renderPixel(RenderJob& job, IntegratorContext& context, std::uint32_t x, st
         glm::vec2 film(float(x) + jitter.x, float(y) + jitter.y);
         CameraRay ray{job.camera.position, gpu::cameraRayDirection(job.camera, film)};
         glm::vec3 radiance = integrate(context, key, ray);
-        if (isFinite(radiance)) {
+        if (gpu::isFiniteSample(radiance)) {
+            radiance = gpu::clampSample(radiance, settings.clamp);
             accumulator.add(radiance, gpu::luminance(radiance));
         } else {
             ++counters.nonFinite; // discarded: one NaN would poison the pixel for good
@@ -82,8 +87,8 @@ void renderPixel(RenderJob& job, IntegratorContext& context, std::uint32_t x, st
     counters.samples += s;
     job.output.image.pixels[pixel] = accumulator.mean();
     job.output.sampleCounts[pixel] = accumulator.count;
-    job.output.luminanceMean[pixel] = float(accumulator.luminanceMean);
-    job.output.luminanceM2[pixel] = float(accumulator.luminanceM2);
+    job.output.luminanceMean[pixel] = saturatedFloat(accumulator.luminanceMean);
+    job.output.luminanceM2[pixel] = saturatedFloat(accumulator.luminanceM2);
 }
 
 void renderTile(RenderJob& job, IntegratorContext& context, std::uint32_t tile,

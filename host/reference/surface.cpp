@@ -24,7 +24,7 @@ SurfacePoint makeSurfacePoint(const PreparedScene& scene, const ClosestHit& hit,
     // Barycentric interpolation keeps the point on the triangle's plane, unlike o + t·d.
     s.position = tri.v0 * (1.0f - hit.u - hit.v) + tri.v1 * hit.u + tri.v2 * hit.v;
     s.coordinateScale = gpu::triangleCoordinateScale(tri.v0, tri.v1, tri.v2);
-    glm::vec3 face = glm::normalize(gpu::triangleFaceNormal(tri.v0, tri.v1, tri.v2));
+    glm::vec3 face = gpu::unitFaceNormal(tri.v0, tri.v1, tri.v2);
     s.frontFace = glm::dot(face, rayDirection) < 0.0f;
     s.geometricNormal = s.frontFace ? face : -face;
     s.rawShadingNormal = interpolate(normals.n0, normals.n1, normals.n2, hit.u, hit.v);

@@ -18,8 +18,10 @@ RenderOutput makeRenderOutput(std::span<const gpu::PixelState> pixels, std::uint
     output.luminanceM2.resize(pixels.size());
     for (std::size_t i = 0; i < pixels.size(); ++i) {
         const gpu::PixelState& p = pixels[i];
-        // Kahan's best estimate of the sum is the running sum less its compensation.
-        glm::dvec3 sum = glm::dvec3(p.radianceSum) - glm::dvec3(p.compensation);
+        // Kahan's best estimate of the sum is the running sum less its compensation; the
+        // device summed the samples times ACCUMULATION_SCALE (a power of two: exact to undo).
+        glm::dvec3 sum =
+            (glm::dvec3(p.radianceSum) - glm::dvec3(p.compensation)) / double(ACCUMULATION_SCALE);
         output.image.pixels[i] = p.count ? glm::vec3(sum / double(p.count)) : glm::vec3(0.0f);
         output.sampleCounts[i] = p.count;
         output.luminanceMean[i] = p.luminanceMean;

@@ -1,9 +1,11 @@
 // wavefront.cpp — the pass loop: plan k samples for the active pixels, run each chunk's
-// bounces from one command buffer, read the counters, compact, repeat.
+// bounces from one command buffer, read the counters, compact, repeat; after each pass, tell
+// an observer (if any) where the render stands and stop when it, the budget or the clock says.
 #include "render/wavefront.h"
 
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <functional>
 #include <memory>
 #include <string>
@@ -23,6 +25,19 @@
 namespace vkpt {
 
 namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsBetween(Clock::time_point begin, Clock::time_point end) {
+    return std::chrono::duration<double>(end - begin).count();
+}
+
+// CPU time of the whole process, every thread of it (a CPU device's workers too).
+double processCpuSeconds() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
 
 // Bounces recorded into one command buffer. Default depths (16) need one submission per
 // chunk; deeper limits continue in further submissions while the queue holds rays, so
@@ -73,6 +88,7 @@ gpu::FrameParams makeFrameParams(const RenderSettings& settings, const gpu::Came
     f.slotCount = slotCount;
     f.pixelCount = camera.width * camera.height;
     f.nodeCount = scene.nodeCount;
+    f.sampleClamp = settings.clamp;
     return f;
 }
 
@@ -132,7 +148,11 @@ private:
     ScheduleInputs schedule() const;
     gpu::PassParams chunkParams(std::uint32_t samplesPerPass, std::uint32_t start,
                                 std::uint32_t pixels) const;
+    std::uint32_t samplesForNextPass() const;
     bool runPass(); // false once nothing is left to sample
+    bool observe(); // true when the observer asks to stop
+    WavefrontStop runPasses();
+    double elapsed() const { return secondsBetween(start_, Clock::now()); }
     void runChunk(const gpu::PassParams& params, bool firstChunk);
     void submit(const std::string& label, const std::function<void()>& record);
     WavefrontResult finish(double seconds);
@@ -159,6 +179,11 @@ private:
     bool useActiveList_ = false;
     std::uint32_t passes_ = 0;
     bool interrupted_ = false;
+    Clock::time_point start_;
+    double startCpu_ = 0.0;
+    double secondsPerPixelSample_ = 0.0; // the last pass's rate, for a time limit
+    double observerSeconds_ = 0.0;       // spent in readbacks and observer calls
+    double observerCpuSeconds_ = 0.0;
 };
 
 void WavefrontRenderer::initialise() {
@@ -224,11 +249,22 @@ gpu::PassParams WavefrontRenderer::chunkParams(std::uint32_t samplesPerPass, std
     return params;
 }
 
+std::uint32_t WavefrontRenderer::samplesForNextPass() const {
+    std::uint32_t k = samplesForPass(schedule());
+    if (options_.readPixelsAfterPass) k = samplesForGeometricGrowth(k, samplesDone_);
+    if (!(options_.timeLimitSeconds > 0.0)) return k;
+    return samplesWithinTime(k, activePixels_, secondsPerPixelSample_,
+                             options_.timeLimitSeconds - elapsed());
+}
+
 bool WavefrontRenderer::runPass() {
-    const std::uint32_t k = samplesForPass(schedule());
+    const std::uint32_t k = samplesForNextPass();
     const std::uint32_t chunk = pixelsPerChunk(activePixels_, k, buffers_.slotCount);
+    const Clock::time_point passStart = Clock::now();
     for (std::uint32_t start = 0; start < activePixels_; start += chunk)
         runChunk(chunkParams(k, start, std::min(chunk, activePixels_ - start)), start == 0);
+    secondsPerPixelSample_ =
+        secondsBetween(passStart, Clock::now()) / (double(activePixels_) * double(k));
     activePixels_ = readCounters(buffers_.countersReadback).nextActivePixels();
     activeParity_ ^= 1u;
     useActiveList_ = true;
@@ -257,19 +293,59 @@ WavefrontResult WavefrontRenderer::finish(double seconds) {
     return result;
 }
 
+// One readback of the pixel states when the observer wants the image; its time and the
+// observer's own are counted, so that an observer can leave them out of its timings.
+bool WavefrontRenderer::observe() {
+    if (!options_.afterPass) return false;
+    const Clock::time_point begin = Clock::now();
+    const double beginCpu = processCpuSeconds();
+    PassProgress progress;
+    progress.passes = passes_;
+    progress.samplesPerPixel = samplesDone_;
+    progress.activePixels = activePixels_;
+    progress.seconds = secondsBetween(start_, begin);
+    progress.observerSeconds = observerSeconds_;
+    progress.cpuSeconds = beginCpu - startCpu_;
+    progress.observerCpuSeconds = observerCpuSeconds_;
+    RenderOutput output;
+    if (options_.readPixelsAfterPass) {
+        std::vector<gpu::PixelState> pixels =
+            download<gpu::PixelState>(context_, buffers_.pixelStates, pixelCount_);
+        output = makeRenderOutput(pixels, camera_.width, camera_.height);
+        progress.output = &output;
+        progress.samplesTaken = totalSamplesTaken(pixels);
+    }
+    const bool stop = options_.afterPass(progress);
+    observerSeconds_ += secondsBetween(begin, Clock::now());
+    observerCpuSeconds_ += processCpuSeconds() - beginCpu;
+    return stop;
+}
+
+WavefrontStop WavefrontRenderer::runPasses() {
+    while (true) {
+        const bool more = runPass();
+        if (observe()) return WavefrontStop::Observer;
+        if (!more)
+            return activePixels_ == 0 && samplesDone_ < settings_.samplesPerPixel
+                       ? WavefrontStop::AllConverged
+                       : WavefrontStop::BudgetSpent;
+        if (options_.interrupt && options_.interrupt->load()) return WavefrontStop::Interrupted;
+        if (options_.timeLimitSeconds > 0.0 && elapsed() >= options_.timeLimitSeconds)
+            return WavefrontStop::TimeLimit;
+    }
+}
+
 WavefrontResult WavefrontRenderer::run() {
     initialise();
-    const auto start = std::chrono::steady_clock::now();
+    start_ = Clock::now();
+    startCpu_ = processCpuSeconds();
     progress_ = makeProgressBar("vkpt", settings_.samplesPerPixel, settings_.quiet);
-    while (runPass()) {
-        if (options_.interrupt && options_.interrupt->load()) {
-            interrupted_ = true;
-            break;
-        }
-    }
+    const WavefrontStop stop = runPasses();
+    interrupted_ = stop == WavefrontStop::Interrupted;
     progress_->finish();
-    const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
-    return finish(elapsed.count());
+    WavefrontResult result = finish(elapsed());
+    result.stop = stop;
+    return result;
 }
 
 } // namespace

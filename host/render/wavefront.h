@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "common/render_settings.h"
@@ -19,11 +20,40 @@ namespace vkpt {
 
 class GpuContext;
 
+// Where a render stands after a pass, for an observer (WavefrontOptions::afterPass).
+struct PassProgress {
+    std::uint32_t passes = 0;          // passes finished, this one included
+    std::uint32_t samplesPerPixel = 0; // samples each still-active pixel has taken
+    std::uint32_t activePixels = 0;    // pixels that go on sampling
+    double seconds = 0.0;              // wall time since the first pass began
+    double observerSeconds = 0.0;      // of which spent in earlier readbacks and observer calls
+    // The process's CPU time (all threads) over the same span, and the observer's share. On a
+    // CPU device (lavapipe) this is the render's cost whatever else loads the machine.
+    double cpuSeconds = 0.0;
+    double observerCpuSeconds = 0.0;
+    // With readPixelsAfterPass: the image and statistics so far (one readback of the pixel
+    // states) and Σ samples taken over the pixels; otherwise null and 0.
+    const RenderOutput* output = nullptr;
+    std::uint64_t samplesTaken = 0;
+};
+
+// Why the pass loop ended.
+enum class WavefrontStop { BudgetSpent, AllConverged, Interrupted, TimeLimit, Observer };
+
 struct WavefrontOptions {
     std::uint32_t slotCount = 0; // path slots; 0: chosen from the device (chooseSlotCount)
     bool timeKernels = false;    // per-kernel GPU times from timestamp queries (--stats)
     // Set (e.g. by a SIGINT handler) to stop after the current pass with the image so far.
     const std::atomic<bool>* interrupt = nullptr;
+    // Stop at the first pass end at or after this many seconds of rendering (0: no limit).
+    // While a limit is set, a pass (after the first) takes no more samples per pixel than the
+    // previous pass's rate says fit in the time left, and at least one.
+    double timeLimitSeconds = 0.0;
+    // Called after every pass; returning true stops the render there (--target-error).
+    std::function<bool(const PassProgress&)> afterPass;
+    // Give afterPass the image so far, and grow passes geometrically so that it sees the error
+    // at log-spaced sample counts (samplesForGeometricGrowth).
+    bool readPixelsAfterPass = false;
 };
 
 struct WavefrontResult {
@@ -34,6 +64,7 @@ struct WavefrontResult {
     std::uint32_t passes = 0;
     std::uint32_t slotCount = 0;
     bool interrupted = false;
+    WavefrontStop stop = WavefrontStop::BudgetSpent;
 };
 
 // Deterministic: the image depends on the seed, not on scheduling, slot count or chunking.

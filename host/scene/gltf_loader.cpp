@@ -3,9 +3,12 @@
 #include "scene/gltf_loader.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <iostream>
 #include <optional>
 #include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "common/errors.h"
 #include "scene/gltf_accessors.h"
@@ -13,6 +16,7 @@
 #include "scene/gltf_document.h"
 #include "scene/gltf_materials.h"
 #include "scene/gltf_nodes.h"
+#include "scene/gltf_origin.h"
 #include "scene/gltf_primitives.h"
 
 namespace vkpt {
@@ -120,7 +124,46 @@ private:
     int orthographicCameras_ = 0;
 };
 
-// What the load ignored, said once it has succeeded, so that a failing load prints one line.
+std::string formatNumber(double value) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.6g", value);
+    return text;
+}
+
+std::string formatPoint(const glm::dvec3& p) {
+    return "(" + formatNumber(p.x) + ", " + formatNumber(p.y) + ", " + formatNumber(p.z) + ")";
+}
+
+std::string plural(std::size_t count, const char* one, const char* many) {
+    return std::to_string(count) + " " + (count == 1 ? one : many);
+}
+
+// What the load changed about the geometry: a recentred origin, repaired normals, skipped
+// triangles (docs/numerical-stability.md).
+std::vector<std::string> geometryNotes(const Scene& scene,
+                                       const std::optional<gltf::WorldExtent>& extent) {
+    std::vector<std::string> notes;
+    if (scene.worldOrigin != glm::dvec3(0.0) && extent) {
+        notes.push_back("the scene is centred at " + formatPoint(scene.worldOrigin) +
+                        ", more than " + formatNumber(gltf::kRecentreRatio) + " times its size (" +
+                        formatNumber(extent->size()) +
+                        ") from the origin; coordinates are measured from that centre to keep "
+                        "float precision");
+    }
+    const GeometryRepairs& repairs = scene.repairs;
+    if (repairs.zeroAreaTriangles > 0) {
+        notes.push_back("skipped " + plural(repairs.zeroAreaTriangles, "triangle", "triangles") +
+                        " of zero area");
+    }
+    if (repairs.invalidNormals > 0) {
+        notes.push_back(plural(repairs.invalidNormals, "vertex normal was", "vertex normals were") +
+                        " zero or not finite; the triangles' face normals are used there");
+    }
+    return notes;
+}
+
+// What the load ignored or changed, said once it has succeeded, so that a failing load prints
+// one line.
 std::vector<std::string> loadNotes(const tinygltf::Model& model, int orthographicCameras,
                                    const LoadOptions& options) {
     std::vector<std::string> notes;
@@ -136,6 +179,13 @@ std::vector<std::string> loadNotes(const tinygltf::Model& model, int orthographi
     return notes;
 }
 
+std::string noTrianglesMessage(const Scene& scene) {
+    const std::size_t skipped = scene.repairs.zeroAreaTriangles;
+    if (skipped == 0) return "the scene has no triangles";
+    return "the scene has no triangles of non-zero area (" +
+           plural(skipped, "triangle", "triangles") + " of zero area)";
+}
+
 Scene buildScene(const std::string& path, const LoadOptions& options) {
     const tinygltf::Model model = gltf::parseGltfFile(path);
     checkRequiredExtensions(model);
@@ -143,14 +193,22 @@ Scene buildScene(const std::string& path, const LoadOptions& options) {
     Scene scene;
     scene.sourcePath = path;
     scene.materials = gltf::convertMaterials(model);
+    const int sceneIndex = gltf::defaultSceneIndex(model);
+    // First the scene's extent in double, so that a far-away scene is recentred before its
+    // positions are rounded to float.
+    const std::optional<gltf::WorldExtent> extent = gltf::worldExtent(model, sceneIndex);
+    scene.worldOrigin = extent ? gltf::chooseWorldOrigin(*extent) : glm::dvec3(0.0);
     SceneBuilder builder(model, scene);
     gltf::walkSceneNodes(
-        model, gltf::defaultSceneIndex(model),
-        [&](int node, const glm::dmat4& world) { builder.visitNode(node, world); });
-    if (scene.triangleCount() == 0) throw GltfProblem("the scene has no triangles");
-    for (const std::string& note : loadNotes(model, builder.orthographicCameras(), options)) {
+        model, sceneIndex,
+        [&](int node, const glm::dmat4& world) { builder.visitNode(node, world); },
+        glm::translate(glm::dmat4(1.0), -scene.worldOrigin));
+    if (scene.triangleCount() == 0) throw GltfProblem(noTrianglesMessage(scene));
+    std::vector<std::string> notes = loadNotes(model, builder.orthographicCameras(), options);
+    for (const std::string& note : geometryNotes(scene, extent))
+        notes.push_back(note);
+    for (const std::string& note : notes)
         std::cerr << path << ": " << note << '\n';
-    }
     return scene;
 }
 

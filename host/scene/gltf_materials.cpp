@@ -53,6 +53,12 @@ void checkFinite(const SceneMaterial& material, std::size_t index) {
                         std::isfinite(material.metallic) && std::isfinite(material.roughness) &&
                         std::isfinite(material.alphaCutoff);
     if (!finite) throw GltfProblem(materialName(index) + ": a factor is not a finite float");
+    // Negative albedo or emission has no physical meaning and makes radiance negative, which
+    // the luminance statistics of adaptive sampling cannot take.
+    if (glm::any(glm::lessThan(material.baseColor, glm::vec4(0.0f))) ||
+        glm::any(glm::lessThan(material.emission, glm::vec3(0.0f)))) {
+        throw GltfProblem(materialName(index) + ": a color factor is negative");
+    }
 }
 
 SceneMaterial convertMaterial(const tinygltf::Material& material, std::size_t index) {

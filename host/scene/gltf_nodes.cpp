@@ -94,11 +94,11 @@ glm::dmat4 localTransform(const tinygltf::Node& node, int nodeIndex) {
     return transform;
 }
 
-void walkSceneNodes(const tinygltf::Model& model, int sceneIndex, const NodeVisitor& visit) {
+void walkSceneNodes(const tinygltf::Model& model, int sceneIndex, const NodeVisitor& visit,
+                    const glm::dmat4& root) {
     std::vector<char> onPath(model.nodes.size(), 0);
     std::vector<PendingNode> stack;
-    pushChildren(stack, model.scenes[static_cast<std::size_t>(sceneIndex)].nodes, -1,
-                 glm::dmat4(1.0));
+    pushChildren(stack, model.scenes[static_cast<std::size_t>(sceneIndex)].nodes, -1, root);
     while (!stack.empty()) {
         const PendingNode pending = stack.back();
         stack.pop_back();

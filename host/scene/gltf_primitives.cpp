@@ -2,6 +2,7 @@
 // triangles in world space.
 #include "scene/gltf_primitives.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
@@ -136,26 +137,49 @@ WorldGeometry readWorldGeometry(const tinygltf::Model& model, const tinygltf::Pr
     return geometry;
 }
 
-// A degenerate triangle (or a zero normal in the file) must still give a unit vector: a NaN in
-// the normals buffer would spread through every path that touches it.
-glm::vec3 unitOr(const glm::vec3& v, const glm::vec3& fallback) {
-    const float length = glm::length(v);
-    return length > 0.0f && std::isfinite(length) ? v / length : fallback;
+// v / |v| without overflow or underflow in |v|²: scaled by its largest component first, so a
+// needle's face normal of length 1e-30 or a huge triangle's of 1e30 still comes out unit.
+// Returns the zero vector when v is zero or not finite.
+glm::vec3 unitVector(const glm::vec3& v) {
+    const glm::vec3 a = glm::abs(v);
+    const float largest = std::max(a.x, std::max(a.y, a.z));
+    if (!(largest > 0.0f) || !std::isfinite(largest)) return glm::vec3(0.0f);
+    const glm::vec3 scaled = v / largest;
+    return scaled / glm::length(scaled);
 }
 
-void appendTriangle(const WorldGeometry& geometry, std::size_t first, Scene& scene) {
+// A zero or non-finite normal in the file must still give a unit vector: a NaN in the normals
+// buffer would spread through every path that touches it. Counted once per vertex.
+void repairNormals(std::vector<glm::vec3>& normals, Scene& scene) {
+    for (glm::vec3& normal : normals) {
+        const glm::vec3 unit = unitVector(normal);
+        if (unit == glm::vec3(0.0f)) ++scene.repairs.invalidNormals;
+        normal = unit; // zero: replaced by the face normal per triangle
+    }
+}
+
+void appendTriangle(const WorldGeometry& geometry, std::size_t first, std::uint32_t materialIndex,
+                    Scene& scene) {
     std::uint32_t corners[3] = {geometry.indices[first], geometry.indices[first + 1],
                                 geometry.indices[first + 2]};
     if (geometry.mirrored) std::swap(corners[1], corners[2]);
     const glm::vec3& p0 = geometry.positions[corners[0]];
     const glm::vec3& p1 = geometry.positions[corners[1]];
     const glm::vec3& p2 = geometry.positions[corners[2]];
-    const glm::vec3 flat = unitOr(glm::cross(p1 - p0, p2 - p0), glm::vec3(0.0f, 0.0f, 1.0f));
+    // No area in float (repeated or collinear vertices): no watertight test can hit it and it
+    // has no normal; leaving it out is exact. (A cross product beyond the float range, at
+    // coordinates near 1e19, lands here too: such a triangle is past what floats can render.)
+    const glm::vec3 flat = unitVector(glm::cross(p1 - p0, p2 - p0));
+    if (flat == glm::vec3(0.0f)) {
+        ++scene.repairs.zeroAreaTriangles;
+        return;
+    }
     for (std::uint32_t corner : corners) {
         scene.positions.push_back(geometry.positions[corner]);
-        scene.normals.push_back(geometry.normals ? unitOr((*geometry.normals)[corner], flat)
-                                                 : flat);
+        const glm::vec3 normal = geometry.normals ? (*geometry.normals)[corner] : flat;
+        scene.normals.push_back(normal == glm::vec3(0.0f) ? flat : normal);
     }
+    scene.materialIndices.push_back(materialIndex);
 }
 
 } // namespace
@@ -164,12 +188,11 @@ void appendPrimitiveTriangles(const tinygltf::Model& model, const tinygltf::Prim
                               const glm::dmat4& world, std::uint32_t materialIndex,
                               const std::string& where, Scene& scene) {
     requireTriangles(primitive.mode, where);
-    const WorldGeometry geometry = readWorldGeometry(model, primitive, world, where);
+    WorldGeometry geometry = readWorldGeometry(model, primitive, world, where);
+    if (geometry.normals) repairNormals(*geometry.normals, scene);
     for (std::size_t first = 0; first < geometry.indices.size(); first += 3) {
-        appendTriangle(geometry, first, scene);
+        appendTriangle(geometry, first, materialIndex, scene);
     }
-    scene.materialIndices.insert(scene.materialIndices.end(), geometry.indices.size() / 3,
-                                 materialIndex);
 }
 
 } // namespace vkpt::gltf

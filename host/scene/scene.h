@@ -38,6 +38,13 @@ struct Bounds {
     glm::vec3 max{std::numeric_limits<float>::lowest()};
 };
 
+// What the loader repaired or left out of the file's geometry, counted so that it can say so
+// (docs/numerical-stability.md, "Degenerate geometry").
+struct GeometryRepairs {
+    std::size_t zeroAreaTriangles = 0; // skipped: no area in float, so no ray can hit them
+    std::size_t invalidNormals = 0;    // zero-length or non-finite vertex normals: face normal used
+};
+
 // A triangle soup in world space: triangle i has vertices positions[3i .. 3i+2] (counter-
 // clockwise seen from its front face), shading normals normals[3i .. 3i+2] and material
 // materialIndices[i].
@@ -48,6 +55,11 @@ struct Scene {
     std::vector<std::uint32_t> materialIndices;
     std::vector<SceneMaterial> materials;
     std::vector<SceneCamera> cameras; // perspective ones, in depth-first node-walk order
+    // The file's world-space point that positions and cameras are measured from. The loader
+    // moves it to the centre of a scene that lies far from the origin (relative to its size),
+    // so that floats keep their precision there; rendering does not depend on it.
+    glm::dvec3 worldOrigin{0.0};
+    GeometryRepairs repairs;
 
     std::size_t triangleCount() const { return materialIndices.size(); }
 };

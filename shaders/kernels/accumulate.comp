@@ -1,7 +1,8 @@
 // accumulate.comp — the last stage of a pass, one invocation per active pixel of the chunk: adds
-// the pixel's k samples in sample order to its running estimate, applies the adaptive stopping
-// rule after every sample that completes a batch (exactly where the reference does), and
-// appends the pixels that go on to the next pass's active list.
+// the pixel's k samples in sample order to its running estimate (non-finite ones discarded and
+// counted, the rest clamped when --clamp asks, shared/sample_guard.h), applies the adaptive
+// stopping rule after every sample that completes a batch (exactly where the reference does),
+// and appends the pixels that go on to the next pass's active list.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "lib/frame.glsl"
@@ -15,18 +16,18 @@ VKPT_BUFFER(BINDING_QUEUE_COUNTERS, uint, queueCounters)
 
 #include "lib/counters.glsl"
 #include "shared/adaptive.h"
+#include "shared/sample_guard.h"
 #include "shared/sampling.h"
 
-// Tests the exponent bits, which no compiler may assume away (isnan can be, under fast math).
-bool isFiniteRadiance(vec3 v) {
-    uvec3 exponent = floatBitsToUint(v) & 0x7f800000u;
-    return all(notEqual(exponent, uvec3(0x7f800000u)));
-}
+// The largest float: M2 saturates there instead of overflowing to infinity (a pixel of samples
+// above ~1e19 has a variance beyond float; it then never counts as converged).
+#define FLOAT_MAX 3.402823466e38
 
-// Kahan summation of the radiance (precise: reassociation would cancel the compensation) and
-// Welford's running mean and M2 of the luminance.
+// Kahan summation of the radiance, scaled by ACCUMULATION_SCALE (precise: reassociation would
+// cancel the compensation), and Welford's running mean and M2 of the luminance. M2 cannot go
+// negative in exact arithmetic; the clamp keeps rounding from making it so.
 void addSample(inout PixelState pixel, vec3 radiance) {
-    precise vec3 corrected = radiance - pixel.compensation;
+    precise vec3 corrected = radiance * ACCUMULATION_SCALE - pixel.compensation;
     precise vec3 total = pixel.radianceSum + corrected;
     precise vec3 lost = (total - pixel.radianceSum) - corrected;
     pixel.compensation = lost;
@@ -35,7 +36,8 @@ void addSample(inout PixelState pixel, vec3 radiance) {
     float value = luminance(radiance);
     float delta = value - pixel.luminanceMean;
     pixel.luminanceMean += delta / float(pixel.count);
-    pixel.luminanceM2 += delta * (value - pixel.luminanceMean);
+    float m2 = pixel.luminanceM2 + delta * (value - pixel.luminanceMean);
+    pixel.luminanceM2 = clamp(m2, 0.0, FLOAT_MAX);
 }
 
 bool batchConverged(PixelState pixel) {
@@ -55,8 +57,8 @@ void main() {
     uint nonFinite = 0u;
     for (uint j = 0u; j < k; ++j) {
         PathState path = pathStates[first + j];
-        if (isFiniteRadiance(path.radiance)) {
-            addSample(pixel, path.radiance);
+        if (isFiniteSample(path.radiance)) {
+            addSample(pixel, clampSample(path.radiance, frame.sampleClamp));
         } else {
             ++nonFinite; // discarded: one NaN would poison the pixel for good
         }

@@ -24,7 +24,7 @@ shared uint groupProbeRays;
 // host/reference/surface.cpp decides (makeSurfacePoint's frontFace, emittedRadiance).
 vec3 emissionTowards(uint triangle, vec3 direction) {
     Triangle tri = triangles[triangle];
-    vec3 face = normalize(triangleFaceNormal(tri.v0, tri.v1, tri.v2));
+    vec3 face = unitFaceNormal(tri.v0, tri.v1, tri.v2);
     Material material = materials[tri.materialIndex];
     bool emitsHere = dot(face, direction) < 0.0 || (material.flags & MATERIAL_DOUBLE_SIDED) != 0u;
     return emitsHere ? material.emission : vec3(0.0);

@@ -49,7 +49,7 @@ LightSample sampleLight(vec3 receiver, vec4 u) {
     float distanceSquared = dot(toLight, toLight);
     if (!(distanceSquared > 0.0)) return light;
     light.direction = toLight / sqrt(distanceSquared);
-    vec3 face = normalize(triangleFaceNormal(tri.v0, tri.v1, tri.v2));
+    vec3 face = unitFaceNormal(tri.v0, tri.v1, tri.v2);
     float cosAtLight = -dot(face, light.direction);
     Material material = materials[tri.materialIndex];
     bool doubleSided = (material.flags & MATERIAL_DOUBLE_SIDED) != 0u;

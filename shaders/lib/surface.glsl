@@ -29,7 +29,7 @@ SurfacePoint makeSurfacePoint(HitRecord hit, vec3 rayDirection) {
     float w = 1.0 - hit.u - hit.v;
     s.position = tri.v0 * w + tri.v1 * hit.u + tri.v2 * hit.v;
     s.coordinateScale = triangleCoordinateScale(tri.v0, tri.v1, tri.v2);
-    vec3 face = normalize(triangleFaceNormal(tri.v0, tri.v1, tri.v2));
+    vec3 face = unitFaceNormal(tri.v0, tri.v1, tri.v2);
     s.frontFace = dot(face, rayDirection) < 0.0;
     s.geometricNormal = s.frontFace ? face : -face;
     s.rawShadingNormal = normals.n0.xyz * w + normals.n1.xyz * hit.u + normals.n2.xyz * hit.v;

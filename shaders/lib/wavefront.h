@@ -54,7 +54,7 @@ struct FrameParams {
     uint slotCount;          // path slots; each half of the rays buffer holds this many
     uint pixelCount;         // each half of the activePixels buffer holds this many
     uint nodeCount;
-    uint unused0;
+    float sampleClamp; // --clamp: largest component a sample may keep; SAMPLE_CLAMP_OFF: none
 };
 
 // Push constants: what changes from dispatch to dispatch.
@@ -118,8 +118,14 @@ struct ShadowRay {
     float factor;      // probe: cos θ / pdf
 };
 
-// One pixel's running estimate: Kahan-compensated radiance sum and Welford's luminance
-// statistics, as the reference's PixelAccumulator keeps them (in double there).
+// Samples enter a pixel's radiance sum multiplied by 2^-32, which is exact for every sample
+// above 2^-94 (about 5e-29): then even 2^32 samples of the largest float sum to a finite float.
+// The host multiplies the sum back, in double.
+#define ACCUMULATION_SCALE 2.3283064365386963e-10f
+
+// One pixel's running estimate: Kahan-compensated radiance sum (× ACCUMULATION_SCALE) and
+// Welford's luminance statistics, as the reference's PixelAccumulator keeps them (in double
+// there).
 struct PixelState {
     vec3 radianceSum;
     uint count;        // finite samples accumulated
@@ -153,7 +159,7 @@ struct PixelState {
 #ifdef __cplusplus
 static_assert(sizeof(FrameParams) == 128 && offsetof(FrameParams, seed) == 64 &&
               offsetof(FrameParams, adaptiveDarkFloor) == 108 &&
-              offsetof(FrameParams, nodeCount) == 120);
+              offsetof(FrameParams, nodeCount) == 120 && offsetof(FrameParams, sampleClamp) == 124);
 static_assert(sizeof(PassParams) == 32);
 static_assert(sizeof(PathState) == 48 && offsetof(PathState, radiance) == 16 &&
               offsetof(PathState, lightScale) == 32 && offsetof(PathState, previousBsdfPdf) == 44);

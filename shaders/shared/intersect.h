@@ -147,11 +147,14 @@ VKPT_FN TriangleHit intersectTriangleWatertight(vec3 origin, ShearedRay ray, vec
     if ((u < 0.0f || v < 0.0f || w < 0.0f) && (u > 0.0f || v > 0.0f || w > 0.0f)) return result;
     float det = u + v + w;
     if (det == 0.0f) return result; // seen edge-on, or degenerate
-    float t = (u * a.z + v * b.z + w * c.z) / det;
+    // Barycentrics first: u·a.z + v·b.z + w·c.z grows as size³ and leaves the float range
+    // beyond a scene size of about 1e13 (1e-13 on the small side); each b·z stays near size.
+    vec3 bary = vec3(u, v, w) / det;
+    float t = bary.x * a.z + bary.y * b.z + bary.z * c.z;
     if (!(t > tMin && t < tMax)) return result;
     result.t = t;
-    result.u = v / det;
-    result.v = w / det;
+    result.u = bary.y;
+    result.v = bary.z;
     result.hit = true;
     return result;
 }
@@ -165,6 +168,32 @@ VKPT_FN TriangleHit intersectTriangle(vec3 origin, vec3 direction, vec3 v0, vec3
 // Unnormalised geometric normal; it points to the front side, from which v0, v1, v2 run
 // counter-clockwise.
 VKPT_FN vec3 triangleFaceNormal(vec3 v0, vec3 v1, vec3 v2) { return cross(v1 - v0, v2 - v0); }
+
+// The largest component magnitude of v.
+VKPT_FN float largestMagnitude(vec3 v) {
+    vec3 a = abs(v);
+    return max(max(a.x, a.y), a.z);
+}
+
+// |v|, scaled by its largest component first: |v|² of a triangle's normal (size⁴) underflows
+// below a size of about 1e-10 and overflows above 1e9, v/largest does neither.
+VKPT_FN float scaledLength(vec3 v) {
+    float largest = largestMagnitude(v);
+    return largest > 0.0f ? largest * length(v / largest) : 0.0f;
+}
+
+// The unit geometric normal on the front side, robust at any scale (see scaledLength); the
+// zero vector for a triangle without area.
+VKPT_FN vec3 unitFaceNormal(vec3 v0, vec3 v1, vec3 v2) {
+    vec3 n = triangleFaceNormal(v0, v1, v2);
+    float largest = largestMagnitude(n);
+    return largest > 0.0f ? normalize(n / largest) : vec3(0.0f);
+}
+
+// A triangle's area, robust at any scale where it is a finite float.
+VKPT_FN float triangleAreaOf(vec3 v0, vec3 v1, vec3 v2) {
+    return 0.5f * scaledLength(triangleFaceNormal(v0, v1, v2));
+}
 
 #ifdef __cplusplus
 } // namespace vkpt::gpu

@@ -1,14 +1,16 @@
 // watertight_test.cpp — rays aimed exactly at the shared edges and vertices of closed meshes
 // must never pass through: from outside they hit at or before the aimed-at point, from inside
-// they cannot escape. 10^6 rays per mesh and side; the target is zero leaks.
+// they cannot escape. 10^6 rays per mesh and side through vkpt-ref's traversal, 10^5 through
+// vkpt's trace_closest kernel on the device; the target is zero leaks.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <set>
 
 #include "../support/meshes.h"
-#include "bvh/bvh_build.h"
 #include "bvh/bvh_traverse.h"
+#include "extremes_support.h"
+#include "render/ray_queries.h"
 #include "shared/rng.h"
 
 namespace vkpt {
@@ -18,17 +20,18 @@ struct ClosedMesh {
     test::IndexedMesh mesh;
     glm::vec3 centre;
     float radius;
-    BvhTree tree;
-    std::vector<gpu::Triangle> triangles;
+    PreparedScene prepared; // the BVH, its flattened nodes and the triangles in BVH order
     std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
 };
 
 ClosedMesh prepare(test::IndexedMesh mesh, glm::vec3 centre, float radius) {
-    ClosedMesh m{std::move(mesh), centre, radius, {}, {}, {}};
-    std::vector<glm::vec3> soup = m.mesh.soup();
-    m.tree = buildBvh(triangleBounds(soup));
-    for (std::uint32_t i : m.tree.primitiveOrder)
-        m.triangles.push_back({soup[3 * i], 0, soup[3 * i + 1], NO_EMITTER, soup[3 * i + 2], i});
+    ClosedMesh m{std::move(mesh), centre, radius, {}, {}};
+    Scene scene;
+    std::uint32_t material = test::addMaterial(scene, glm::vec3(0.5f));
+    for (const auto& t : m.mesh.triangles)
+        test::addTriangle(scene, m.mesh.vertices[t[0]], m.mesh.vertices[t[1]],
+                          m.mesh.vertices[t[2]], material);
+    m.prepared = prepareScene(scene);
     std::set<std::pair<std::uint32_t, std::uint32_t>> edges;
     for (const auto& t : m.mesh.triangles)
         for (int k = 0; k < 3; ++k) edges.insert(std::minmax(t[k], t[(k + 1) % 3]));
@@ -65,24 +68,59 @@ float allowance(glm::vec3 aim, glm::vec3 origin) {
     return 1e-5f + 4.0f * largest * 0x1p-23f / glm::length(aim - origin);
 }
 
+// Ray i from outside (side 0) or inside (side 1), aimed at target i: t = 1 there.
+struct AimedRay {
+    DeviceRay ray;
+    glm::vec3 aim;
+};
+
+AimedRay aimedRay(const ClosedMesh& m, std::uint32_t i, int side) {
+    glm::vec3 aim = target(m, i);
+    glm::vec4 u = gpu::randomFloats(17, i, 0, 0, DIM_BSDF);
+    // Both origins look through the aimed-at point towards a point well inside the convex
+    // mesh, so every ray really crosses the surface there: a ray that only grazed an edge
+    // of the solid could miss it legitimately after rounding, and would prove nothing.
+    glm::vec3 inside = m.centre + 0.2f * m.radius * unitVector({u.z, u.w});
+    glm::vec3 outside = aim + 2.0f * m.radius * glm::normalize(aim - inside);
+    glm::vec3 origin = side == 0 ? outside : inside;
+    return {{origin, aim - origin}, aim};
+}
+
+bool leaks(const AimedRay& r, bool hit, float t) {
+    return !hit || t > 1.0f + allowance(r.aim, r.ray.origin);
+}
+
 LeakCount countLeaks(const ClosedMesh& m, std::uint32_t rays) {
-    LeakCount leaks;
-    for (std::uint32_t i = 0; i < rays; ++i) {
-        glm::vec3 aim = target(m, i);
-        glm::vec4 u = gpu::randomFloats(17, i, 0, 0, DIM_BSDF);
-        // Both origins look through the aimed-at point towards a point well inside the convex
-        // mesh, so every ray really crosses the surface there: a ray that only grazed an edge
-        // of the solid could miss it legitimately after rounding, and would prove nothing.
-        glm::vec3 inside = m.centre + 0.2f * m.radius * unitVector({u.z, u.w});
-        glm::vec3 outside = aim + 2.0f * m.radius * glm::normalize(aim - inside);
+    LeakCount leakCount;
+    for (std::uint32_t i = 0; i < rays; ++i)
         for (int side = 0; side < 2; ++side) {
-            glm::vec3 origin = side == 0 ? outside : inside;
-            ClosestHit hit = closestHitStack(m.tree, m.triangles, {origin, aim - origin});
-            if (!hit.hit || hit.t > 1.0f + allowance(aim, origin))
-                ++(side == 0 ? leaks.fromOutside : leaks.fromInside);
+            AimedRay r = aimedRay(m, i, side);
+            ClosestHit hit = closestHitStack(m.prepared.tree, m.prepared.triangles,
+                                             {r.ray.origin, r.ray.direction});
+            if (leaks(r, hit.hit, hit.t))
+                ++(side == 0 ? leakCount.fromOutside : leakCount.fromInside);
         }
+    return leakCount;
+}
+
+// The same rays through trace_closest on the device (its stackless walk of the flattened BVH).
+LeakCount countDeviceLeaks(GpuContext& context, const ClosedMesh& m, std::uint32_t rays) {
+    LeakCount leakCount;
+    DeviceRayQueries queries(context, m.prepared);
+    for (int side = 0; side < 2; ++side) {
+        std::vector<AimedRay> aimed;
+        std::vector<DeviceRay> list;
+        for (std::uint32_t i = 0; i < rays; ++i) {
+            aimed.push_back(aimedRay(m, i, side));
+            list.push_back(aimed.back().ray);
+        }
+        std::vector<gpu::HitRecord> hits = queries.closest(list);
+        for (std::uint32_t i = 0; i < rays; ++i)
+            if (leaks(aimed[i], hits[i].triangle != NO_HIT, hits[i].t))
+                ++(side == 0 ? leakCount.fromOutside : leakCount.fromInside);
     }
-    return leaks;
+    EXPECT_EQ(queries.truncatedTraversals(), 0u);
+    return leakCount;
 }
 
 constexpr std::uint32_t kRays = 1000000;
@@ -107,6 +145,24 @@ TEST(Watertight, MeshFarFromTheOriginHasNoLeaks) {
     LeakCount leaks = countLeaks(m, kRays);
     EXPECT_EQ(leaks.fromOutside, 0u);
     EXPECT_EQ(leaks.fromInside, 0u);
+}
+
+constexpr std::uint32_t kDeviceRays = 100000;
+
+class WatertightOnTheDevice : public test::GpuTest {};
+
+TEST_F(WatertightOnTheDevice, NoMeshLeaksAtEdgesAndVertices) {
+    const glm::vec3 far(1e5f, -1e5f, 1e5f);
+    const ClosedMesh meshes[] = {
+        prepare(test::icosphere(4, 1.0f, glm::vec3(0.0f)), glm::vec3(0.0f), 1.0f),
+        prepare(test::splitCube(16, 2.0f, glm::vec3(0.0f)), glm::vec3(0.0f), 1.0f),
+        prepare(test::icosphere(3, 1.0f, far), far, 1.0f)};
+    const char* names[] = {"icosphere", "split cube", "icosphere at 1e5"};
+    for (int i = 0; i < 3; ++i) {
+        LeakCount leaks = countDeviceLeaks(context(), meshes[i], kDeviceRays);
+        EXPECT_EQ(leaks.fromOutside, 0u) << names[i];
+        EXPECT_EQ(leaks.fromInside, 0u) << names[i];
+    }
 }
 
 } // namespace

@@ -1,0 +1,16 @@
+// convergence_options.h — the options that buy accuracy with time: --reference (error against
+// a reference after every pass), --target-error and --time-limit (vkpt only: they stop the
+// pass loop).
+#pragma once
+
+#include "app/command_line.h"
+#include "study/convergence.h"
+
+namespace vkpt {
+
+enum class ConvergenceOptionSet { ReferenceOnly, All };
+
+void addConvergenceOptions(CommandLine& commandLine, ConvergenceSettings& settings,
+                           ConvergenceOptionSet set);
+
+} // namespace vkpt

@@ -1,0 +1,80 @@
+// gltf_origin.cpp — a first walk over the default scene that measures its world-space bounds in
+// double, and the rule that decides whether to recentre it.
+#include "scene/gltf_origin.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "scene/gltf_accessors.h"
+#include "scene/gltf_document.h"
+#include "scene/gltf_nodes.h"
+
+namespace vkpt::gltf {
+namespace {
+
+bool isFinite(const glm::dvec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+class ExtentBuilder {
+public:
+    explicit ExtentBuilder(const tinygltf::Model& model) : model_(model) {}
+
+    void visitNode(int nodeIndex, const glm::dmat4& world) {
+        const int mesh = model_.nodes[static_cast<std::size_t>(nodeIndex)].mesh;
+        if (mesh < 0 || static_cast<std::size_t>(mesh) >= model_.meshes.size()) return;
+        for (const tinygltf::Primitive& primitive :
+             model_.meshes[static_cast<std::size_t>(mesh)].primitives) {
+            const auto position = primitive.attributes.find("POSITION");
+            if (position != primitive.attributes.end()) addVertices(position->second, world);
+        }
+    }
+
+    std::optional<WorldExtent> extent() const {
+        if (!any_) return std::nullopt;
+        return extent_;
+    }
+
+private:
+    void addVertices(int accessor, const glm::dmat4& world) {
+        for (const glm::vec3& p : readVec3Floats(model_, accessor, "POSITION")) {
+            const glm::dvec3 w(world * glm::dvec4(glm::dvec3(p), 1.0));
+            if (!isFinite(w)) continue;
+            extent_.min = any_ ? glm::min(extent_.min, w) : w;
+            extent_.max = any_ ? glm::max(extent_.max, w) : w;
+            any_ = true;
+        }
+    }
+
+    const tinygltf::Model& model_;
+    WorldExtent extent_;
+    bool any_ = false;
+};
+
+} // namespace
+
+double WorldExtent::size() const {
+    const glm::dvec3 side = max - min;
+    return std::max(side.x, std::max(side.y, side.z));
+}
+
+std::optional<WorldExtent> worldExtent(const tinygltf::Model& model, int sceneIndex) {
+    ExtentBuilder builder(model);
+    try {
+        walkSceneNodes(model, sceneIndex,
+                       [&](int node, const glm::dmat4& world) { builder.visitNode(node, world); });
+    } catch (const GltfProblem&) {
+        return std::nullopt; // the loading pass names the problem
+    }
+    return builder.extent();
+}
+
+glm::dvec3 chooseWorldOrigin(const WorldExtent& extent) {
+    const glm::dvec3 centre = extent.centre();
+    const double distance =
+        std::max(std::abs(centre.x), std::max(std::abs(centre.y), std::abs(centre.z)));
+    return distance > kRecentreRatio * extent.size() ? centre : glm::dvec3(0.0);
+}
+
+} // namespace vkpt::gltf

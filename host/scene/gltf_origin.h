@@ -1,0 +1,34 @@
+// gltf_origin.h — where the loaded scene's coordinates are measured from: the file's origin, or
+// the centre of a scene that lies far from it relative to its size, found in double before any
+// position is rounded to float (docs/numerical-stability.md, "Distance from the origin").
+#pragma once
+
+#include <optional>
+
+#include <glm/glm.hpp>
+#include <tiny_gltf.h>
+
+namespace vkpt::gltf {
+
+// A scene is recentred when a coordinate of its centre exceeds this many times its largest side:
+// from there on, floats at the scene's place are at least 16 times coarser than the scene needs.
+inline constexpr double kRecentreRatio = 16.0;
+
+struct WorldExtent {
+    glm::dvec3 min{0.0};
+    glm::dvec3 max{0.0};
+
+    glm::dvec3 centre() const { return 0.5 * (min + max); }
+    double size() const; // the largest side
+};
+
+// Bounds of the default scene's vertex positions in world space, in double. Tolerant by design:
+// nullopt when the scene has no readable finite geometry or the file has a problem, which the
+// loading pass that follows reports in its own words.
+std::optional<WorldExtent> worldExtent(const tinygltf::Model& model, int sceneIndex);
+
+// The centre of `extent` when it lies beyond kRecentreRatio times the scene's size from the
+// origin, else the origin.
+glm::dvec3 chooseWorldOrigin(const WorldExtent& extent);
+
+} // namespace vkpt::gltf

@@ -1,0 +1,62 @@
+# check_study.cmake — runs vkpt-study and checks what it leaves behind.
+#
+#   cmake -DMODE=quick|replot|without_gnuplot -DSTUDY=<vkpt-study> -DSCENE=<gltf> -DOUT=<dir>
+#         -DCACHE=<dir> -P check_study.cmake
+foreach(variable MODE STUDY SCENE OUT CACHE)
+    if(NOT DEFINED ${variable})
+        message(FATAL_ERROR "check_study.cmake: -D${variable}=... is missing")
+    endif()
+endforeach()
+
+function(study expected)
+    execute_process(COMMAND "${STUDY}" --quick --cache "${CACHE}" -o "${OUT}" ${ARGN} "${SCENE}"
+                    RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 280)
+    if(NOT result STREQUAL "${expected}")
+        message(FATAL_ERROR "vkpt-study ${ARGN}: expected exit ${expected}, got ${result}\n"
+                            "stderr: ${err}\nstdout: ${out}")
+    endif()
+    set(stderr "${err}" PARENT_SCOPE)
+endfunction()
+
+function(expect_file name pattern)
+    if(NOT EXISTS "${OUT}/${name}")
+        message(FATAL_ERROR "vkpt-study wrote no ${OUT}/${name}")
+    endif()
+    file(READ "${OUT}/${name}" text)
+    if(NOT text MATCHES "${pattern}")
+        message(FATAL_ERROR "${OUT}/${name} does not match '${pattern}'")
+    endif()
+endfunction()
+
+function(expect_outputs)
+    expect_file(cornell-box.csv "^scene,family,label,.*\ncornell-box,uniform,\"uniform\",full,")
+    expect_file(cornell-box-meta.txt "reference full 1024 64 ")
+    expect_file(cornell-box.md "time to relMSE 1e-3.*\\| no roulette \\|.*not yet available")
+    expect_file(cornell-box.gp "set logscale xy")
+    expect_file(cornell-box-headline.svg "<svg.*relMSE.*(render time|CPU time of the render)")
+    expect_file(cornell-box.svg "<svg.*light against hemisphere sampling")
+endfunction()
+
+if(MODE STREQUAL "quick")
+    file(REMOVE_RECURSE "${OUT}")
+    study(0)
+    expect_outputs()
+    file(STRINGS "${OUT}/cornell-box.csv" rows)
+    list(LENGTH rows count)
+    if(count LESS 60)
+        message(FATAL_ERROR "only ${count} rows in the CSV")
+    endif()
+elseif(MODE STREQUAL "replot")
+    file(REMOVE "${OUT}/cornell-box.md" "${OUT}/cornell-box.gp" "${OUT}/cornell-box.svg"
+         "${OUT}/cornell-box-headline.svg")
+    study(0 --replot)
+    expect_outputs()
+elseif(MODE STREQUAL "without_gnuplot")
+    set(ENV{PATH} "/nonexistent")
+    study(1 -o "${OUT}-unused")
+    if(NOT stderr MATCHES "^vkpt-study: error: gnuplot is not on PATH: install it [^\n]*\n$")
+        message(FATAL_ERROR "expected one line naming gnuplot: [${stderr}]")
+    endif()
+else()
+    message(FATAL_ERROR "unknown MODE ${MODE}")
+endif()
