@@ -298,7 +298,7 @@ $run0 << EOD
 58.3112 0.000227779
 58.5077 0.00022744
 58.7099 0.000226757
-58.9499 0.000226358
+58.9498 0.000226358
 59.1479 0.00022573
 59.3453 0.000225423
 59.5431 0.000224869
@@ -1932,7 +1932,7 @@ $run3 << EOD
 82.6204 0.000233174
 82.686 0.000233252
 82.8723 0.000233359
-82.9362 0.000233569
+82.9361 0.000233569
 83.1187 0.000233585
 83.1836 0.000233475
 83.3678 0.000233029
@@ -1983,7 +1983,7 @@ $run3 << EOD
 88.4287 0.000227676
 88.6187 0.000227434
 88.6492 0.000227398
-88.8399 0.000227036
+88.84 0.000227036
 88.8698 0.000227154
 89.0571 0.000227169
 89.0885 0.000227118
@@ -3093,7 +3093,7 @@ $run5 << EOD
 9.34624 0.00165564
 9.48517 0.00164536
 9.55552 0.00164078
-9.69213 0.0016372
+9.69214 0.0016372
 9.73644 0.00163651
 9.8744 0.0016363
 9.90073 0.00163575
@@ -3324,7 +3324,7 @@ $run6 << EOD
 32.5542 0.000661267
 32.6336 0.000660756
 32.7746 0.000660471
-32.8468 0.000659613
+32.8468 0.000659614
 32.9896 0.000659078
 33.0553 0.00065912
 33.1961 0.000659253
@@ -3454,7 +3454,7 @@ $run7 << EOD
 15.4345 0.000829397
 15.6198 0.000822791
 15.8013 0.000813595
-15.9844 0.000803192
+15.9844 0.000803193
 16.1744 0.000793259
 16.3567 0.000791295
 16.5407 0.000781142
@@ -6916,7 +6916,7 @@ $run17 << EOD
 1.02231 0.0135683
 1.17246 0.0117818
 1.32237 0.0104081
-1.48349 0.00917137
+1.4835 0.00917137
 1.67114 0.00840058
 1.85455 0.00761095
 2.02041 0.00696675
@@ -7975,8 +7975,12 @@ $adaptive64 << EOD
 167.897 9.23815e-05 "0.025"
 EOD
 $uniformMarks << EOD
-0.223182 0.0648364 "4"
-212.072 7.70667e-05 "4096"
+0.223182 0.0648364 "4 spp"
+0.899553 0.0136439 "18 spp"
+3.20094 0.00371934 "66 spp"
+12.4625 0.000964822 "258 spp"
+51.9247 0.000254839 "1026 spp"
+212.072 7.70667e-05 "4096 spp"
 EOD
 set terminal svg size 900,640 dynamic enhanced font 'sans,12' background rgb 'white'
 set output 'cornell-box-headline.svg'
@@ -7992,14 +7996,14 @@ set title 'cornell-box (128x128): uniform against adaptive sampling'
 plot $run0 using 1:2 with lines lw 2 title 'uniform', \
      $uniformMarks using 1:2:3 with labels offset char -1.2,-0.8 font ',8' notitle, \
      $adaptive16 using 1:2 with linespoints lw 2 pt 7 title 'adaptive, batch 16 (label: tolerance)', \
-     $adaptive16 using 1:2:3 with labels offset char 1.5,0.6 font ',8' notitle, \
+     $adaptive16 using 1:2:3 with labels offset char -1.5,0.8 font ',8' notitle, \
      $adaptive64 using 1:2 with linespoints lw 2 pt 7 title 'adaptive, batch 64 (label: tolerance)', \
-     $adaptive64 using 1:2:3 with labels offset char 1.5,0.6 font ',8' notitle, \
+     $adaptive64 using 1:2:3 with labels offset char 1.5,-0.7 font ',8' notitle, \
      1.47469e-05 with lines dt 3 lc rgb '#555555' title "reference's own noise"
 unset output
 set terminal svg size 1400,1000 dynamic enhanced font 'sans,12' background rgb 'white'
 set output 'cornell-box.svg'
-set multiplot layout 2,2 title 'cornell-box: relMSE against render time'
+set multiplot layout 2,2 title 'cornell-box: relMSE against time'
 set title 'uniform and adaptive sampling'
 plot $run0 using 1:2 with lines lw 2 title 'uniform', \
      $run1 using 1:2 with lines lw 2 title 'adaptive b16 tol 0.2', \

@@ -1205,7 +1205,7 @@ $run5 << EOD
 0.860057 0.0543279
 1.05116 0.0433892
 1.2393 0.0352477
-1.53762 0.0281506
+1.53761 0.0281506
 1.82235 0.0235802
 2.23498 0.0194225
 2.66859 0.0155725
@@ -1332,7 +1332,7 @@ $run6 << EOD
 13.1659 0.00224671
 13.6748 0.00215857
 14.2034 0.00208873
-14.7281 0.00199796
+14.728 0.00199796
 15.2506 0.00189801
 15.7759 0.00182082
 16.3057 0.00175683
@@ -1716,7 +1716,7 @@ $run7 << EOD
 115.179 0.000278846
 115.706 0.000276879
 116.236 0.000275327
-116.776 0.000273848
+116.775 0.000273848
 117.354 0.000273181
 117.936 0.000271566
 118.468 0.000271033
@@ -2511,7 +2511,7 @@ $run14 << EOD
 18.5321 0.00161301
 19.0543 0.0015716
 19.5536 0.00153704
-20.0466 0.00148714
+20.0466 0.00148715
 20.5759 0.00144637
 21.0637 0.00141851
 21.5475 0.00138412
@@ -3073,7 +3073,11 @@ $adaptive64 << EOD
 143.586 0.000232478 "0.025"
 EOD
 $uniformMarks << EOD
-0.452447 0.105931 "4"
+0.452447 0.105931 "4 spp"
+1.81991 0.0235802 "18 spp"
+6.50204 0.0060648 "68 spp"
+20.6855 0.00165969 "257 spp"
+80.7818 0.00044754 "1027 spp"
 EOD
 set terminal svg size 900,640 dynamic enhanced font 'sans,12' background rgb 'white'
 set output 'transmission-test-headline.svg'
@@ -3089,14 +3093,14 @@ set title 'transmission-test (96x96): uniform against adaptive sampling'
 plot $run0 using 1:2 with lines lw 2 title 'uniform', \
      $uniformMarks using 1:2:3 with labels offset char -1.2,-0.8 font ',8' notitle, \
      $adaptive16 using 1:2 with linespoints lw 2 pt 7 title 'adaptive, batch 16 (label: tolerance)', \
-     $adaptive16 using 1:2:3 with labels offset char 1.5,0.6 font ',8' notitle, \
+     $adaptive16 using 1:2:3 with labels offset char -1.5,0.8 font ',8' notitle, \
      $adaptive64 using 1:2 with linespoints lw 2 pt 7 title 'adaptive, batch 64 (label: tolerance)', \
-     $adaptive64 using 1:2:3 with labels offset char 1.5,0.6 font ',8' notitle, \
+     $adaptive64 using 1:2:3 with labels offset char 1.5,-0.7 font ',8' notitle, \
      2.56874e-05 with lines dt 3 lc rgb '#555555' title "reference's own noise"
 unset output
 set terminal svg size 1400,1000 dynamic enhanced font 'sans,12' background rgb 'white'
 set output 'transmission-test.svg'
-set multiplot layout 2,2 title 'transmission-test: relMSE against render time'
+set multiplot layout 2,2 title 'transmission-test: relMSE against time'
 set title 'uniform and adaptive sampling'
 plot $run0 using 1:2 with lines lw 2 title 'uniform', \
      $run1 using 1:2 with lines lw 2 title 'adaptive b16 tol 0.2', \

@@ -19,14 +19,21 @@ double parsePositive(const std::string& option, const std::string& text) {
 } // namespace
 
 void addConvergenceOptions(CommandLine& cl, ConvergenceSettings& s, ConvergenceOptionSet set) {
-    cl.add({"reference", {}, "FILE",
+    cl.add({"reference",
+            {},
+            "FILE",
             "report RMSE and relMSE against this PFM (same size) after every pass",
             [&s](auto v) { s.referencePath = v[0]; }});
     if (set == ConvergenceOptionSet::ReferenceOnly) return;
-    cl.add({"target-error", {}, "E",
+    cl.add({"target-error",
+            {},
+            "E",
             "stop once relMSE <= E (against --reference, else estimated from the variances)",
             [&s](auto v) { s.targetError = parsePositive("target-error", v[0]); }});
-    cl.add({"time-limit", {}, "S", "stop at the first pass end after S seconds of rendering",
+    cl.add({"time-limit",
+            {},
+            "S",
+            "stop at the first pass end after S seconds of rendering",
             [&s](auto v) { s.timeLimitSeconds = parsePositive("time-limit", v[0]); }});
 }
 

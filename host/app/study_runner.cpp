@@ -120,13 +120,14 @@ RenderOutput StudyRunner::renderReferenceImage(const RenderSettings& settings,
     if (invocation_.referenceOnDevice) {
         WavefrontOptions options;
         options.slotCount = invocation_.pathSlots;
-        output = renderWavefront(context_, setup_.prepared, setup_.camera, settings, options).output;
+        output =
+            renderWavefront(context_, setup_.prepared, setup_.camera, settings, options).output;
         info.renderer = "vkpt (" + context_.deviceInfo().name + ")";
     } else {
         RenderStats stats;
         output = renderReference(setup_.prepared, setup_.camera, settings, stats);
-        info.renderer = "vkpt-ref (CPU, " + std::to_string(std::thread::hardware_concurrency()) +
-                        " threads)";
+        info.renderer =
+            "vkpt-ref (CPU, " + std::to_string(std::thread::hardware_concurrency()) + " threads)";
     }
     info.seconds = secondsSince(start);
     return output;
@@ -154,8 +155,8 @@ const Image& StudyRunner::reference(StudyReference kind) {
         writeCachedReference(path, cached->image, cached->info);
         cached->info.path = path;
     } else {
-        std::fprintf(stderr, "%s: %s reference from the cache: %s\n", kProgram,
-                     referenceName(kind), path.c_str());
+        std::fprintf(stderr, "%s: %s reference from the cache: %s\n", kProgram, referenceName(kind),
+                     path.c_str());
     }
     cached->info.kind = kind;
     summary_.references.push_back(cached->info);
@@ -219,7 +220,8 @@ void runGnuplot(const std::string& directory, const std::string& script) {
     const std::string cd = "cd '" + directory + "'";
     std::vector<std::string> arguments{gnuplot, "-e", cd, script};
     std::vector<char*> argv;
-    for (std::string& a : arguments) argv.push_back(a.data());
+    for (std::string& a : arguments)
+        argv.push_back(a.data());
     argv.push_back(nullptr);
     pid_t pid = -1;
     if (posix_spawn(&pid, gnuplot.c_str(), nullptr, nullptr, argv.data(), environ) != 0)
@@ -253,9 +255,8 @@ void writeReport(const StudyInvocation& invocation, const StudySummary& summary)
     writeFile(dir / (name + ".md"),
               [&](std::ostream& out) { writeStudyTable(out, summary, overview, headline); });
     const fs::path script = dir / (name + ".gp");
-    writeFile(script, [&](std::ostream& out) {
-        writeGnuplotScript(out, summary, headline, overview);
-    });
+    writeFile(script,
+              [&](std::ostream& out) { writeGnuplotScript(out, summary, headline, overview); });
     if (invocation.plot) runGnuplot(fs::absolute(dir).string(), fs::absolute(script).string());
     std::fprintf(stderr, "%s: wrote %s/%s.{csv,md,gp}%s\n", kProgram, dir.string().c_str(),
                  name.c_str(), invocation.plot ? " and the plots (.svg)" : "");

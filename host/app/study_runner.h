@@ -17,10 +17,10 @@ namespace vkpt {
 struct StudyInvocation {
     RenderSettings base; // scene, size, camera
     StudyScale scale;
-    std::string name;    // file names: <name>.csv, <name>.md, <name>.gp, <name>.svg, ...
+    std::string name; // file names: <name>.csv, <name>.md, <name>.gp, <name>.svg, ...
     std::string outDir = ".";
-    std::string cacheDir; // empty: defaultCacheDirectory()
-    std::string note;     // a sentence for the table, e.g. about the machine's load
+    std::string cacheDir;              // empty: defaultCacheDirectory()
+    std::string note;                  // a sentence for the table, e.g. about the machine's load
     std::vector<std::string> families; // empty: every strategy
     bool plot = true;                  // run gnuplot on the script
     bool referenceOnDevice = false;    // references with vkpt's renderer instead of vkpt-ref's

@@ -151,11 +151,16 @@ WavefrontOptions wavefrontOptions(const Invocation& invocation, ConvergenceTrack
 
 ConvergenceStop convergenceStop(WavefrontStop stop) {
     switch (stop) {
-    case WavefrontStop::BudgetSpent: return ConvergenceStop::Budget;
-    case WavefrontStop::AllConverged: return ConvergenceStop::Converged;
-    case WavefrontStop::Interrupted: return ConvergenceStop::Interrupted;
-    case WavefrontStop::TimeLimit: return ConvergenceStop::TimeLimit;
-    case WavefrontStop::Observer: return ConvergenceStop::TargetError;
+    case WavefrontStop::BudgetSpent:
+        return ConvergenceStop::Budget;
+    case WavefrontStop::AllConverged:
+        return ConvergenceStop::Converged;
+    case WavefrontStop::Interrupted:
+        return ConvergenceStop::Interrupted;
+    case WavefrontStop::TimeLimit:
+        return ConvergenceStop::TimeLimit;
+    case WavefrontStop::Observer:
+        return ConvergenceStop::TargetError;
     }
     return ConvergenceStop::Budget;
 }
@@ -164,8 +169,8 @@ std::optional<ConvergenceReport> convergenceReport(const Invocation& invocation,
                                                    const ConvergenceTracker& tracker,
                                                    WavefrontStop stop) {
     if (!invocation.convergence.any()) return std::nullopt;
-    return ConvergenceReport{invocation.convergence, convergenceStop(stop),
-                             tracker.targetReached(), tracker.curve()};
+    return ConvergenceReport{invocation.convergence, convergenceStop(stop), tracker.targetReached(),
+                             tracker.curve()};
 }
 
 std::optional<Image> loadReferenceFor(const Invocation& invocation) {
@@ -213,8 +218,8 @@ int render(const Invocation& invocation) {
                                invocation.convergence.targetError);
     RenderSettings renderSettings = settings;
     renderSettings.quiet = settings.quiet || printsPassLines(invocation);
-    WavefrontResult result = renderWavefront(context, setup.prepared, setup.camera,
-                                             renderSettings, wavefrontOptions(invocation, tracker));
+    WavefrontResult result = renderWavefront(context, setup.prepared, setup.camera, renderSettings,
+                                             wavefrontOptions(invocation, tracker));
     const std::chrono::duration<double> total = std::chrono::steady_clock::now() - start;
     writeOutputs(result.output, settings);
     RenderReport report =

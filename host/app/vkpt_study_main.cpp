@@ -46,37 +46,58 @@ std::vector<std::string> splitList(const std::string& text) {
 
 void checkFamilies(const std::vector<std::string>& families) {
     for (const std::string& f : families)
-        if (f != "uniform" && f != "adaptive" && f != "sampling" && f != "depth" &&
-            f != "roulette")
+        if (f != "uniform" && f != "adaptive" && f != "sampling" && f != "depth" && f != "roulette")
             throw InputError("option --only: '" + f +
                              "' is not one of uniform, adaptive, sampling, depth, roulette");
 }
 
 void addScaleOptions(CommandLine& cl, ScaleOverrides& o) {
-    cl.add({"quick", {}, "", "the seconds-long version CI runs: 32x32, 64 spp, few settings",
+    cl.add({"quick",
+            {},
+            "",
+            "the seconds-long version CI runs: 32x32, 64 spp, few settings",
             [&o](auto) { o.quick = true; }});
     cl.add({"res", {'r'}, "W H", "image size (default 128 128)", [&o](auto v) {
                 o.width = parseUnsigned("res", v[0], 1);
                 o.height = parseUnsigned("res", v[1], 1);
             }});
-    cl.add({"spp", {'s'}, "N", "uniform and adaptive budget (default 4096)",
-            [&o](auto v) { o.spp = parseUnsigned("spp", v[0], 1); }});
-    cl.add({"side-spp", {}, "N", "light/hemisphere, depth and roulette budget (default 1024)",
+    cl.add({"spp", {'s'}, "N", "uniform and adaptive budget (default 4096)", [&o](auto v) {
+                o.spp = parseUnsigned("spp", v[0], 1);
+            }});
+    cl.add({"side-spp",
+            {},
+            "N",
+            "light/hemisphere, depth and roulette budget (default 1024)",
             [&o](auto v) { o.sideSpp = parseUnsigned("side-spp", v[0], 1); }});
-    cl.add({"reference-spp", {}, "N", "samples per pixel of the references (default 16384)",
+    cl.add({"reference-spp",
+            {},
+            "N",
+            "samples per pixel of the references (default 16384)",
             [&o](auto v) { o.referenceSpp = parseUnsigned("reference-spp", v[0], 1); }});
 }
 
 void addStudyOptions(CommandLine& cl, StudyInvocation& s) {
-    cl.add({"name", {}, "NAME", "base name of the outputs (default: the scene file's stem)",
+    cl.add({"name",
+            {},
+            "NAME",
+            "base name of the outputs (default: the scene file's stem)",
             [&s](auto v) { s.name = v[0]; }});
-    cl.add({"out", {'o'}, "DIR", "directory for NAME.csv, .md, .gp and .svg (default .)",
+    cl.add({"out",
+            {'o'},
+            "DIR",
+            "directory for NAME.csv, .md, .gp and .svg (default .)",
             [&s](auto v) { s.outDir = v[0]; }});
-    cl.add({"cache", {}, "DIR", "reference cache (default $XDG_CACHE_HOME/vkpt, ~/.cache/vkpt)",
+    cl.add({"cache",
+            {},
+            "DIR",
+            "reference cache (default $XDG_CACHE_HOME/vkpt, ~/.cache/vkpt)",
             [&s](auto v) { s.cacheDir = v[0]; }});
-    cl.add({"fresh-references", {}, "", "make the references again even when cached",
-            [&s](auto) { s.freshReferences = true; }});
-    cl.add({"reference-on", {}, "cpu|device",
+    cl.add({"fresh-references", {}, "", "make the references again even when cached", [&s](auto) {
+                s.freshReferences = true;
+            }});
+    cl.add({"reference-on",
+            {},
+            "cpu|device",
             "render references with vkpt-ref on all cores (default) or with vkpt",
             [&s](auto v) {
                 if (v[0] != "cpu" && v[0] != "device")
@@ -84,34 +105,51 @@ void addStudyOptions(CommandLine& cl, StudyInvocation& s) {
                                      "' is not one of cpu, device");
                 s.referenceOnDevice = v[0] == "device";
             }});
-    cl.add({"only", {}, "LIST", "strategies: uniform,adaptive,sampling,depth,roulette",
-            [&s](auto v) {
-                s.families = splitList(v[0]);
-                checkFamilies(s.families);
-            }});
-    cl.add({"camera", {}, "N", "render from the scene's camera N (default: the first)",
-            [&s](auto v) { s.base.cameraIndex = int(parseUnsigned("camera", v[0])); }});
-    cl.add({"note", {}, "TEXT", "a sentence for the table (e.g. how loaded the machine was)",
+    cl.add(
+        {"only", {}, "LIST", "strategies: uniform,adaptive,sampling,depth,roulette", [&s](auto v) {
+             s.families = splitList(v[0]);
+             checkFamilies(s.families);
+         }});
+    cl.add(
+        {"camera", {}, "N", "render from the scene's camera N (default: the first)", [&s](auto v) {
+             s.base.cameraIndex = int(parseUnsigned("camera", v[0]));
+         }});
+    cl.add({"note",
+            {},
+            "TEXT",
+            "a sentence for the table (e.g. how loaded the machine was)",
             [&s](auto v) { s.note = v[0]; }});
-    cl.add({"no-plot", {}, "", "skip gnuplot (the script is still written)",
-            [&s](auto) { s.plot = false; }});
-    cl.add({"clock", {}, "wall|cpu",
+    cl.add({"no-plot", {}, "", "skip gnuplot (the script is still written)", [&s](auto) {
+                s.plot = false;
+            }});
+    cl.add({"clock",
+            {},
+            "wall|cpu",
             "time axis (default: cpu on a CPU device such as lavapipe, wall on a GPU)",
             [&s](auto v) {
                 if (v[0] != "wall" && v[0] != "cpu")
                     throw InputError("option --clock: '" + v[0] + "' is not one of wall, cpu");
                 s.clock = v[0] == "cpu" ? StudyClock::Cpu : StudyClock::Wall;
             }});
-    cl.add({"replot", {}, "", "render nothing: redraw the table and plots from NAME.csv",
-            [&s](auto) { s.replot = true; }});
+    cl.add(
+        {"replot", {}, "", "render nothing: redraw the table and plots from NAME.csv", [&s](auto) {
+             s.replot = true;
+         }});
 }
 
 void addDeviceOptions(CommandLine& cl, StudyInvocation& s) {
-    cl.add({"device", {}, "N|NAME", "Vulkan device by index or name substring",
-            [&s](auto v) { s.gpu.device = parseDeviceSelection(v[0]); }});
-    cl.add({"validate", {}, "", "enable the Vulkan validation layer (or VKPT_VALIDATION=1)",
+    cl.add({"device", {}, "N|NAME", "Vulkan device by index or name substring", [&s](auto v) {
+                s.gpu.device = parseDeviceSelection(v[0]);
+            }});
+    cl.add({"validate",
+            {},
+            "",
+            "enable the Vulkan validation layer (or VKPT_VALIDATION=1)",
             [&s](auto) { s.gpu.validation = true; }});
-    cl.add({"path-slots", {}, "N", "paths in flight per pass (default: from the device)",
+    cl.add({"path-slots",
+            {},
+            "N",
+            "paths in flight per pass (default: from the device)",
             [&s](auto v) { s.pathSlots = parseUnsigned("path-slots", v[0], 64); }});
 }
 

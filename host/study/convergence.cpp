@@ -45,11 +45,16 @@ void writePoint(JsonWriter& json, const ConvergencePoint& p) {
 
 const char* stopName(ConvergenceStop stop) {
     switch (stop) {
-    case ConvergenceStop::Budget: return "budget";
-    case ConvergenceStop::Converged: return "converged";
-    case ConvergenceStop::TargetError: return "target-error";
-    case ConvergenceStop::TimeLimit: return "time-limit";
-    case ConvergenceStop::Interrupted: return "interrupted";
+    case ConvergenceStop::Budget:
+        return "budget";
+    case ConvergenceStop::Converged:
+        return "converged";
+    case ConvergenceStop::TargetError:
+        return "target-error";
+    case ConvergenceStop::TimeLimit:
+        return "time-limit";
+    case ConvergenceStop::Interrupted:
+        return "interrupted";
     }
     return "?";
 }
@@ -91,8 +96,8 @@ const ConvergencePoint& ConvergenceTracker::record(const PassFigures& figures,
 
 double ConvergenceTracker::trackedError(const ConvergencePoint& point) const {
     if (reference_) return point.relMse;
-    const bool enoughSamples = point.figures.samplesPerPixel >= kMinSamplesForEstimate ||
-                               point.figures.activePixels == 0;
+    const bool enoughSamples =
+        point.figures.samplesPerPixel >= kMinSamplesForEstimate || point.figures.activePixels == 0;
     return enoughSamples ? point.estimatedRelMse : ConvergencePoint::kUnknown;
 }
 
@@ -103,9 +108,8 @@ bool ConvergenceTracker::targetReached() const {
 
 std::string describePoint(const ConvergencePoint& p) {
     char head[160];
-    std::snprintf(head, sizeof(head), "pass %u, %.3f s, %u spp, %u active pixels",
-                  p.figures.pass, p.figures.seconds, p.figures.samplesPerPixel,
-                  p.figures.activePixels);
+    std::snprintf(head, sizeof(head), "pass %u, %.3f s, %u spp, %u active pixels", p.figures.pass,
+                  p.figures.seconds, p.figures.samplesPerPixel, p.figures.activePixels);
     std::string line = head;
     if (std::isfinite(p.relMse))
         line += ": relMSE " + formatError(p.relMse) + ", RMSE " + formatError(p.rmse) + ",";
@@ -123,15 +127,16 @@ void writeConvergenceJson(JsonWriter& json, const ConvergenceReport& r) {
         json.null();
     else
         json.value(r.settings.referencePath);
-    writeNumberOrNull(json, "targetError", r.settings.targetError > 0.0 ? r.settings.targetError
-                                                                         : std::nan(""));
-    writeNumberOrNull(json, "timeLimit", r.settings.timeLimitSeconds > 0.0
-                                             ? r.settings.timeLimitSeconds
-                                             : std::nan(""));
+    writeNumberOrNull(json, "targetError",
+                      r.settings.targetError > 0.0 ? r.settings.targetError : std::nan(""));
+    writeNumberOrNull(json, "timeLimit",
+                      r.settings.timeLimitSeconds > 0.0 ? r.settings.timeLimitSeconds
+                                                        : std::nan(""));
     json.field("relMseEpsilon", kRelMseEpsilon).field("stop", stopName(r.stop));
     json.field("targetReached", r.targetReached);
     json.key("curve").beginArray();
-    for (const ConvergencePoint& point : r.curve) writePoint(json, point);
+    for (const ConvergencePoint& point : r.curve)
+        writePoint(json, point);
     json.endArray();
     json.endObject();
 }

@@ -22,7 +22,9 @@ struct ConvergenceSettings {
     double targetError = 0.0;      // --target-error: a relMSE; 0 = none
     double timeLimitSeconds = 0.0; // --time-limit; 0 = none
 
-    bool any() const { return !referencePath.empty() || targetError > 0.0 || timeLimitSeconds > 0.0; }
+    bool any() const {
+        return !referencePath.empty() || targetError > 0.0 || timeLimitSeconds > 0.0;
+    }
     // Only these need the image after each pass (one readback per pass).
     bool needsPixels() const { return !referencePath.empty() || targetError > 0.0; }
 };

@@ -22,7 +22,8 @@ struct Fnv1a {
     std::uint64_t hash = 0xcbf29ce484222325ull;
     void add(const void* data, std::size_t size) {
         const auto* bytes = static_cast<const unsigned char*>(data);
-        for (std::size_t i = 0; i < size; ++i) hash = (hash ^ bytes[i]) * 0x100000001b3ull;
+        for (std::size_t i = 0; i < size; ++i)
+            hash = (hash ^ bytes[i]) * 0x100000001b3ull;
     }
     void add(const std::string& text) { add(text.data(), text.size()); }
 };
@@ -32,8 +33,8 @@ std::string settingsKey(const RenderSettings& s) {
     key << "v" << kReferenceCacheVersion << " " << s.width << "x" << s.height << " spp "
         << s.samplesPerPixel << " seed " << s.seed << " depth " << s.maxDepth << " rr "
         << s.rrStartDepth << " integrator " << int(s.integrator) << " sampling "
-        << int(s.lightSampling) << " lights " << s.lightSamples << " filter "
-        << int(s.pathFilter) << " camera " << (s.cameraIndex ? *s.cameraIndex : -1);
+        << int(s.lightSampling) << " lights " << s.lightSamples << " filter " << int(s.pathFilter)
+        << " camera " << (s.cameraIndex ? *s.cameraIndex : -1);
     if (s.clamp != 0.0f) key << " clamp " << s.clamp; // absent when off: older keys stay valid
     return key.str();
 }

@@ -52,9 +52,8 @@ double curveSeconds(const ConvergencePoint& point, StudyClock clock) {
 }
 
 double timeToReach(const std::vector<ConvergencePoint>& curve, double target, StudyClock clock) {
-    return crossing(curve, target, [clock](const ConvergencePoint& p) {
-        return curveSeconds(p, clock);
-    });
+    return crossing(curve, target,
+                    [clock](const ConvergencePoint& p) { return curveSeconds(p, clock); });
 }
 
 double samplesToReach(const std::vector<ConvergencePoint>& curve, double target) {
@@ -70,8 +69,8 @@ std::vector<ConvergencePoint> curvePrefix(const std::vector<ConvergencePoint>& c
     return prefix;
 }
 
-int fastestToReach(const std::vector<RunResult>& results, const std::string& family,
-                   double target, StudyClock clock) {
+int fastestToReach(const std::vector<RunResult>& results, const std::string& family, double target,
+                   StudyClock clock) {
     return bestRun(results, family,
                    [&](const RunResult& r) { return timeToReach(r.curve, target, clock); });
 }

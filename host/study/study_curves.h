@@ -42,8 +42,8 @@ std::vector<ConvergencePoint> curvePrefix(const std::vector<ConvergencePoint>& c
 
 // The run of `family` that reaches `target` first in time (clock) or, without a clock, with
 // the fewest samples: its index in `results`, or -1 when none does.
-int fastestToReach(const std::vector<RunResult>& results, const std::string& family,
-                   double target, StudyClock clock);
+int fastestToReach(const std::vector<RunResult>& results, const std::string& family, double target,
+                   StudyClock clock);
 int fewestSamplesToReach(const std::vector<RunResult>& results, const std::string& family,
                          double target);
 

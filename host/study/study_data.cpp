@@ -19,8 +19,27 @@ const char* const kCsvHeader =
     "mean_half_width,estimated_rel_mse,final,shared_with";
 
 enum Column {
-    kScene, kFamily, kLabel, kReference, kFlags, kBatch, kTolerance, kSetup, kPass, kRender,
-    kCpu, kWall, kSpp, kSamples, kActive, kRmse, kRelMse, kHalfWidth, kEstimate, kFinal, kShared,
+    kScene,
+    kFamily,
+    kLabel,
+    kReference,
+    kFlags,
+    kBatch,
+    kTolerance,
+    kSetup,
+    kPass,
+    kRender,
+    kCpu,
+    kWall,
+    kSpp,
+    kSamples,
+    kActive,
+    kRmse,
+    kRelMse,
+    kHalfWidth,
+    kEstimate,
+    kFinal,
+    kShared,
     kColumns
 };
 
@@ -33,7 +52,8 @@ std::string number(double value) {
 
 std::string quoted(const std::string& text) {
     std::string out = "\"";
-    for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    for (char c : text)
+        out += c == '"' ? std::string("\"\"") : std::string(1, c);
     return out + "\"";
 }
 
@@ -45,11 +65,11 @@ void writeRow(std::ostream& out, const StudySummary& summary, const RunResult& r
         << (a.enabled ? std::to_string(a.batchSize) : "") << ","
         << (a.enabled ? number(a.tolerance) : "") << "," << number(r.setupSeconds) << ","
         << p.figures.pass << "," << number(p.figures.renderSeconds) << ","
-        << number(p.figures.cpuSeconds) << "," << number(p.figures.seconds) << "," << p.figures.samplesPerPixel << ","
-        << p.figures.samplesTaken << "," << p.figures.activePixels << "," << number(p.rmse)
-        << "," << number(p.relMse) << "," << number(p.meanHalfWidth) << ","
-        << number(p.estimatedRelMse) << "," << (last ? 1 : 0) << "," << quoted(r.sharedWith)
-        << "\n";
+        << number(p.figures.cpuSeconds) << "," << number(p.figures.seconds) << ","
+        << p.figures.samplesPerPixel << "," << p.figures.samplesTaken << ","
+        << p.figures.activePixels << "," << number(p.rmse) << "," << number(p.relMse) << ","
+        << number(p.meanHalfWidth) << "," << number(p.estimatedRelMse) << "," << (last ? 1 : 0)
+        << "," << quoted(r.sharedWith) << "\n";
 }
 
 // Fields of one CSV line: commas separate, double quotes enclose, "" is a quote.
@@ -151,8 +171,8 @@ void readMeta(std::istream& meta, StudySummary& summary) {
         }
         if (key == "size") fields >> summary.width >> summary.height;
         if (key == "studySeconds") fields >> summary.studySeconds;
-        if (key == "clock") summary.clock = (fields >> rest, rest) == "cpu" ? StudyClock::Cpu
-                                                                           : StudyClock::Wall;
+        if (key == "clock")
+            summary.clock = (fields >> rest, rest) == "cpu" ? StudyClock::Cpu : StudyClock::Wall;
         std::getline(fields >> std::ws, rest);
         if (key == "scene") summary.scene = rest;
         if (key == "machine") summary.machine = rest;

@@ -62,8 +62,7 @@ void writeHeadlineRows(std::ostream& out, const StudySummary& summary) {
     for (const RunResult& r : summary.results)
         out << "| " << strategyCell(r) << " | `" << r.run.flags << "` | "
             << reachCell(r, summary, kHeadlineErrors[0]) << " | "
-            << reachCell(r, summary, kHeadlineErrors[1]) << " | " << lastCell(r, summary)
-            << " |\n";
+            << reachCell(r, summary, kHeadlineErrors[1]) << " | " << lastCell(r, summary) << " |\n";
     for (const UnavailableStrategy& u : unavailableStrategies())
         out << "| " << u.family << " | — | " << u.reason << " | — | — |\n";
 }
@@ -76,13 +75,74 @@ double meanSetupSeconds(const StudySummary& summary) {
     return runs ? total / runs : 0.0;
 }
 
+// Where uniform and every adaptive run took identical samples (no adaptive pixel had stopped
+// yet), their times differ by measurement noise alone: the largest such sample count and the
+// range of the runs' times there.
+struct TimingNoise {
+    std::uint32_t spp = 0;
+    double low = 0.0, high = 0.0;
+    int runs = 0;
+};
+
+bool allPixelsActive(const ConvergencePoint& p, const StudySummary& summary) {
+    return double(p.figures.activePixels) == pixels(summary);
+}
+
+const ConvergencePoint* pointAt(const RunResult& r, std::uint32_t spp,
+                                const StudySummary& summary) {
+    for (const ConvergencePoint& p : r.curve)
+        if (p.figures.samplesPerPixel == spp && allPixelsActive(p, summary)) return &p;
+    return nullptr;
+}
+
+TimingNoise timingNoise(const StudySummary& summary) {
+    TimingNoise noise;
+    for (const RunResult& uniform : summary.results) {
+        if (uniform.run.family != "uniform") continue;
+        for (const ConvergencePoint& u : uniform.curve) {
+            std::vector<double> times{pointSeconds(u, summary)};
+            for (const RunResult& r : summary.results)
+                if (r.run.family == "adaptive") {
+                    const ConvergencePoint* p = pointAt(r, u.figures.samplesPerPixel, summary);
+                    times.push_back(p ? pointSeconds(*p, summary) : std::nan(""));
+                }
+            if (times.size() < 2 ||
+                std::any_of(times.begin(), times.end(), [](double t) { return !std::isfinite(t); }))
+                continue;
+            noise.spp = u.figures.samplesPerPixel;
+            noise.low = *std::min_element(times.begin(), times.end());
+            noise.high = *std::max_element(times.begin(), times.end());
+            noise.runs = int(times.size());
+        }
+    }
+    return noise;
+}
+
+void writeTimingNoise(std::ostream& out, const StudySummary& summary) {
+    const TimingNoise noise = timingNoise(summary);
+    if (noise.runs < 2) return;
+    out << "\nTiming noise: at " << noise.spp << " spp, before any adaptive pixel had stopped, "
+        << "the " << noise.runs << " uniform and adaptive runs had taken identical samples in "
+        << seconds(noise.low) << " to " << seconds(noise.high)
+        << format(" (±%.0f %% of their middle)",
+                  100.0 * (noise.high - noise.low) / (noise.high + noise.low))
+        << "; time ratios closer to 1 than that are not a measured difference.\n";
+}
+
 void writeSpeedup(std::ostream& out, const StudySummary& summary, const AdaptiveSpeedup& s) {
     const double spp = pixels(summary);
+    if (std::abs(s.inSamples() - 1.0) < 0.005) {
+        out << "1.00× — reached before any adaptive pixel stopped (" << s.fewestSamplesLabel << ": "
+            << format("%.0f", s.adaptiveSamples / spp)
+            << " samples/pixel, as uniform), so adaptive sampling is uniform sampling here; the "
+            << format("%.2f×", s.inTime()) << " in " << clockName(summary.clock)
+            << " time is timing noise\n";
+        return;
+    }
     out << format("**%.2f×** in ", s.inTime()) << clockName(summary.clock) << " time ("
         << s.fastestLabel << ": " << seconds(s.adaptiveSeconds) << " against "
-        << seconds(s.uniformSeconds) << "); " << format("%.2f×", s.inSamples())
-        << " in samples (" << s.fewestSamplesLabel << ": "
-        << format("%.0f", s.adaptiveSamples / spp) << " against "
+        << seconds(s.uniformSeconds) << "); " << format("%.2f×", s.inSamples()) << " in samples ("
+        << s.fewestSamplesLabel << ": " << format("%.0f", s.adaptiveSamples / spp) << " against "
         << format("%.0f", s.uniformSamples / spp) << " samples/pixel)\n";
 }
 
@@ -98,7 +158,7 @@ void writeSpeedups(std::ostream& out, const StudySummary& summary) {
         else
             out << "not measured: "
                 << (std::isfinite(s.uniformSeconds) ? "no adaptive setting reached it"
-                                                     : "uniform sampling did not reach it")
+                                                    : "uniform sampling did not reach it")
                 << " within the budget\n";
     }
 }
@@ -122,9 +182,8 @@ void writeReferences(std::ostream& out, const StudySummary& summary) {
         out << "| " << (r.kind == StudyReference::Full ? "full (path tracer)" : "direct lighting")
             << " | " << r.renderer << " | " << r.spp << " | "
             << (r.kind == StudyReference::Full ? std::to_string(r.maxDepth) : "1") << " | "
-            << kReferenceSeed << " | "
-            << seconds(r.seconds) << (r.cached ? " (cached)" : "") << " | "
-            << format("%.2e", r.estimatedRelMse) << " |\n";
+            << kReferenceSeed << " | " << seconds(r.seconds) << (r.cached ? " (cached)" : "")
+            << " | " << format("%.2e", r.estimatedRelMse) << " |\n";
 }
 
 // ---- gnuplot ----
@@ -178,7 +237,8 @@ void writeUniformMarks(std::ostream& out, const StudySummary& summary) {
             if (n < next || !std::isfinite(p.relMse)) continue;
             out << format("%.6g", pointSeconds(p, summary)) << " " << format("%.6g", p.relMse)
                 << " \"" << n << " spp\"\n";
-            while (next <= n) next *= 4;
+            while (next <= n)
+                next *= 4;
         }
     }
     out << "EOD\n";
@@ -225,10 +285,13 @@ void writeHeadlinePlot(std::ostream& out, const StudySummary& summary,
         << "): uniform against adaptive sampling'\n";
     out << "plot " << familyCurves(summary, "uniform") << ", \\\n     $uniformMarks using 1:2:3 "
         << "with labels offset char -1.2,-0.8 font ',8' notitle";
-    for (const std::string& b : fronts)
+    for (std::size_t i = 0; i < fronts.size(); ++i) {
+        const std::string& b = fronts[i];
         out << ", \\\n     $adaptive" << b << " using 1:2 with linespoints lw 2 pt 7 title "
             << "'adaptive, batch " << b << " (label: tolerance)', \\\n     $adaptive" << b
-            << " using 1:2:3 with labels offset char 1.5,0.6 font ',8' notitle";
+            << " using 1:2:3 with labels offset char " << (i % 2 ? "1.5,-0.7" : "-1.5,0.8")
+            << " font ',8' notitle";
+    }
     out << ", \\\n     " << floorClause(summary, StudyReference::Full) << "\n";
 }
 
@@ -258,6 +321,7 @@ void writeStudyTable(std::ostream& out, const StudySummary& summary, const std::
         << ")\n\n";
     writeHeadlineRows(out, summary);
     writeSpeedups(out, summary);
+    writeTimingNoise(out, summary);
     writeReferences(out, summary);
     out << "\nAll strategies: ![" << summary.name << ": every strategy](" << plotFile << ")\n\n";
     out << "The study took " << seconds(summary.studySeconds)

@@ -97,8 +97,8 @@ TEST_F(ConvergenceRender, AReferenceGivesTheErrorAfterEveryPassAtLogSpacedCounts
         EXPECT_TRUE(std::isfinite(point.relMse) && std::isfinite(point.rmse));
         EXPECT_GE(point.figures.seconds, point.figures.renderSeconds);
     }
-    EXPECT_EQ(spp, (std::vector<std::uint32_t>{1, 2, 3, 4, 5, 6, 7, 8, 10, 12, 15, 18, 22, 27,
-                                               33, 41, 51, 63, 64}));
+    EXPECT_EQ(spp, (std::vector<std::uint32_t>{1, 2, 3, 4, 5, 6, 7, 8, 10, 12, 15, 18, 22, 27, 33,
+                                               41, 51, 63, 64}));
     const ConvergencePoint& last = tracker.curve().back();
     EXPECT_LT(last.relMse, tracker.curve().front().relMse / 10.0);
     EXPECT_EQ(last.figures.samplesTaken, 64u * 32 * 32);

@@ -43,7 +43,8 @@ TEST(PassSchedule, AdaptivePassesEndWhereTheStoppingRuleIsTested) {
 TEST(PassSchedule, MeasuredRendersGrowTheirPassesGeometrically) {
     std::vector<std::uint32_t> ends;
     std::uint32_t done = 0;
-    while (done < 20) ends.push_back(done += samplesForGeometricGrowth(64, done));
+    while (done < 20)
+        ends.push_back(done += samplesForGeometricGrowth(64, done));
     EXPECT_EQ(ends, (std::vector<std::uint32_t>{1, 2, 3, 4, 5, 6, 7, 8, 10, 12, 15, 18, 22}));
     EXPECT_EQ(samplesForGeometricGrowth(4, 1000), 4u); // never above the schedule's k
 }
@@ -51,7 +52,7 @@ TEST(PassSchedule, MeasuredRendersGrowTheirPassesGeometrically) {
 TEST(PassSchedule, ATimeLimitCapsAPassToTheTimeLeft) {
     // 1000 pixels at 1 µs per pixel-sample: 1 ms per sample per pixel.
     EXPECT_EQ(samplesWithinTime(64, 1000, 1e-6, 0.010), 10u);
-    EXPECT_EQ(samplesWithinTime(64, 1000, 1e-6, 1.0), 64u);  // the schedule's k fits
+    EXPECT_EQ(samplesWithinTime(64, 1000, 1e-6, 1.0), 64u);   // the schedule's k fits
     EXPECT_EQ(samplesWithinTime(64, 1000, 1e-6, 0.0001), 1u); // at least one sample
     EXPECT_EQ(samplesWithinTime(64, 1000, 1e-6, -1.0), 1u);   // past the limit already
     EXPECT_EQ(samplesWithinTime(64, 1000, 0.0, 0.010), 64u);  // no rate yet: the first pass

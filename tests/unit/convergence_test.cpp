@@ -21,7 +21,8 @@ namespace {
 RenderOutput render(std::uint32_t n, float value, float variance) {
     RenderOutput output;
     output.image = Image(4, 4);
-    for (glm::vec3& p : output.image.pixels) p = glm::vec3(value);
+    for (glm::vec3& p : output.image.pixels)
+        p = glm::vec3(value);
     output.sampleCounts.assign(16, n);
     output.luminanceMean.assign(16, 1.0f);
     output.luminanceM2.assign(16, variance * float(n - 1));
@@ -30,7 +31,8 @@ RenderOutput render(std::uint32_t n, float value, float variance) {
 
 Image grey(float value) {
     Image image(4, 4);
-    for (glm::vec3& p : image.pixels) p = glm::vec3(value);
+    for (glm::vec3& p : image.pixels)
+        p = glm::vec3(value);
     return image;
 }
 
@@ -105,8 +107,7 @@ TEST(ConvergenceTracker, NoTargetIsNeverReached) {
 class ReferenceFile : public ::testing::Test {
 protected:
     std::string path(const std::string& name) {
-        return (std::filesystem::temp_directory_path() /
-                ("vkpt_convergence_test_" + name + ".pfm"))
+        return (std::filesystem::temp_directory_path() / ("vkpt_convergence_test_" + name + ".pfm"))
             .string();
     }
 };
@@ -145,8 +146,8 @@ TEST(ConvergenceJson, HoldsTheSettingsTheStopAndEveryPoint) {
     const RenderOutput output = render(16, 1.1f, 0.5f);
     tracker.record(pass(1, 1), nullptr);
     tracker.record(pass(2, 16), &output);
-    ConvergenceReport report{{"ref.pfm", 0.02, 0.0}, ConvergenceStop::TargetError, true,
-                             tracker.curve()};
+    ConvergenceReport report{
+        {"ref.pfm", 0.02, 0.0}, ConvergenceStop::TargetError, true, tracker.curve()};
     std::ostringstream out;
     JsonWriter json(out, 0);
     json.beginObject();

@@ -15,7 +15,8 @@ namespace {
 
 Image filled(std::uint32_t w, std::uint32_t h, glm::vec3 value) {
     Image image(w, h);
-    for (glm::vec3& p : image.pixels) p = value;
+    for (glm::vec3& p : image.pixels)
+        p = value;
     return image;
 }
 

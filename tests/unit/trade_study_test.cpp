@@ -162,7 +162,8 @@ StudySummary sampleSummary() {
     reference.seconds = 3.25;
     reference.estimatedRelMse = 1.5e-5;
     summary.references.push_back(reference);
-    summary.results.push_back(result("uniform", "uniform", {point(0.1, 0.5, 1), point(1, 4e-3, 9)}));
+    summary.results.push_back(
+        result("uniform", "uniform", {point(0.1, 0.5, 1), point(1, 4e-3, 9)}));
     RunResult adaptive = result("adaptive", "adaptive b16 tol 0.1", {point(0.5, 2e-3, 7)});
     adaptive.run.settings.adaptive = {true, 16, 0.1f, 64};
     adaptive.run.flags = "--spp 64 --adaptive 16 0.1";
