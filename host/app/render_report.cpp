@@ -31,6 +31,7 @@ void writeSettings(JsonWriter& json, const RenderSettings& s) {
     json.field("adaptive", s.adaptive.enabled).field("adaptiveBatch", s.adaptive.batchSize);
     json.field("adaptiveTolerance", s.adaptive.tolerance);
     json.field("adaptiveMinSamples", s.adaptive.minSamples);
+    json.field("clamp", s.clamp); // 0 = off
     json.endObject();
 }
 
