@@ -17,11 +17,13 @@ namespace {
 struct Walk {
     const RayQuery& ray;
     glm::vec3 invDirection;
+    gpu::ShearedRay sheared; // the watertight test's per-ray shear, computed once per walk
     ClosestHit best;
     TraversalCounters* counters;
 
     Walk(const RayQuery& r, TraversalCounters* c)
-        : ray(r), invDirection(gpu::safeInverseDirection(r.direction)), counters(c) {
+        : ray(r), invDirection(gpu::safeInverseDirection(r.direction)),
+          sheared(gpu::shearRay(r.direction)), counters(c) {
         best.t = r.tMax;
     }
 
@@ -35,8 +37,8 @@ struct Walk {
     bool testTriangle(std::span<const gpu::Triangle> triangles, std::uint32_t index) {
         if (counters) ++counters->triangleTests;
         const gpu::Triangle& tri = triangles[index];
-        gpu::TriangleHit h = gpu::intersectTriangle(ray.origin, ray.direction, tri.v0, tri.v1,
-                                                    tri.v2, ray.tMin, best.t);
+        gpu::TriangleHit h = gpu::intersectTriangleWatertight(ray.origin, sheared, tri.v0, tri.v1,
+                                                              tri.v2, ray.tMin, best.t);
         if (!h.hit) return false;
         best = {h.t, h.u, h.v, index, true};
         return true;

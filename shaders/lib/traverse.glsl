@@ -21,6 +21,8 @@ struct Traversal {
 // proves index >= nodeCount, not index == BVH_END.
 Traversal walkBvh(vec3 origin, vec3 direction, float tMin, float tMax, bool stopAtFirst) {
     vec3 invDirection = safeInverseDirection(direction);
+    // The watertight test's shear depends on the ray alone: once per walk, not per triangle.
+    ShearedRay sheared = shearRay(direction);
     Traversal walk;
     walk.hit = HitRecord(tMax, 0.0, 0.0, NO_HIT);
     walk.nodesVisited = 0u;
@@ -42,7 +44,7 @@ Traversal walkBvh(vec3 origin, vec3 direction, float tMin, float tMax, bool stop
             ++walk.triangleTests;
             Triangle tri = triangles[i];
             TriangleHit h =
-                intersectTriangle(origin, direction, tri.v0, tri.v1, tri.v2, tMin, walk.hit.t);
+                intersectTriangleWatertight(origin, sheared, tri.v0, tri.v1, tri.v2, tMin, walk.hit.t);
             if (!h.hit) continue;
             walk.hit = HitRecord(h.t, h.u, h.v, i);
             if (stopAtFirst) break;

@@ -57,17 +57,22 @@ VKPT_FN float intersectBox(vec3 origin, vec3 invDirection, vec3 boxMin, vec3 box
     return enter <= exit ? enter : VKPT_FAR;
 }
 
+VKPT_FN TriangleHit triangleMiss(float tMax) {
+    TriangleHit miss;
+    miss.t = tMax;
+    miss.u = 0.0f;
+    miss.v = 0.0f;
+    miss.hit = false;
+    return miss;
+}
+
 // Möller and Trumbore, "Fast, Minimum Storage Ray/Triangle Intersection", JGT 2(1), 1997.
 // Edges count as inside, but two triangles sharing an edge compute it differently, so a ray
 // aimed at the edge can miss both (tests/extremes/watertight_test.cpp measured leaks of a few
 // per cent for rays aimed exactly at edges). Kept to measure the watertight test's cost.
 VKPT_FN TriangleHit intersectTriangleMollerTrumbore(vec3 origin, vec3 direction, vec3 v0, vec3 v1,
                                                     vec3 v2, float tMin, float tMax) {
-    TriangleHit result;
-    result.t = tMax;
-    result.u = 0.0f;
-    result.v = 0.0f;
-    result.hit = false;
+    TriangleHit result = triangleMiss(tMax);
     vec3 e1 = v1 - v0;
     vec3 e2 = v2 - v0;
     vec3 p = cross(direction, e2);
@@ -133,11 +138,7 @@ VKPT_FN float edgeFunction(vec3 a, vec3 b) {
 
 VKPT_FN TriangleHit intersectTriangleWatertight(vec3 origin, ShearedRay ray, vec3 v0, vec3 v1,
                                                 vec3 v2, float tMin, float tMax) {
-    TriangleHit result;
-    result.t = tMax;
-    result.u = 0.0f;
-    result.v = 0.0f;
-    result.hit = false;
+    TriangleHit result = triangleMiss(tMax);
     vec3 a = shearVertex(ray, v0 - origin);
     vec3 b = shearVertex(ray, v1 - origin);
     vec3 c = shearVertex(ray, v2 - origin);
