@@ -2,12 +2,15 @@
 """generate_loader_scenes.py — writes the small glTF files that test the scene loader.
 
 scenes/loader/   valid files, each exercising one way of storing geometry (index types,
-                 non-indexed, missing normals, interleaved vertices, .glb, transforms, ...).
+                 non-indexed, missing normals, interleaved vertices, .glb, transforms, ...) or
+                 one part of the scene model (textures, texture transforms, spheres, lights,
+                 KHR_materials_specular).
 scenes/invalid/  broken files, one per kind of bad input; loading each must end with one
                  InputError line naming the file and the place.
 
 Python 3 standard library only, and deterministic: running it again rewrites the same bytes.
-The outputs are committed; tests/unit/gltf_loader_test.cpp states what each must load to.
+The outputs are committed; tests/unit/gltf_loader_test.cpp and gltf_extensions_test.cpp state
+what each must load to.
 """
 
 import base64
@@ -15,6 +18,7 @@ import json
 import math
 import re
 import struct
+import zlib
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent
@@ -27,6 +31,8 @@ GENERATOR = "vkpt scenes/generate_loader_scenes.py"
 BYTE, UNSIGNED_BYTE, SHORT, UNSIGNED_SHORT, UNSIGNED_INT, FLOAT = 5120, 5121, 5122, 5123, 5125, 5126
 ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER = 34962, 34963
 POINTS, TRIANGLES = 0, 4
+NEAREST, LINEAR = 9728, 9729
+REPEAT, CLAMP_TO_EDGE, MIRRORED_REPEAT = 10497, 33071, 33648
 
 # The unit quad in the z = 0 plane, counter-clockwise seen from +Z.
 QUAD_POSITIONS = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)]
@@ -47,8 +53,33 @@ def unsigned(values, component_type):
     return struct.pack("<%d%s" % (len(values), code), *values)
 
 
-def data_uri(data):
-    return "data:application/octet-stream;base64," + base64.b64encode(data).decode("ascii")
+def data_uri(data, mime="application/octet-stream"):
+    return "data:%s;base64,%s" % (mime, base64.b64encode(data).decode("ascii"))
+
+
+def png_bytes(rows, compressed=None):
+    """An 8-bit RGBA PNG of `rows` (lists of (r, g, b, a)), row 0 first, unfiltered; the IDAT
+    data replaced by `compressed` if given."""
+    height, width = len(rows), len(rows[0])
+    raw = b"".join(b"\0" + bytes(c for texel in row for c in texel) for row in rows)
+    if compressed is None:
+        compressed = zlib.compress(raw, 9)
+
+    def chunk(tag, data):
+        return (struct.pack(">I", len(data)) + tag + data +
+                struct.pack(">I", zlib.crc32(tag + data) & 0xFFFFFFFF))
+
+    header = struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0)  # 8 bits, RGBA
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", compressed) +
+            chunk(b"IEND", b""))
+
+
+# A 3 x 2 image whose every texel differs, so that tests see the order of rows and columns:
+# row 0 (v = 0) red, green, blue; row 1 yellow, cyan and a dark grey, with four alphas.
+TEXTURE_ROWS = [[(255, 0, 0, 255), (0, 255, 0, 255), (0, 0, 255, 255)],
+                [(255, 255, 0, 128), (0, 255, 255, 64), (10, 20, 30, 40)]]
+TEXTURE_PNG = png_bytes(TEXTURE_ROWS)
+QUAD_TEXCOORDS = [(0, 0), (1, 0), (1, 1), (0, 1)]
 
 
 class Gltf:
@@ -94,6 +125,14 @@ class Gltf:
         return self.accessor(self.view(floats(values), target=ARRAY_BUFFER), FLOAT, len(values),
                              "VEC3")
 
+    def texcoords(self, values, component_type=FLOAT):
+        if component_type == FLOAT:
+            return self.accessor(self.view(floats(values), target=ARRAY_BUFFER), FLOAT,
+                                 len(values), "VEC2")
+        data = unsigned([c for v in values for c in v], component_type)
+        return self.accessor(self.view(data, target=ARRAY_BUFFER), component_type, len(values),
+                             "VEC2", normalized=True)
+
     def indices(self, values, component_type=UNSIGNED_SHORT):
         view = self.view(unsigned(values, component_type), target=ELEMENT_ARRAY_BUFFER)
         return self.accessor(view, component_type, len(values), "SCALAR")
@@ -127,10 +166,12 @@ class Gltf:
         return bytes(self.data)
 
 
-def primitive(position, normal=None, indices=None, material=None, mode=None):
+def primitive(position, normal=None, indices=None, material=None, mode=None, texcoord=None):
     result = {"attributes": {"POSITION": position}}
     if normal is not None:
         result["attributes"]["NORMAL"] = normal
+    if texcoord is not None:
+        result["attributes"]["TEXCOORD_0"] = texcoord
     if indices is not None:
         result["indices"] = indices
     if material is not None:
@@ -309,8 +350,191 @@ def cameras():
 
 def extensions():
     gltf = quad(UNSIGNED_SHORT)
-    gltf.doc["extensionsUsed"] = ["KHR_materials_emissive_strength", "KHR_texture_transform",
-                                  "NV_materials_mdl", "KHR_texture_transform"]
+    gltf.doc["extensionsUsed"] = ["KHR_materials_emissive_strength", "EXT_mesh_gpu_instancing",
+                                  "NV_materials_mdl", "EXT_mesh_gpu_instancing"]
+    return gltf
+
+
+def textured_quad_mesh(gltf, material):
+    return primitive(gltf.positions(QUAD_POSITIONS), gltf.normals(QUAD_NORMALS),
+                     gltf.indices(QUAD_INDICES), material=material,
+                     texcoord=gltf.texcoords(QUAD_TEXCOORDS))
+
+
+def textured():
+    # Material 0 reads image 0 through two textures (one image, decoded once); material 1 has
+    # no texture. Primitive 0: the textured quad (float TEXCOORD_0); primitive 1: a triangle
+    # at z = 1 without TEXCOORD_0; primitives 2 and 3: triangles at z = 2 and 3 with normalized
+    # UNSIGNED_BYTE and UNSIGNED_SHORT TEXCOORD_0. Image 1 is no PNG at all, but no material
+    # uses its texture, so it is never decoded.
+    gltf = Gltf()
+    gltf.doc["samplers"] = [{"magFilter": NEAREST, "minFilter": LINEAR,
+                             "wrapS": CLAMP_TO_EDGE, "wrapT": MIRRORED_REPEAT}]
+    gltf.doc["images"] = [{"name": "texels", "uri": data_uri(TEXTURE_PNG, "image/png")},
+                          {"name": "unused", "uri": data_uri(b"not an image", "image/png")}]
+    gltf.doc["textures"] = [{"sampler": 0, "source": 0}, {"source": 0}, {"source": 1}]
+    gltf.doc["materials"] = [
+        {"name": "textured", "pbrMetallicRoughness": {
+            "baseColorTexture": {"index": 0}, "metallicRoughnessTexture": {"index": 1}}},
+        {"name": "plain"},
+    ]
+    lifted = [[(x, y, z) for x, y, _ in TRIANGLE_POSITIONS] for z in (1, 2, 3)]
+    prims = [textured_quad_mesh(gltf, 0),
+             primitive(gltf.positions(lifted[0]), material=1),
+             primitive(gltf.positions(lifted[1]), material=1,
+                       texcoord=gltf.texcoords([(255, 0), (0, 255), (51, 102)], UNSIGNED_BYTE)),
+             primitive(gltf.positions(lifted[2]), material=1,
+                       texcoord=gltf.texcoords([(65535, 13107), (0, 0), (32768, 65535)],
+                                               UNSIGNED_SHORT))]
+    gltf.scene([gltf.node(mesh=gltf.mesh(prims))])
+    return gltf
+
+
+def textured_glb():
+    # The image in a buffer view of the BIN chunk, as exporters write .glb files.
+    gltf = Gltf()
+    image_view = gltf.view(TEXTURE_PNG)
+    gltf.doc["images"] = [{"bufferView": image_view, "mimeType": "image/png"}]
+    gltf.doc["textures"] = [{"source": 0}]
+    gltf.doc["materials"] = [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}},
+                              "emissiveTexture": {"index": 0}, "emissiveFactor": [1, 1, 1]}]
+    gltf.scene([gltf.node(mesh=gltf.mesh([textured_quad_mesh(gltf, 0)]))])
+    return gltf
+
+
+def texture_transform():
+    # The image as an external file (texture_3x2.png). Emissive: offset (0.5, 0.25), rotation
+    # pi/2, scale (2, 3). Base colour: the extension's texCoord 0 overrides the textureInfo's 1.
+    gltf = Gltf()
+    gltf.doc["extensionsUsed"] = ["KHR_texture_transform"]
+    gltf.doc["images"] = [{"uri": "texture_3x2.png"}]
+    gltf.doc["textures"] = [{"source": 0}]
+    transform = {"offset": [0.5, 0.25], "rotation": math.pi / 2, "scale": [2, 3]}
+    gltf.doc["materials"] = [{
+        "pbrMetallicRoughness": {"baseColorTexture": {
+            "index": 0, "texCoord": 1,
+            "extensions": {"KHR_texture_transform": {"scale": [4, 4], "texCoord": 0}}}},
+        "emissiveTexture": {"index": 0, "extensions": {"KHR_texture_transform": transform}},
+        "emissiveFactor": [1, 1, 1]}]
+    gltf.scene([gltf.node(mesh=gltf.mesh([textured_quad_mesh(gltf, 0)]))])
+    return gltf
+
+
+def write_texture_transform(path, gltf):
+    write(path.parent / "texture_3x2.png", TEXTURE_PNG)
+    write_embedded(path, gltf)
+
+
+def sphere_shapes():
+    """KHR_implicit_shapes: shape 0 a sphere of radius 0.5, shape 1 a box."""
+    return {"shapes": [{"type": "sphere", "sphere": {"radius": 0.5}},
+                       {"type": "box", "box": {"size": [1, 1, 1]}}]}
+
+
+def collider(shape):
+    return {"KHR_physics_rigid_bodies": {"collider": {"geometry": {"shape": shape}}}}
+
+
+def spheres():
+    # Node "own": vkpt's reference, scale 2 at (1, 2, 3), material 1 (emissive): radius 1.
+    # Node "collider": a mesh-less collider under a parent at (0, 0, -10), rotated and scaled
+    # by -3 on every axis: centre (0, 0, -10), radius 1.5, the default material.
+    # Not drawn: a collider on a node with a mesh, a box collider, a zero-scale sphere.
+    gltf = Gltf()
+    gltf.doc["extensionsUsed"] = ["KHR_implicit_shapes", "KHR_physics_rigid_bodies"]
+    gltf.doc["extensions"] = {"KHR_implicit_shapes": sphere_shapes()}
+    gltf.doc["materials"] = [{"name": "floor", "pbrMetallicRoughness": {"metallicFactor": 0}},
+                             {"name": "glowing", "emissiveFactor": [1, 1, 1],
+                              "pbrMetallicRoughness": {"metallicFactor": 0}}]
+    floor = gltf.mesh([primitive(gltf.positions(QUAD_POSITIONS), indices=gltf.indices(QUAD_INDICES),
+                                 material=0)])
+    own = gltf.node(name="own", translation=[1, 2, 3], scale=[2, 2, 2],
+                    extensions={"KHR_implicit_shapes": {"shape": 0}},
+                    extras={"vkpt_material": 1})
+    inner = gltf.node(name="collider", rotation=[0, S45, 0, S45], scale=[-3, -3, -3],
+                      extensions=collider(0))
+    parent = gltf.node(name="parent", translation=[0, 0, -10], children=[inner])
+    with_mesh = gltf.node(name="collider_with_mesh", mesh=floor, extensions=collider(0))
+    box = gltf.node(name="box_collider", extensions=collider(1))
+    disabled = gltf.node(name="zero_scale", scale=[0, 0, 0],
+                         extensions={"KHR_implicit_shapes": {"shape": 0}})
+    gltf.scene([own, parent, with_mesh, box, disabled])
+    return gltf
+
+
+def sphere_only():
+    # No triangles at all: a scene all the same.
+    gltf = Gltf()
+    gltf.doc["extensionsUsed"] = ["KHR_implicit_shapes"]
+    gltf.doc["extensions"] = {"KHR_implicit_shapes": sphere_shapes()}
+    gltf.scene([gltf.node(name="ball", extensions={"KHR_implicit_shapes": {"shape": 0}})])
+    return gltf
+
+
+def write_without_buffer(path, gltf):
+    write(path, json_text(gltf.doc))
+
+
+def lights():
+    # Point at (1, 2, 3); spot on a node turned +90 degrees about X (its -Z becomes +Y);
+    # directional under a parent turned +90 degrees about Y (-Z becomes -X), scaled by 5.
+    gltf = Gltf()
+    gltf.doc["extensionsUsed"] = ["KHR_lights_punctual"]
+    gltf.doc["extensions"] = {"KHR_lights_punctual": {"lights": [
+        {"name": "bulb", "type": "point", "color": [1, 0.5, 0.25], "intensity": 10,
+         "range": 5},
+        {"name": "stage", "type": "spot", "intensity": 100,
+         "spot": {"innerConeAngle": 0.25, "outerConeAngle": 0.5}},
+        {"name": "sun", "type": "directional", "intensity": 2},
+    ]}}
+    quad = primitive(gltf.positions(QUAD_POSITIONS), indices=gltf.indices(QUAD_INDICES))
+    mesh = gltf.mesh([quad])
+    point = gltf.node(name="point", translation=[1, 2, 3],
+                      extensions={"KHR_lights_punctual": {"light": 0}})
+    spot = gltf.node(name="spot", translation=[0, -1, 0], rotation=[S45, 0, 0, S45],
+                     extensions={"KHR_lights_punctual": {"light": 1}})
+    sun = gltf.node(name="sun", scale=[5, 5, 5], extensions={"KHR_lights_punctual": {"light": 2}})
+    turned = gltf.node(name="turned", rotation=[0, S45, 0, S45], children=[sun])
+    gltf.scene([gltf.node(mesh=mesh), point, spot, turned])
+    return gltf
+
+
+def far_away():
+    # A triangle, a sphere (radius 0.5, local centre (0, 0, 2)) and a point light (local
+    # (0, 3, 0)) under a parent at x = 1e6: their extent, (1e6 - 0.5, -0.5, 0) to
+    # (1e6 + 1, 3, 2.5), is recentred to its centre (1e6 + 0.25, 1.25, 1.25).
+    gltf = Gltf()
+    gltf.doc["extensionsUsed"] = ["KHR_implicit_shapes", "KHR_lights_punctual"]
+    gltf.doc["extensions"] = {"KHR_implicit_shapes": sphere_shapes(),
+                              "KHR_lights_punctual": {"lights": [{"type": "point"}]}}
+    mesh = gltf.mesh([primitive(gltf.positions(TRIANGLE_POSITIONS))])
+    children = [gltf.node(name="triangle", mesh=mesh),
+                gltf.node(name="ball", translation=[0, 0, 2],
+                          extensions={"KHR_implicit_shapes": {"shape": 0}}),
+                gltf.node(name="lamp", translation=[0, 3, 0],
+                          extensions={"KHR_lights_punctual": {"light": 0}})]
+    gltf.scene([gltf.node(name="far", translation=[1e6, 0, 0], children=children)])
+    return gltf
+
+
+def specular():
+    # Material 0: metallic 0 and specularFactor 0, Lambertian only. Material 1: specular 0.5,
+    # colour (1, 0.5, 0.25) and a specularTexture (not read: one note). Material 2: no extension.
+    gltf = Gltf()
+    gltf.doc["extensionsUsed"] = ["KHR_materials_specular"]
+    gltf.doc["images"] = [{"uri": data_uri(TEXTURE_PNG, "image/png")}]
+    gltf.doc["textures"] = [{"source": 0}]
+    gltf.doc["materials"] = [
+        {"name": "lambert", "pbrMetallicRoughness": {"metallicFactor": 0},
+         "extensions": {"KHR_materials_specular": {"specularFactor": 0}}},
+        {"name": "tinted", "pbrMetallicRoughness": {"metallicFactor": 0},
+         "extensions": {"KHR_materials_specular": {
+             "specularFactor": 0.5, "specularColorFactor": [1, 0.5, 0.25],
+             "specularTexture": {"index": 0}}}},
+        {"name": "core", "pbrMetallicRoughness": {"metallicFactor": 0}},
+    ]
+    position = gltf.positions(TRIANGLE_POSITIONS)
+    gltf.scene([gltf.node(mesh=gltf.mesh([primitive(position, material=m) for m in (0, 1, 2)]))])
     return gltf
 
 
@@ -339,6 +563,19 @@ VALID_SCENES = [
      "perspective cameras on rotated and child nodes, one orthographic camera"),
     ("extensions.gltf", extensions, write_embedded,
      "extensionsUsed with supported, unsupported and repeated entries"),
+    ("textured.gltf", textured, write_embedded,
+     "a base colour and metallic-roughness texture of one 3 x 2 PNG (data URI); float, "
+     "UNSIGNED_BYTE and UNSIGNED_SHORT TEXCOORD_0 and none; an unused undecodable image"),
+    ("textured.glb", textured_glb, write_glb, "the textured quad with its PNG in a buffer view"),
+    ("texture_transform.gltf", texture_transform, write_texture_transform,
+     "KHR_texture_transform on two textures of the external texture_3x2.png"),
+    ("spheres.gltf", spheres, write_embedded,
+     "KHR_implicit_shapes spheres: vkpt's own reference and a physics collider; shapes not drawn"),
+    ("sphere_only.gltf", sphere_only, write_without_buffer, "one sphere and no triangles"),
+    ("lights.gltf", lights, write_embedded, "KHR_lights_punctual point, spot, directional lights"),
+    ("far_away.gltf", far_away, write_embedded,
+     "a triangle, a sphere and a point light 1e6 from the origin: recentred together"),
+    ("specular.gltf", specular, write_embedded, "KHR_materials_specular factors and a texture"),
 ]
 
 
@@ -354,7 +591,8 @@ def write_valid_scenes():
     for name, build, writer, _ in VALID_SCENES:
         writer(LOADER_DIR / name, build())
     write_readme(LOADER_DIR, "Loader test scenes (valid)",
-                 [(name, text) for name, _, _, text in VALID_SCENES])
+                 [(name, text) for name, _, _, text in VALID_SCENES] +
+                 [("texture_3x2.png", "the image of `texture_transform.gltf`")])
 
 
 # --------------------------------------------------------------------------------------------
@@ -543,6 +781,37 @@ def missing_accessor():
     return embedded_text(gltf)
 
 
+def light_scene(light):
+    gltf = triangle()
+    gltf.doc["extensionsUsed"] = ["KHR_lights_punctual"]
+    gltf.doc["extensions"] = {"KHR_lights_punctual": {"lights": [light]}}
+    gltf.doc["scenes"][0]["nodes"].append(
+        gltf.node(name="lamp", extensions={"KHR_lights_punctual": {"light": 0}}))
+    return embedded_text(gltf)
+
+
+def sphere_non_uniform_scale():
+    gltf = triangle()
+    gltf.doc["extensionsUsed"] = ["KHR_implicit_shapes"]
+    gltf.doc["extensions"] = {"KHR_implicit_shapes": sphere_shapes()}
+    gltf.doc["scenes"][0]["nodes"].append(
+        gltf.node(name="egg", scale=[1, 2, 1], extensions={"KHR_implicit_shapes": {"shape": 0}}))
+    return embedded_text(gltf)
+
+
+def textured_triangle(image, texture=None, texture_info=None):
+    """The triangle with TEXCOORD_0 and material 0 reading texture 0 of image 0."""
+    gltf = triangle(material=0)
+    attributes = gltf.doc["meshes"][0]["primitives"][0]["attributes"]
+    attributes["TEXCOORD_0"] = gltf.texcoords([(0, 0), (1, 0), (0, 1)])
+    gltf.doc["images"] = [image]
+    gltf.doc["textures"] = [texture if texture is not None else {"source": 0}]
+    info = {"index": 0}
+    info.update(texture_info or {})
+    gltf.doc["materials"] = [{"pbrMetallicRoughness": {"baseColorTexture": info}}]
+    return embedded_text(gltf)
+
+
 def write_invalid_scenes():
     good_glb = glb_of(triangle())
     files = [
@@ -577,6 +846,29 @@ def write_invalid_scenes():
         ("partial_triangle.gltf", partial_triangle(), "4 indices"),
         ("normal_count_mismatch.gltf", normal_count_mismatch(), "2 normals for 3 positions"),
         ("missing_accessor.gltf", missing_accessor(), "POSITION is accessor 7 of 3"),
+        ("light_type.gltf", light_scene({"type": "area"}), "a light of type 'area'"),
+        ("light_negative_intensity.gltf", light_scene({"type": "point", "intensity": -2}),
+         "a point light of intensity -2"),
+        ("light_spot_cone.gltf",
+         light_scene({"type": "spot", "spot": {"innerConeAngle": 0.75, "outerConeAngle": 0.5}}),
+         "a spot light whose inner cone is wider than its outer cone"),
+        ("sphere_non_uniform_scale.gltf", sphere_non_uniform_scale(),
+         "a sphere under the scale (1, 2, 1)"),
+        ("texture_without_source.gltf",
+         textured_triangle({"uri": data_uri(TEXTURE_PNG, "image/png")},
+                           texture={"extensions": {"KHR_texture_basisu": {"source": 0}}}),
+         "a texture with only a KHR_texture_basisu source"),
+        ("image_undecodable.gltf",
+         textured_triangle({"uri": data_uri(png_bytes(TEXTURE_ROWS, b"not zlib"), "image/png")}),
+         "a PNG whose pixel data is not a zlib stream"),
+        ("image_not_png.gltf",
+         textured_triangle({"uri": data_uri(b"GIF89a" + bytes(32), "image/png")}),
+         "a GIF where a PNG or JPEG must be"),
+        ("missing_image.gltf", textured_triangle({"uri": "missing_image.png"}),
+         "its image file does not exist"),
+        ("texcoord_1.gltf", textured_triangle({"uri": data_uri(TEXTURE_PNG, "image/png")},
+                                              texture_info={"texCoord": 1}),
+         "a base colour texture on TEXCOORD_1"),
     ]
     for name, data, _ in files:
         write(INVALID_DIR / name, data)

@@ -23,6 +23,9 @@ from pathlib import Path
 SCENES_DIR = Path(__file__).resolve().parent
 GENERATOR = "vkpt scenes/generate_scenes.py"
 EMISSIVE_STRENGTH = "KHR_materials_emissive_strength"
+# specularFactor 0 removes the glTF dielectric's specular layer: what remains is exactly the
+# Lambertian base, the "diffuse" material kind that the analytic tests rely on.
+SPECULAR = "KHR_materials_specular"
 DATA_URI_PREFIX = "data:application/octet-stream;base64,"
 
 # glTF enums used here.
@@ -369,8 +372,10 @@ class GltfDocument:
                                              "metallicFactor": 0.0, "roughnessFactor": 1.0}}
         if emissive_factor is not None:
             material["emissiveFactor"] = list(emissive_factor)
+        material["extensions"] = {SPECULAR: {"specularFactor": 0.0}}
+        self.extensions_used.add(SPECULAR)
         if emissive_strength is not None:
-            material["extensions"] = {EMISSIVE_STRENGTH: {"emissiveStrength": emissive_strength}}
+            material["extensions"][EMISSIVE_STRENGTH] = {"emissiveStrength": emissive_strength}
             self.extensions_used.add(EMISSIVE_STRENGTH)
         if double_sided:
             material["doubleSided"] = True
@@ -1047,6 +1052,8 @@ def check_common(scene):
     for m in doc["materials"]:
         pbr = m["pbrMetallicRoughness"]
         scene.expect(pbr.get("metallicFactor") == 0.0, f"material {m['name']}: metallic")
+        scene.expect(m.get("extensions", {}).get(SPECULAR, {}).get("specularFactor") == 0.0,
+                     f"material {m['name']}: not diffuse-only (specularFactor 0)")
         scene.expect(all(0.0 <= c <= 1.0 for c in pbr["baseColorFactor"]), "baseColorFactor")
         scene.expect(all(0.0 <= c <= 1.0 for c in m.get("emissiveFactor", [0.0] * 3)),
                      f"material {m['name']}: emissiveFactor above 1")

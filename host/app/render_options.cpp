@@ -57,6 +57,31 @@ void addIntegratorOptions(CommandLine& cl, RenderSettings& s) {
             [&s](auto) { s.pathFilter = PathFilter::IndirectOnly; }});
 }
 
+void addSceneOptions(CommandLine& cl, RenderSettings& s) {
+    cl.add({"env", {}, "FILE",
+            "environment: an equirectangular .hdr image, +Y up (importance sampled)",
+            [&s](auto v) { s.environmentPath = v[0]; }});
+    cl.add({"env-color", {}, "R G B", "environment: a constant radiance (default black)",
+            [&s](auto v) {
+                for (int c = 0; c < 3; ++c) {
+                    s.environmentColor[c] = parseFloat("env-color", v[std::size_t(c)]);
+                    if (!(s.environmentColor[c] >= 0.0f))
+                        throw InputError("option --env-color: components must be >= 0");
+                }
+                s.environmentColorSet = true;
+            }});
+    cl.add({"env-scale", {}, "X", "multiply the --env image by X (default 1)", [&s](auto v) {
+                s.environmentScale = parseFloat("env-scale", v[0]);
+                if (!(s.environmentScale >= 0.0f))
+                    throw InputError("option --env-scale: X must be >= 0");
+            }});
+    cl.add({"general", {}, "",
+            "build the all-features pipelines and buffers instead of the scene's own set",
+            [&s](auto) { s.general = true; }});
+    cl.add({"verbose", {'v'}, "", "print the scene's feature set and setup details",
+            [&s](auto) { s.verbose = true; }});
+}
+
 void addRunOptions(CommandLine& cl, RenderSettings& s) {
     cl.add({"adaptive", {'a'}, "BATCH TOL",
             "stop a pixel when 1.96 sigma/sqrt(n) <= TOL mean, tested every BATCH samples",
@@ -85,6 +110,7 @@ void addRunOptions(CommandLine& cl, RenderSettings& s) {
 void addRenderOptions(CommandLine& commandLine, RenderSettings& settings) {
     addImageOptions(commandLine, settings);
     addIntegratorOptions(commandLine, settings);
+    addSceneOptions(commandLine, settings);
     addRunOptions(commandLine, settings);
 }
 
@@ -95,6 +121,8 @@ void validateRenderSettings(const RenderSettings& settings) {
                          std::to_string(RNG_MAX_LIGHT_SAMPLES) + " samples");
     if (settings.adaptive.enabled && !(settings.adaptive.tolerance > 0.0f))
         throw InputError("option --adaptive: the tolerance must be positive");
+    if (!settings.environmentPath.empty() && settings.environmentColorSet)
+        throw InputError("options --env and --env-color: give one environment, not both");
     if (std::uint64_t(settings.width) * settings.height > (1ull << 28))
         throw InputError("option --res: at most 2^28 pixels");
 }

@@ -32,6 +32,7 @@ void writeSettings(JsonWriter& json, const RenderSettings& s) {
     json.field("adaptiveTolerance", s.adaptive.tolerance);
     json.field("adaptiveMinSamples", s.adaptive.minSamples);
     json.field("clamp", s.clamp); // 0 = off
+    json.field("environment", s.environmentPath).field("general", s.general);
     json.endObject();
 }
 
@@ -61,11 +62,38 @@ void writeBvh(JsonWriter& json, const RenderReport& r) {
     json.endObject();
 }
 
+void writeFeatures(JsonWriter& json, const RenderReport& r) {
+    const SceneFeatures& f = r.features;
+    json.key("features").beginObject();
+    json.field("builtFor", r.generalPipelines ? "general" : "scene");
+    json.field("diffuseMaterials", f.diffuseMaterials);
+    json.field("metallicRoughnessMaterials", f.metallicRoughnessMaterials);
+    json.field("baseColorTextures", f.baseColorTextures);
+    json.field("metallicRoughnessTextures", f.metallicRoughnessTextures);
+    json.field("emissiveTextures", f.emissiveTextures);
+    json.field("textureCoordinates", f.textureCoordinates());
+    json.field("alphaMask", f.alphaMask).field("doubleSided", f.doubleSided);
+    json.field("triangles", f.triangles).field("spheres", f.spheres);
+    json.field("emissiveTriangles", f.emissiveTriangles);
+    json.field("emissiveSpheres", f.emissiveSpheres);
+    json.field("pointLights", f.pointLights).field("spotLights", f.spotLights);
+    json.field("directionalLights", f.directionalLights);
+    json.field("environment", f.environment).field("environmentMap", f.environmentMap);
+    json.field("emitterCount", f.emitterCount);
+    json.endObject();
+}
+
 void writeDeviceRun(JsonWriter& json, const DeviceRunReport& d) {
     json.key("wavefront").beginObject();
     json.field("passes", d.passes).field("pathSlots", d.pathSlots);
     json.field("setupSeconds", d.setupSeconds);
     json.field("truncatedTraversals", d.truncatedTraversals).field("interrupted", d.interrupted);
+    json.field("pipelineCreationSeconds", d.pipelineCreationSeconds);
+    json.field("sceneBufferBytes", d.sceneBufferBytes);
+    json.key("sceneBuffers").beginArray();
+    for (const SceneBufferReport& b : d.sceneBuffers)
+        json.beginObject().field("name", b.name).field("bytes", b.bytes).endObject();
+    json.endArray();
     json.key("kernels").beginArray();
     for (const KernelTiming& k : d.kernelTimes) {
         json.beginObject().field("name", k.kernel).field("dispatches", k.dispatches);
@@ -78,6 +106,9 @@ void writeDeviceRun(JsonWriter& json, const DeviceRunReport& d) {
 void printDeviceRun(const RenderReport& r, const DeviceRunReport& d) {
     std::printf("  device: %u passes of up to %u path slots, setup %.3f s, peak memory %.1f MiB\n",
                 d.passes, d.pathSlots, d.setupSeconds, double(r.deviceMemoryBytes) / 1048576.0);
+    std::printf("  pipelines %.3f s to create; scene buffers %.1f KiB in %zu buffers\n",
+                d.pipelineCreationSeconds, double(d.sceneBufferBytes) / 1024.0,
+                d.sceneBuffers.size());
     for (const KernelTiming& k : d.kernelTimes)
         std::printf("  kernel %-20s %9.3f ms in %llu dispatches\n", k.kernel.c_str(),
                     k.seconds * 1e3, (unsigned long long)k.dispatches);
@@ -112,6 +143,7 @@ void writeStatsJson(const RenderReport& r, const std::string& path) {
     json.beginObject().field("program", r.program).field("device", r.device);
     writeSettings(json, *r.settings);
     writeBvh(json, r);
+    writeFeatures(json, r);
     writeStats(json, r);
     if (r.deviceRun) writeDeviceRun(json, *r.deviceRun);
     if (r.convergence) writeConvergenceJson(json, *r.convergence);

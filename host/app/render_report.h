@@ -9,6 +9,7 @@
 #include "bvh/bvh_build.h"
 #include "common/render_settings.h"
 #include "common/render_stats.h"
+#include "scene/scene_features.h"
 #include "study/convergence.h"
 
 namespace vkpt {
@@ -20,6 +21,12 @@ struct KernelTiming {
     double seconds = 0.0;
 };
 
+// Device memory of one scene buffer (vkpt uploads only the arrays the scene has).
+struct SceneBufferReport {
+    std::string name;
+    std::uint64_t bytes = 0;
+};
+
 // What only the device executor (vkpt) has to report.
 struct DeviceRunReport {
     std::uint32_t passes = 0;
@@ -27,6 +34,9 @@ struct DeviceRunReport {
     double setupSeconds = 0.0;            // upload, buffers and pipelines, before the first pass
     std::uint64_t truncatedTraversals = 0; // BVH walks a driver loop limit cut short
     std::vector<KernelTiming> kernelTimes; // empty unless --stats
+    double pipelineCreationSeconds = 0.0;  // Σ over kernels of the driver's pipeline compile
+    std::uint64_t sceneBufferBytes = 0;    // Σ sceneBuffers
+    std::vector<SceneBufferReport> sceneBuffers;
     bool interrupted = false;              // Ctrl-C: the image holds the passes done
 };
 
@@ -37,6 +47,8 @@ struct RenderReport {
     BvhStats bvh;
     std::size_t triangles = 0;
     std::size_t emitters = 0;
+    SceneFeatures features;      // what the scene uses
+    bool generalPipelines = false; // --general: built for every feature instead
     RenderStats stats;
     double loadSeconds = 0.0;
     std::uint64_t deviceMemoryBytes = 0; // peak device memory held; 0 on the CPU

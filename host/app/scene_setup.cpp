@@ -5,20 +5,37 @@
 #include <cstdio>
 
 #include "scene/camera.h"
+#include "prepare/environment_map.h"
 #include "scene/gltf_loader.h"
 
 namespace vkpt {
+
+namespace {
+
+SceneEnvironment loadEnvironment(const RenderSettings& settings) {
+    if (!settings.environmentPath.empty())
+        return readEnvironmentMap(settings.environmentPath, glm::vec3(settings.environmentScale));
+    SceneEnvironment environment;
+    if (settings.environmentColorSet)
+        environment.radiance = glm::vec3(settings.environmentColor[0],
+                                         settings.environmentColor[1],
+                                         settings.environmentColor[2]);
+    return environment;
+}
+
+} // namespace
 
 SceneSetup setUpScene(const RenderSettings& settings, const std::string& program) {
     SceneSetup setup;
     auto start = std::chrono::steady_clock::now();
     Scene scene = loadGltfScene(settings.scenePath);
+    scene.environment = loadEnvironment(settings);
     setup.loadSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     float aspect = float(settings.width) / float(settings.height);
     SceneCamera camera = selectCamera(scene, settings.cameraIndex, aspect);
     setup.camera = makeGpuCamera(camera, settings.width, settings.height);
-    setup.prepared = prepareScene(scene, {{}, camera.forward});
+    setup.prepared = prepareScene(scene, {{}, camera.forward, settings.general});
     const BvhStats& bvh = setup.prepared.bvhStats;
     std::fprintf(stderr,
                  "%s: %s: %zu triangles, %zu emitters; BVH %u nodes, depth %u, SAH cost %.2f, "
@@ -26,6 +43,10 @@ SceneSetup setUpScene(const RenderSettings& settings, const std::string& program
                  program.c_str(), settings.scenePath.c_str(), scene.triangleCount(),
                  setup.prepared.emitters.size(), bvh.nodeCount, bvh.maxDepth, double(bvh.sahCost),
                  bvh.buildSeconds);
+    if (settings.verbose)
+        std::fprintf(stderr, "%s: features: %s%s\n", program.c_str(),
+                     describeFeatures(setup.prepared.usedFeatures).c_str(),
+                     settings.general ? " (built for all features: --general)" : "");
     if (setup.prepared.emitters.empty())
         std::fprintf(stderr, "%s: %s: the scene has no emitters; the image will be black\n",
                      program.c_str(), settings.scenePath.c_str());

@@ -121,6 +121,10 @@ DeviceRunReport deviceRunReport(const WavefrontResult& result, double setupSecon
     d.interrupted = result.interrupted;
     for (const KernelTimeTotal& t : result.kernelTimes)
         d.kernelTimes.push_back({t.kernel, t.dispatches, double(t.nanoseconds) * 1e-9});
+    d.pipelineCreationSeconds = result.pipelineCreationSeconds;
+    d.sceneBufferBytes = result.sceneBufferBytes;
+    for (const SceneBufferBytes& b : result.sceneBuffers)
+        d.sceneBuffers.push_back({b.name, b.bytes});
     return d;
 }
 
@@ -189,6 +193,8 @@ RenderReport makeReport(const Invocation& invocation, const SceneSetup& setup,
     report.bvh = setup.prepared.bvhStats;
     report.triangles = setup.prepared.triangles.size();
     report.emitters = setup.prepared.emitters.size();
+    report.features = setup.prepared.usedFeatures;
+    report.generalPipelines = invocation.settings.general;
     report.stats = result.stats;
     report.loadSeconds = setup.loadSeconds;
     report.deviceMemoryBytes = context.memoryStats().peakBytes;

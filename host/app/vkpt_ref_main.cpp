@@ -84,6 +84,8 @@ void run(const RenderSettings& settings, const ConvergenceSettings& convergence)
     report.bvh = setup.prepared.bvhStats;
     report.triangles = setup.prepared.triangles.size();
     report.emitters = setup.prepared.emitters.size();
+    report.features = setup.prepared.usedFeatures;
+    report.generalPipelines = settings.general;
     report.loadSeconds = setup.loadSeconds;
     report.convergence = finalError(convergence, reference ? &*reference : nullptr, output,
                                     report.stats, settings.samplesPerPixel);

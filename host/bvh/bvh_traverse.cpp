@@ -7,6 +7,7 @@
 
 #include "common/errors.h"
 #include "shared/intersect.h"
+#include "shared/sphere.h"
 
 namespace vkpt {
 
@@ -33,13 +34,17 @@ struct Walk {
         return gpu::intersectBox(ray.origin, invDirection, boxMin, boxMax, ray.tMin, best.t);
     }
 
-    // Tests one triangle against (tMin, best t); a hit becomes the best hit.
+    // Tests one primitive against (tMin, best t); a hit the filter accepts becomes the best.
     bool testTriangle(std::span<const gpu::Triangle> triangles, std::uint32_t index) {
         if (counters) ++counters->triangleTests;
         const gpu::Triangle& tri = triangles[index];
-        gpu::TriangleHit h = gpu::intersectTriangleWatertight(ray.origin, sheared, tri.v0, tri.v1,
-                                                              tri.v2, ray.tMin, best.t);
+        gpu::TriangleHit h =
+            gpu::isSpherePrimitive(tri)
+                ? gpu::intersectSphere(ray.origin, ray.direction, tri.v0, tri.v1.x, ray.tMin, best.t)
+                : gpu::intersectTriangleWatertight(ray.origin, sheared, tri.v0, tri.v1, tri.v2,
+                                                   ray.tMin, best.t);
         if (!h.hit) return false;
+        if (ray.filter != nullptr && !ray.filter->accepts(index, ray, h)) return false;
         best = {h.t, h.u, h.v, index, true};
         return true;
     }

@@ -8,14 +8,29 @@
 
 #include "bvh/bvh_build.h"
 #include "shared/host_device.h"
+#include "shared/intersect.h"
 
 namespace vkpt {
 
+struct RayQuery;
+
+// Decides whether a primitive the ray crosses counts as a hit: alpha-masked surfaces let rays
+// through where their alpha is below the cutoff. Without a filter every crossing counts.
+class HitFilter {
+public:
+    virtual ~HitFilter() = default;
+    virtual bool accepts(std::uint32_t primitive, const RayQuery& ray,
+                         const gpu::TriangleHit& hit) const = 0;
+};
+
+// The primitives are triangles and spheres (gpu::isSpherePrimitive); the walks test each with
+// its own intersection routine.
 struct RayQuery {
     glm::vec3 origin;
     glm::vec3 direction; // need not be unit; t is in units of |direction|
     float tMin = 0.0f;
     float tMax = VKPT_FAR;
+    const HitFilter* filter = nullptr;
 };
 
 struct ClosestHit {

@@ -37,6 +37,14 @@ struct RenderSettings {
     // --clamp X: a sample's largest component is limited to X (biased; 0 = off, the default).
     float clamp = 0.0f;
     std::optional<int> cameraIndex;
+    // The environment seen by rays that leave the scene: --env FILE (equirectangular .hdr, its
+    // texels times environmentScale) or --env-color R G B; black when neither is given.
+    std::string environmentPath;
+    bool environmentColorSet = false;
+    float environmentColor[3] = {0.0f, 0.0f, 0.0f};
+    float environmentScale = 1.0f;
+    bool general = false; // --general: the all-features pipelines and buffers
+    bool verbose = false; // --verbose: the scene's feature set and more on stderr
     std::string statsJsonPath;
     bool quiet = false;                 // no progress bar
 };

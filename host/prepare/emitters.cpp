@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <map>
 
@@ -17,20 +18,14 @@ float triangleArea(const gpu::Triangle& triangle) {
 
 namespace {
 
-double emitterPower(const gpu::Triangle& triangle, const gpu::Material& material) {
-    double sides = (material.flags & MATERIAL_DOUBLE_SIDED) != 0 ? 2.0 : 1.0;
-    return double(gpu::luminance(material.emission)) * double(triangleArea(triangle)) * sides;
+constexpr double kPi = 3.14159265358979323846;
+
+double sides(const gpu::Material& material) {
+    return (material.flags & MATERIAL_DOUBLE_SIDED) != 0 ? 2.0 : 1.0;
 }
 
-void normaliseCdf(EmitterList& list, const std::vector<double>& powers) {
-    double running = 0.0;
-    for (std::size_t i = 0; i < list.emitters.size(); ++i) {
-        running += powers[i];
-        list.emitters[i].selectProbability = float(powers[i] / list.totalPower);
-        list.emitters[i].cdf = float(running / list.totalPower);
-    }
-    // Rounding must not leave u close to 1 without an emitter.
-    if (!list.emitters.empty()) list.emitters.back().cdf = 1.0f;
+double luminanceOf(const glm::vec3& c) {
+    return double(gpu::luminance(c));
 }
 
 // An emitting triangle's corners (as bits, rotated to start at the smallest corner, −0 as +0)
@@ -54,38 +49,120 @@ SurfaceKey surfaceKey(const gpu::Triangle& triangle) {
     return key;
 }
 
+gpu::Emitter surfaceEmitter(std::uint32_t kind, std::uint32_t primitive, float area) {
+    gpu::Emitter e{};
+    e.kind = kind;
+    e.primitive = primitive;
+    e.area = area;
+    return e;
+}
+
+gpu::Emitter punctualEmitter(const SceneLight& light) {
+    gpu::Emitter e{};
+    e.kind = light.kind == LightKind::Point  ? EMITTER_POINT
+             : light.kind == LightKind::Spot ? EMITTER_SPOT
+                                             : EMITTER_DIRECTIONAL;
+    e.position = light.position;
+    e.direction = light.direction;
+    e.primitive = NO_EMITTER;
+    e.intensity = light.intensity;
+    e.range = light.range;
+    e.cosInnerCone = std::cos(light.innerConeAngle);
+    e.cosOuterCone = std::cos(light.outerConeAngle);
+    return e;
+}
+
+double punctualPower(const SceneLight& light, double sceneRadius) {
+    const double intensity = luminanceOf(light.intensity);
+    switch (light.kind) {
+    case LightKind::Point:
+        return 4.0 * kPi * intensity;
+    case LightKind::Spot: {
+        double meanCos = 0.5 * (std::cos(light.innerConeAngle) + std::cos(light.outerConeAngle));
+        return 2.0 * kPi * (1.0 - meanCos) * intensity;
+    }
+    case LightKind::Directional:
+        return kPi * sceneRadius * sceneRadius * intensity;
+    }
+    return 0.0;
+}
+
+class ListBuilder {
+public:
+    void add(const gpu::Emitter& emitter, double power) {
+        list_.emitters.push_back(emitter);
+        powers_.push_back(power);
+        list_.totalPower += power;
+    }
+    std::uint32_t size() const { return std::uint32_t(list_.emitters.size()); }
+
+    EmitterList finish() {
+        double running = 0.0;
+        list_.cdf.resize(list_.emitters.size());
+        for (std::size_t i = 0; i < list_.emitters.size(); ++i) {
+            running += powers_[i];
+            list_.emitters[i].selectProbability = float(powers_[i] / list_.totalPower);
+            list_.cdf[i] = float(running / list_.totalPower);
+        }
+        // Rounding must not leave u close to 1 without an emitter.
+        if (!list_.cdf.empty()) list_.cdf.back() = 1.0f;
+        return std::move(list_);
+    }
+
+private:
+    EmitterList list_;
+    std::vector<double> powers_;
+};
+
 } // namespace
 
-EmitterList buildEmitters(std::span<gpu::Triangle> triangles,
-                          std::span<const gpu::Material> materials) {
-    EmitterList list;
-    std::vector<double> powers;
+EmitterList buildEmitters(std::span<gpu::Triangle> primitives,
+                          std::span<const gpu::Material> materials, const EmitterSources& sources) {
+    ListBuilder builder;
     std::map<SurfaceKey, std::uint32_t> surfaces;
-    for (std::uint32_t i = 0; i < triangles.size(); ++i) {
-        gpu::Triangle& triangle = triangles[i];
-        triangle.emitterIndex = NO_EMITTER;
-        double power = emitterPower(triangle, materials[triangle.materialIndex]);
-        if (!(power > 0.0)) continue;
+    for (std::uint32_t i = 0; i < primitives.size(); ++i) {
+        gpu::Triangle& primitive = primitives[i];
+        primitive.emitterIndex = NO_EMITTER;
+        const gpu::Material& material = materials[primitive.materialIndex];
+        const double radiance = luminanceOf(material.emission);
+        if (!(radiance > 0.0)) continue;
+        if (gpu::isSpherePrimitive(primitive)) {
+            const double radius = primitive.v1.x;
+            const double area = 4.0 * kPi * radius * radius;
+            if (!(area > 0.0)) continue;
+            primitive.emitterIndex = builder.size();
+            builder.add(surfaceEmitter(EMITTER_SPHERE, i, float(area)),
+                        kPi * radiance * area * sides(material));
+            continue;
+        }
+        const float area = triangleArea(primitive);
+        if (!(area > 0.0f)) continue;
         // A repeat of an emitting triangle (same corners, winding and material) shares the
         // first copy's record: light sampling must pick the surface once, as a ray finds it
         // once, and a ray that finds either copy must see the same light pdf.
-        const auto [surface, added] =
-            surfaces.try_emplace(surfaceKey(triangle), std::uint32_t(list.emitters.size()));
-        triangle.emitterIndex = surface->second;
+        const auto [surface, added] = surfaces.try_emplace(surfaceKey(primitive), builder.size());
+        primitive.emitterIndex = surface->second;
         if (!added) continue;
-        list.emitters.push_back({i, triangleArea(triangle), 0.0f, 0.0f});
-        powers.push_back(power);
-        list.totalPower += power;
+        builder.add(surfaceEmitter(EMITTER_TRIANGLE, i, area),
+                    kPi * radiance * double(area) * sides(material));
     }
-    if (!list.emitters.empty()) normaliseCdf(list, powers);
-    return list;
+    for (const SceneLight& light : sources.lights) {
+        const double power = punctualPower(light, sources.sceneRadius);
+        if (power > 0.0) builder.add(punctualEmitter(light), power);
+    }
+    if (sources.environmentPower > 0.0) {
+        gpu::Emitter environment{};
+        environment.kind = EMITTER_ENVIRONMENT;
+        environment.primitive = NO_EMITTER;
+        builder.add(environment, sources.environmentPower);
+    }
+    return builder.finish();
 }
 
-std::uint32_t selectEmitter(std::span<const gpu::Emitter> emitters, float u) {
-    auto it = std::upper_bound(emitters.begin(), emitters.end(), u,
-                               [](float value, const gpu::Emitter& e) { return value < e.cdf; });
-    if (it == emitters.end()) --it;
-    return std::uint32_t(it - emitters.begin());
+std::uint32_t selectEmitter(std::span<const float> cdf, float u) {
+    auto it = std::upper_bound(cdf.begin(), cdf.end(), u);
+    if (it == cdf.end()) --it;
+    return std::uint32_t(it - cdf.begin());
 }
 
 } // namespace vkpt

@@ -1,26 +1,40 @@
-// emitters.h — the area-light list: every emitting triangle, selected in proportion to power.
+// emitters.h — the list light sampling chooses from: emitting triangles and spheres, the
+// KHR_lights_punctual lights and the environment, each selected in proportion to its power.
 #pragma once
 
 #include <span>
 #include <vector>
 
+#include "scene/scene.h"
 #include "shared/host_device.h"
 
 namespace vkpt {
 
 struct EmitterList {
     std::vector<gpu::Emitter> emitters;
-    double totalPower = 0.0; // Σ luminance(emission) × area × emitting sides
+    std::vector<float> cdf;  // inclusive selection CDF, one entry per emitter, the last 1
+    double totalPower = 0.0; // Σ of the powers below, in radiance units × area × solid angle
 };
 
-// Builds the list and writes each emitting triangle's emitterIndex (NO_EMITTER elsewhere).
-// Zero-area triangles cannot be hit or sampled, so they are left out; a triangle that repeats an
-// earlier emitting one (same corners in the same order, same material) shares its record.
-EmitterList buildEmitters(std::span<gpu::Triangle> triangles,
-                          std::span<const gpu::Material> materials);
+// What buildEmitters needs besides the primitives: the scene's lights and, for the lights that
+// reach the whole scene (directional, environment), the radius of its bounding sphere.
+struct EmitterSources {
+    std::span<const SceneLight> lights;
+    double environmentPower = 0.0; // 0: no environment
+    double sceneRadius = 1.0;
+};
 
-// The emitter whose cdf interval contains u in [0, 1): the first i with u < cdf[i].
-std::uint32_t selectEmitter(std::span<const gpu::Emitter> emitters, float u);
+// Builds the list and writes each emitting primitive's emitterIndex (NO_EMITTER elsewhere).
+// Powers (the selection weights): an emitting surface π·L·A per emitting side (triangle) or
+// π·L·4πr² (sphere), a point light 4π·I, a spot light 2π(1 − (cos θi + cos θo)/2)·I (pbrt-v3's
+// estimate), a directional light π·R²·E, the environment as given; L, I and E by luminance.
+// Zero-area triangles cannot be hit or sampled, so they are left out; a triangle that repeats
+// an earlier emitting one (same corners in the same order, same material) shares its record.
+EmitterList buildEmitters(std::span<gpu::Triangle> primitives,
+                          std::span<const gpu::Material> materials, const EmitterSources& sources);
+
+// The emitter whose inclusive cdf interval contains u in [0, 1): the first i with u < cdf[i].
+std::uint32_t selectEmitter(std::span<const float> cdf, float u);
 
 float triangleArea(const gpu::Triangle& triangle);
 

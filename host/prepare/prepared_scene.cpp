@@ -1,4 +1,5 @@
-// prepared_scene.cpp — builds the BVH over the scene and lays the scene out for rendering.
+// prepared_scene.cpp — builds the BVH over the scene's primitives and lays the scene out for
+// rendering, creating only the arrays its features need (or all of them, for --general).
 #include "prepare/prepared_scene.h"
 
 #include <chrono>
@@ -6,55 +7,88 @@
 #include "bvh/bvh_flatten.h"
 #include "common/errors.h"
 #include "prepare/emitters.h"
+#include "prepare/environment_map.h"
+#include "prepare/gpu_materials.h"
+#include "prepare/gpu_primitives.h"
 
 namespace vkpt {
 
-std::vector<gpu::Material> makeGpuMaterials(const std::vector<SceneMaterial>& materials) {
-    std::vector<gpu::Material> result;
-    result.reserve(materials.size());
-    for (const SceneMaterial& m : materials) {
-        gpu::Material g{};
-        g.baseColor = m.baseColor;
-        g.emission = m.emission;
-        g.flags = m.doubleSided ? MATERIAL_DOUBLE_SIDED : 0u;
-        g.metallic = m.metallic;
-        g.roughness = m.roughness;
-        g.alphaCutoff = m.alphaCutoff;
-        g.alphaMode = std::uint32_t(m.alphaMode);
-        result.push_back(g);
-    }
-    return result;
+namespace {
+
+// The radius of the scene's bounding sphere: directional and environment light cover a disk
+// of it (their power estimates). 1 for an empty scene.
+double sceneRadius(const Scene& scene) {
+    Bounds bounds = computeBounds(scene);
+    if (bounds.min.x > bounds.max.x) return 1.0;
+    double radius = 0.5 * glm::length(glm::dvec3(bounds.max) - glm::dvec3(bounds.min));
+    return radius > 0.0 ? radius : 1.0;
 }
 
-void makeGpuTriangles(const Scene& scene, const BvhTree& tree,
-                      std::vector<gpu::Triangle>& triangles,
-                      std::vector<gpu::TriangleNormals>& normals) {
-    triangles.resize(tree.primitiveOrder.size());
-    normals.resize(tree.primitiveOrder.size());
-    for (std::size_t i = 0; i < tree.primitiveOrder.size(); ++i) {
-        std::uint32_t source = tree.primitiveOrder[i];
-        const glm::vec3* p = &scene.positions[3 * std::size_t(source)];
-        const glm::vec3* n = &scene.normals[3 * std::size_t(source)];
-        triangles[i] = {p[0], scene.materialIndices[source], p[1], NO_EMITTER, p[2], source};
-        normals[i] = {glm::vec4(n[0], 0.0f), glm::vec4(n[1], 0.0f), glm::vec4(n[2], 0.0f)};
-    }
+void prepareEnvironment(const Scene& scene, double radius, PreparedScene& prepared, double& power) {
+    prepared.environment = gpu::EnvironmentParams{};
+    prepared.environment.emitterIndex = NO_EMITTER;
+    power = 0.0;
+    if (!scene.environment.present()) return;
+    EnvironmentDistribution distribution = buildEnvironmentDistribution(scene.environment, radius);
+    prepared.environment.radiance = scene.environment.radiance;
+    prepared.environment.width = scene.environment.width;
+    prepared.environment.height = scene.environment.height;
+    prepared.environmentTexels = std::move(distribution.texels);
+    prepared.environmentCdf = std::move(distribution.cdf);
+    // A present environment is always sampled, however dark its map: the floor keeps its
+    // selection probability above 0 so that MIS weights stay defined.
+    power = distribution.power > 0.0 ? distribution.power : 1e-30;
 }
+
+std::uint32_t findEnvironmentEmitter(const std::vector<gpu::Emitter>& emitters) {
+    for (std::size_t i = 0; i < emitters.size(); ++i)
+        if (emitters[i].kind == EMITTER_ENVIRONMENT) return std::uint32_t(i);
+    return NO_EMITTER;
+}
+
+} // namespace
 
 PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options) {
     VKPT_ASSERT(scene.positions.size() == 3 * scene.triangleCount(), "three vertices a triangle");
-    VKPT_ASSERT(scene.triangleCount() < BVH_MAX_TRIANGLES, "triangle count fits a leaf word");
+    const std::size_t primitiveCount = scene.triangleCount() + scene.spheres.size();
+    VKPT_ASSERT(primitiveCount < BVH_MAX_TRIANGLES, "primitive count fits a leaf word");
     PreparedScene prepared;
+    prepared.usedFeatures = analyseScene(scene);
+    prepared.features =
+        options.general ? generalFeatures(prepared.usedFeatures) : prepared.usedFeatures;
+    const SceneFeatures features = prepared.features;
+
     auto start = std::chrono::steady_clock::now();
-    prepared.tree = buildBvh(triangleBounds(scene.positions), options.bvh);
+    prepared.tree = buildBvh(primitiveBounds(scene), options.bvh);
     std::chrono::duration<double> buildTime = std::chrono::steady_clock::now() - start;
     prepared.bvhStats = computeBvhStats(prepared.tree, options.bvh);
     prepared.bvhStats.buildSeconds = buildTime.count();
     prepared.nodes = flattenBvh(prepared.tree, {options.nearFirstDirection});
-    makeGpuTriangles(scene, prepared.tree, prepared.triangles, prepared.normals);
+
+    GpuPrimitives primitives =
+        makeGpuPrimitives(scene, prepared.tree, features.textureCoordinates());
+    prepared.triangles = std::move(primitives.records);
+    prepared.normals = std::move(primitives.normals);
+    prepared.uvs = std::move(primitives.uvs);
     prepared.materials = makeGpuMaterials(scene.materials);
-    EmitterList emitters = buildEmitters(prepared.triangles, prepared.materials);
+    if (features.textures()) {
+        GpuTextures textures = makeGpuTextures(scene);
+        prepared.textures = std::move(textures.textures);
+        prepared.texels = std::move(textures.texels);
+    }
+
+    const double radius = sceneRadius(scene);
+    double environmentPower = 0.0;
+    prepareEnvironment(scene, radius, prepared, environmentPower);
+    EmitterList emitters = buildEmitters(prepared.triangles, prepared.materials,
+                                         {scene.lights, environmentPower, radius});
     prepared.emitters = std::move(emitters.emitters);
+    // The loader's count cannot know which emitting triangles repeat one another.
+    prepared.usedFeatures.emitterCount = std::uint32_t(prepared.emitters.size());
+    prepared.features.emitterCount = prepared.usedFeatures.emitterCount;
+    if (prepared.features.emitterCdf()) prepared.emitterCdf = std::move(emitters.cdf);
     prepared.totalEmittedPower = emitters.totalPower;
+    prepared.environment.emitterIndex = findEnvironmentEmitter(prepared.emitters);
     return prepared;
 }
 

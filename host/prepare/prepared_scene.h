@@ -1,5 +1,8 @@
 // prepared_scene.h — the loaded scene in the layouts both executors consume: the BVH tree,
-// its flattened nodes, triangles and normals in BVH order, materials and the emitter list.
+// its flattened nodes, primitives (triangles and spheres) and their normals and texture
+// coordinates in BVH order, materials, textures, the emitter list and the environment. An
+// array a scene's features do not need stays empty (docs/scene-model.md), unless the
+// general layout was asked for.
 #pragma once
 
 #include <optional>
@@ -7,6 +10,7 @@
 
 #include "bvh/bvh_build.h"
 #include "scene/scene.h"
+#include "scene/scene_features.h"
 #include "shared/host_device.h"
 
 namespace vkpt {
@@ -15,10 +19,19 @@ struct PreparedScene {
     BvhTree tree;        // for the reference's stack traversal
     BvhStats bvhStats;   // with the build time
     std::vector<gpu::BvhNode> nodes;
-    std::vector<gpu::Triangle> triangles;
+    std::vector<gpu::Triangle> triangles; // triangles and spheres (PRIMITIVE_SPHERE)
     std::vector<gpu::TriangleNormals> normals;
+    std::vector<glm::vec2> uvs; // 3 per primitive; empty unless features.textureCoordinates()
     std::vector<gpu::Material> materials;
+    std::vector<gpu::TextureInfo> textures;
+    std::vector<std::uint32_t> texels; // every texture's RGBA8 texels, see gpu::TextureInfo
     std::vector<gpu::Emitter> emitters;
+    std::vector<float> emitterCdf; // inclusive selection CDF; empty unless features.emitterCdf()
+    gpu::EnvironmentParams environment{};  // emitterIndex NO_EMITTER without an environment
+    std::vector<glm::vec4> environmentTexels; // the map's RGB (w unused), row 0 at the top
+    std::vector<float> environmentCdf; // height rows of width conditional entries, then marginal
+    SceneFeatures features;            // what the scene uses (all of it for a general layout)
+    SceneFeatures usedFeatures;        // what the scene uses, whatever the layout
     double totalEmittedPower = 0.0;
 };
 
@@ -27,6 +40,8 @@ struct PrepareOptions {
     // Flatten so that the skip-link walk meets nearer children first along this direction:
     // the camera's forward direction makes camera rays walk near-first (docs/bvh.md).
     std::optional<glm::vec3> nearFirstDirection;
+    // --general: every array present and every feature on, as if the scene used everything.
+    bool general = false;
 };
 
 PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options = {});

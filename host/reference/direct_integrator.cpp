@@ -2,6 +2,7 @@
 #include "reference/integrators.h"
 
 #include "reference/direct_lighting.h"
+#include "reference/light_sampling.h"
 #include "reference/surface.h"
 #include "shared/path_rules.h"
 #include "shared/ray_offset.h"
@@ -15,19 +16,24 @@ namespace {
 // Σ f·Le·cos / p over N uniform directions: a direction counts when it reaches an emitter.
 glm::vec3 directByHemisphere(IntegratorContext& context, const SampleKey& key,
                              const SurfacePoint& s) {
-    glm::vec3 f = lambertAlbedo(s) * VKPT_INV_PI;
     gpu::Basis basis = gpu::makeBasis(s.shadingNormal);
     glm::vec3 origin = gpu::offsetFromSurface(s.position, s.geometricNormal, s.coordinateScale);
     glm::vec3 sum(0.0f);
     for (std::uint32_t i = 0; i < context.settings.lightSamples; ++i) {
-        glm::vec4 u = gpu::randomFloats(key.seed, key.pixel, key.sampleIndex, 0, DIM_LIGHT_FIRST + i);
+        glm::vec4 u =
+            gpu::randomFloats(key.seed, key.pixel, key.sampleIndex, 0, DIM_LIGHT_FIRST + i);
         glm::vec3 local = gpu::sampleUniformHemisphere(glm::vec2(u.y, u.z));
         glm::vec3 direction = gpu::basisToWorld(basis, local);
         if (glm::dot(direction, s.geometricNormal) <= 0.0f) continue;
+        glm::vec3 f = evaluateSurfaceBsdf(s, direction).f;
         ClosestHit hit = context.tracer.closest(origin, direction, RayKind::Extension);
-        if (!hit.hit) continue;
-        SurfacePoint light = makeSurfacePoint(context.tracer.scene(), hit, direction);
-        sum += f * emittedRadiance(light) * (local.z / gpu::uniformHemispherePdf());
+        // Emission reached, or the environment when the probe leaves the scene; punctual
+        // lights cannot be hit, so this estimator does not see them.
+        glm::vec3 found =
+            hit.hit
+                ? emittedRadiance(makeSurfacePoint(context.tracer.scene(), hit, origin, direction))
+                : environmentRadianceAlong(context.tracer.scene(), direction);
+        sum += f * found * (local.z / gpu::uniformHemispherePdf());
     }
     return sum / float(context.settings.lightSamples);
 }
@@ -36,7 +42,8 @@ glm::vec3 directByHemisphere(IntegratorContext& context, const SampleKey& key,
 glm::vec3 directByLights(IntegratorContext& context, const SampleKey& key, const SurfacePoint& s) {
     glm::vec3 sum(0.0f);
     for (std::uint32_t i = 0; i < context.settings.lightSamples; ++i) {
-        glm::vec4 u = gpu::randomFloats(key.seed, key.pixel, key.sampleIndex, 0, DIM_LIGHT_FIRST + i);
+        glm::vec4 u =
+            gpu::randomFloats(key.seed, key.pixel, key.sampleIndex, 0, DIM_LIGHT_FIRST + i);
         DirectLightSample d = sampleDirectLight(context.tracer, s, u);
         if (d.contributes) sum += d.unweighted / d.lightPdf;
     }
@@ -48,8 +55,11 @@ glm::vec3 directByLights(IntegratorContext& context, const SampleKey& key, const
 glm::vec3 integrateDirect(IntegratorContext& context, const SampleKey& key, const CameraRay& ray) {
     const auto filter = std::uint32_t(context.settings.pathFilter);
     ClosestHit hit = context.tracer.closest(ray.origin, ray.direction, RayKind::Camera);
-    if (!hit.hit) return glm::vec3(0.0f);
-    SurfacePoint surface = makeSurfacePoint(context.tracer.scene(), hit, ray.direction);
+    if (!hit.hit) {
+        if (!gpu::pathFilterKeeps(filter, 0)) return glm::vec3(0.0f);
+        return environmentRadianceAlong(context.tracer.scene(), glm::normalize(ray.direction));
+    }
+    SurfacePoint surface = makeSurfacePoint(context.tracer.scene(), hit, ray.origin, ray.direction);
     glm::vec3 radiance(0.0f);
     if (gpu::pathFilterKeeps(filter, 0)) radiance += emittedRadiance(surface);
     if (context.settings.maxDepth == 0 || context.settings.lightSamples == 0 ||

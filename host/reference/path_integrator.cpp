@@ -1,9 +1,11 @@
-// path_integrator.cpp — the reference path tracer: NEE + BSDF sampling combined by MIS.
+// path_integrator.cpp — the reference path tracer: NEE + BSDF sampling combined by MIS, the
+// environment on rays that leave the scene.
 #include "reference/integrators.h"
 
 #include "reference/direct_lighting.h"
 #include "reference/light_sampling.h"
 #include "reference/surface.h"
+#include "shared/bsdf.h"
 #include "shared/path_rules.h"
 #include "shared/ray_offset.h"
 #include "shared/rng.h"
@@ -30,33 +32,48 @@ glm::vec3 estimateDirectWithMis(IntegratorContext& context, const SampleKey& key
                                         DIM_LIGHT_FIRST + i);
         DirectLightSample d = sampleDirectLight(context.tracer, vertex.surface, u);
         if (!d.contributes) continue;
+        // A punctual light has bsdfPdf 0: no BSDF sample can reach it, so its weight is 1.
         float weight = gpu::powerHeuristic(n, d.lightPdf, 1.0f, d.bsdfPdf);
         sum += d.unweighted * (weight / (n * d.lightPdf));
     }
     return sum;
 }
 
-struct BsdfSample {
-    glm::vec3 direction{0.0f};
-    float pdf = 0.0f;
+struct ScatterSample {
+    glm::vec3 direction{0.0f}; // world
+    gpu::BsdfSample bsdf{};
     float russianRoulette = 0.0f; // the uniform number the roulette uses
 };
 
-BsdfSample sampleLambert(const SampleKey& key, const PathVertex& vertex) {
-    glm::vec4 u =
-        gpu::randomFloats(key.seed, key.pixel, key.sampleIndex, vertex.bounce, DIM_BSDF);
-    glm::vec3 local = gpu::sampleCosineHemisphere(glm::vec2(u.x, u.y));
-    BsdfSample sample;
-    sample.direction = gpu::basisToWorld(gpu::makeBasis(vertex.surface.shadingNormal), local);
-    sample.pdf = gpu::cosineHemispherePdf(local.z);
+// DIM_BSDF: u.xy the direction, u.z the roulette, u.w the lobe (docs/integrator.md).
+ScatterSample sampleScatter(const SampleKey& key, const PathVertex& vertex) {
+    glm::vec4 u = gpu::randomFloats(key.seed, key.pixel, key.sampleIndex, vertex.bounce, DIM_BSDF);
+    const SurfacePoint& s = vertex.surface;
+    gpu::Basis basis = gpu::makeBasis(s.shadingNormal);
+    ScatterSample sample;
+    sample.bsdf =
+        gpu::sampleBsdf(s.shading, gpu::worldToBasis(basis, s.outgoing), glm::vec2(u.x, u.y), u.w);
+    sample.direction = gpu::basisToWorld(basis, sample.bsdf.direction);
     sample.russianRoulette = u.z;
     return sample;
+}
+
+// What a ray that leaves the scene brings back: the environment, weighted against light
+// sampling's chance of choosing that direction.
+glm::vec3 environmentSeen(const PreparedScene& scene, const glm::vec3& direction,
+                          std::uint32_t bounce, float previousBsdfPdf, float lightSamples) {
+    glm::vec3 unit = glm::normalize(direction);
+    glm::vec3 radiance = environmentRadianceAlong(scene, unit);
+    if (bounce == 0 || radiance == glm::vec3(0.0f)) return radiance;
+    float pdfLight = environmentLightPdf(scene, unit);
+    return radiance * gpu::powerHeuristic(1.0f, previousBsdfPdf, lightSamples, pdfLight);
 }
 
 } // namespace
 
 glm::vec3 integratePath(IntegratorContext& context, const SampleKey& key, const CameraRay& ray) {
     const RenderSettings& settings = context.settings;
+    const PreparedScene& scene = context.tracer.scene();
     const auto filter = std::uint32_t(settings.pathFilter);
     const float lightSamples = float(settings.lightSamples);
     glm::vec3 radiance(0.0f);
@@ -67,13 +84,18 @@ glm::vec3 integratePath(IntegratorContext& context, const SampleKey& key, const 
     for (std::uint32_t bounce = 0;; ++bounce) {
         RayKind kind = bounce == 0 ? RayKind::Camera : RayKind::Extension;
         ClosestHit hit = context.tracer.closest(origin, direction, kind);
-        if (!hit.hit) break;
-        SurfacePoint surface = makeSurfacePoint(context.tracer.scene(), hit, direction);
+        if (!hit.hit) {
+            if (scene.features.environment && gpu::pathFilterKeeps(filter, bounce))
+                radiance += throughput * environmentSeen(scene, direction, bounce, previousBsdfPdf,
+                                                         lightSamples);
+            break;
+        }
+        SurfacePoint surface = makeSurfacePoint(scene, hit, origin, direction);
         glm::vec3 emitted = emittedRadiance(surface);
         if (emitted != glm::vec3(0.0f) && gpu::pathFilterKeeps(filter, bounce)) {
             float weight = 1.0f;
             if (bounce > 0) {
-                float pdfLight = lightPdf(context.tracer.scene(), surface, origin);
+                float pdfLight = lightPdf(scene, surface, origin);
                 weight = gpu::powerHeuristic(1.0f, previousBsdfPdf, lightSamples, pdfLight);
             }
             radiance += throughput * emitted * weight;
@@ -82,16 +104,19 @@ glm::vec3 integratePath(IntegratorContext& context, const SampleKey& key, const 
         PathVertex vertex{surface, bounce};
         if (gpu::pathFilterKeeps(filter, bounce + 1))
             radiance += throughput * estimateDirectWithMis(context, key, vertex);
-        BsdfSample bsdf = sampleLambert(key, vertex);
-        if (!(bsdf.pdf > 0.0f) || glm::dot(bsdf.direction, surface.geometricNormal) <= 0.0f) break;
-        throughput *= lambertAlbedo(surface); // f·cos/pdf = (ρ/π)·cos/(cos/π)
-        float survival = gpu::russianRouletteSurvival(throughput, bounce + 1, settings.rrStartDepth);
-        if (bsdf.russianRoulette >= survival) break;
+        ScatterSample scatter = sampleScatter(key, vertex);
+        if (!scatter.bsdf.valid || !(scatter.bsdf.pdf > 0.0f) ||
+            glm::dot(scatter.direction, surface.geometricNormal) <= 0.0f)
+            break;
+        throughput *= scatter.bsdf.weight;
+        float survival =
+            gpu::russianRouletteSurvival(throughput, bounce + 1, settings.rrStartDepth);
+        if (scatter.russianRoulette >= survival) break;
         throughput /= survival;
-        previousBsdfPdf = bsdf.pdf;
+        previousBsdfPdf = scatter.bsdf.pdf;
         origin = gpu::offsetFromSurface(surface.position, surface.geometricNormal,
                                         surface.coordinateScale);
-        direction = bsdf.direction;
+        direction = scatter.direction;
     }
     return radiance;
 }
@@ -99,7 +124,7 @@ glm::vec3 integratePath(IntegratorContext& context, const SampleKey& key, const 
 glm::vec3 integrateNormals(IntegratorContext& context, const CameraRay& ray) {
     ClosestHit hit = context.tracer.closest(ray.origin, ray.direction, RayKind::Camera);
     if (!hit.hit) return glm::vec3(0.0f);
-    SurfacePoint surface = makeSurfacePoint(context.tracer.scene(), hit, ray.direction);
+    SurfacePoint surface = makeSurfacePoint(context.tracer.scene(), hit, ray.origin, ray.direction);
     return 0.5f * surface.rawShadingNormal + 0.5f;
 }
 

@@ -17,8 +17,8 @@ namespace vkpt {
 struct DeviceRayQueries::State {
     State(GpuContext& c, const PreparedScene& scene, std::uint32_t batch)
         : context(c), batchSize(batch), deviceScene(uploadScene(c, scene)), buffers(c, batch, 1, 1),
-          closestKernel(makeWavefrontKernel(c, WavefrontKernel::TraceClosest)),
-          shadowKernel(makeWavefrontKernel(c, WavefrontKernel::TraceShadow)),
+          closestKernel(makeWavefrontKernel(c, WavefrontKernel::TraceClosest, scene.features)),
+          shadowKernel(makeWavefrontKernel(c, WavefrontKernel::TraceShadow, scene.features)),
           closestSet(bindWavefrontKernel(closestKernel, WavefrontKernel::TraceClosest, table())),
           shadowSet(bindWavefrontKernel(shadowKernel, WavefrontKernel::TraceShadow, table())) {
         gpu::FrameParams frame{};
@@ -27,6 +27,7 @@ struct DeviceRayQueries::State {
         frame.pixelCount = 1;
         frame.nodeCount = deviceScene.nodeCount;
         frame.emitterCount = deviceScene.emitterCount;
+        frame.environment = deviceScene.environment;
         upload(context, buffers.frameParams, std::span<const gpu::FrameParams>(&frame, 1));
         fillBuffer(context, buffers.queueCounters, 0);
     }
@@ -34,9 +35,7 @@ struct DeviceRayQueries::State {
     BufferTable table() const {
         BufferTable t;
         t.set(BINDING_FRAME_PARAMS, buffers.frameParams);
-        t.set(BINDING_BVH_NODES, deviceScene.bvhNodes);
-        t.set(BINDING_TRIANGLES, deviceScene.triangles);
-        t.set(BINDING_MATERIALS, deviceScene.materials);
+        deviceScene.bind(t);
         t.set(BINDING_RAYS, buffers.rays);
         t.set(BINDING_HITS, buffers.hits);
         t.set(BINDING_SHADOW_RAYS, buffers.shadowRays);

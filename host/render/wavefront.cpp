@@ -3,6 +3,7 @@
 // an observer (if any) where the render stands and stop when it, the budget or the clock says.
 #include "render/wavefront.h"
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <ctime>
@@ -10,6 +11,7 @@
 #include <memory>
 #include <string>
 
+#include "common/errors.h"
 #include "common/progress.h"
 #include "gpu/context.h"
 #include "gpu/submit.h"
@@ -89,17 +91,14 @@ gpu::FrameParams makeFrameParams(const RenderSettings& settings, const gpu::Came
     f.pixelCount = camera.width * camera.height;
     f.nodeCount = scene.nodeCount;
     f.sampleClamp = settings.clamp;
+    f.environment = scene.environment;
     return f;
 }
 
 BufferTable makeBufferTable(const DeviceScene& scene, const WorkBuffers& work) {
     BufferTable table;
     table.set(BINDING_FRAME_PARAMS, work.frameParams);
-    table.set(BINDING_BVH_NODES, scene.bvhNodes);
-    table.set(BINDING_TRIANGLES, scene.triangles);
-    table.set(BINDING_TRIANGLE_NORMALS, scene.triangleNormals);
-    table.set(BINDING_MATERIALS, scene.materials);
-    table.set(BINDING_EMITTERS, scene.emitters);
+    scene.bind(table);
     table.set(BINDING_PATH_STATES, work.pathStates);
     table.set(BINDING_RAYS, work.rays);
     table.set(BINDING_HITS, work.hits);
@@ -121,6 +120,22 @@ std::uint32_t slotCountFor(const GpuContext& context, const RenderSettings& sett
     return chooseSlotCount(context, request);
 }
 
+// Pipelines built for fewer features than the scene uses would silently drop them (textures,
+// spheres, lights): a programmer error, not a user's.
+void checkFeaturesCover(const SceneFeatures& built, const SceneFeatures& used) {
+    const std::array<bool, FEATURE_COUNT> have = built.kernelFeatures();
+    const std::array<bool, FEATURE_COUNT> need = used.kernelFeatures();
+    for (std::size_t i = 0; i < FEATURE_COUNT; ++i)
+        VKPT_ASSERT(have[i] || !need[i], "the kernels are built without feature " +
+                                             std::to_string(i) + ", which the scene uses");
+}
+
+SceneFeatures kernelFeaturesFor(const PreparedScene& scene, const WavefrontOptions& options) {
+    SceneFeatures features = options.features.value_or(scene.features);
+    checkFeaturesCover(features, scene.usedFeatures);
+    return features;
+}
+
 std::unique_ptr<GpuTimer> makeTimer(const GpuContext& context, const WavefrontOptions& options) {
     if (!options.timeKernels) return nullptr;
     return std::make_unique<GpuTimer>(context, PassRecorder::timerCapacity(kBouncesPerSubmission),
@@ -135,7 +150,8 @@ public:
           pixelCount_(camera.width * camera.height), scene_(uploadScene(context, scene)),
           buffers_(context, slotCountFor(context, settings, options), settings.lightSamples,
                    pixelCount_),
-          table_(makeBufferTable(scene_, buffers_)), pipelines_(context, table_),
+          table_(makeBufferTable(scene_, buffers_)),
+          pipelines_(context, table_, kernelFeaturesFor(scene, options)),
           timer_(makeTimer(context, options)),
           recorder_(pipelines_, buffers_, timer_.get(),
                     settings.integrator != Integrator::Normals && settings.lightSamples > 0),
@@ -290,6 +306,9 @@ WavefrontResult WavefrontRenderer::finish(double seconds) {
     result.passes = passes_;
     result.slotCount = buffers_.slotCount;
     result.interrupted = interrupted_;
+    result.pipelineCreationSeconds = pipelines_.creationSeconds();
+    result.sceneBuffers = scene_.bufferBytes();
+    result.sceneBufferBytes = scene_.totalBytes();
     return result;
 }
 

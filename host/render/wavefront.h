@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "common/render_settings.h"
@@ -15,6 +16,8 @@
 #include "image/render_output.h"
 #include "prepare/prepared_scene.h"
 #include "render/kernel_times.h"
+#include "render/scene_memory.h"
+#include "scene/scene_features.h"
 
 namespace vkpt {
 
@@ -54,6 +57,10 @@ struct WavefrontOptions {
     // Give afterPass the image so far, and grow passes geometrically so that it sees the error
     // at log-spaced sample counts (samplesForGeometricGrowth).
     bool readPixelsAfterPass = false;
+    // The features the kernels are specialised for; unset: the prepared scene's (`features`,
+    // all of them after prepareScene(…, {.general = true})). Must include every feature the
+    // scene uses (PreparedScene::usedFeatures), or renderWavefront throws InternalError.
+    std::optional<SceneFeatures> features;
 };
 
 struct WavefrontResult {
@@ -65,6 +72,12 @@ struct WavefrontResult {
     std::uint32_t slotCount = 0;
     bool interrupted = false;
     WavefrontStop stop = WavefrontStop::BudgetSpent;
+    // Σ over the kernels of vkCreateShaderModule + vkCreateComputePipelines, before the first
+    // pass: what specialisation costs or saves (lavapipe compiles its LLVM code at the first
+    // dispatch, so there it measures the SPIR-V → NIR stage only).
+    double pipelineCreationSeconds = 0.0;
+    std::vector<SceneBufferBytes> sceneBuffers; // the scene's buffers, as uploaded
+    std::uint64_t sceneBufferBytes = 0;         // Σ sceneBuffers
 };
 
 // Deterministic: the image depends on the seed, not on scheduling, slot count or chunking.

@@ -11,6 +11,7 @@
 
 #include "gpu/descriptor_set.h"
 #include "gpu/kernel.h"
+#include "scene/scene_features.h"
 
 namespace vkpt {
 
@@ -34,7 +35,7 @@ std::string_view kernelName(WavefrontKernel kernel);
 // The storage-buffer bindings (BINDING_* of lib/wavefront.h) the kernel declares.
 std::span<const std::uint32_t> kernelBindings(WavefrontKernel kernel);
 
-inline constexpr std::uint32_t kWavefrontBindingCount = 14;
+inline constexpr std::uint32_t kWavefrontBindingCount = 20; // BINDING_COUNT of lib/wavefront.h
 
 // Which buffer each binding number refers to; a kernel's descriptor set takes its bindings
 // from here.
@@ -44,8 +45,16 @@ struct BufferTable {
     void set(std::uint32_t binding, const Buffer& buffer) { buffers.at(binding) = &buffer; }
 };
 
-// The pipeline of one kernel, with the PassParams push constants.
-Kernel makeWavefrontKernel(const GpuContext& context, WavefrontKernel kernel);
+// The FEATURE_* specialisation constants (lib/features.glsl) for `features`.
+std::vector<SpecializationConstant> featureConstants(const SceneFeatures& features);
+
+// Whether the kernel's code depends on the scene's features (it includes lib/features.glsl).
+bool isSpecialised(WavefrontKernel kernel);
+
+// The pipeline of one kernel, with the PassParams push constants, specialised for `features`
+// (what the scene uses, or generalFeatures for the --general pipelines).
+Kernel makeWavefrontKernel(const GpuContext& context, WavefrontKernel kernel,
+                           const SceneFeatures& features);
 
 // A descriptor set for `kernel` with each of its bindings pointing into `table`.
 DescriptorSet bindWavefrontKernel(const Kernel& kernel, WavefrontKernel id,
@@ -54,10 +63,13 @@ DescriptorSet bindWavefrontKernel(const Kernel& kernel, WavefrontKernel id,
 // Every kernel's pipeline and descriptor set, created together.
 class WavefrontPipelines {
 public:
-    WavefrontPipelines(const GpuContext& context, const BufferTable& table);
+    WavefrontPipelines(const GpuContext& context, const BufferTable& table,
+                       const SceneFeatures& features);
 
     const Kernel& kernel(WavefrontKernel id) const { return kernels_[index(id)]; }
     const DescriptorSet& set(WavefrontKernel id) const { return sets_[index(id)]; }
+    // Σ Kernel::creationTime(): what the driver spent compiling these pipelines.
+    double creationSeconds() const;
 
 private:
     static std::size_t index(WavefrontKernel id) { return static_cast<std::size_t>(id); }

@@ -182,6 +182,18 @@ template <typename T> T readValue(const unsigned char* bytes) {
     return value;
 }
 
+// A normalized unsigned integer c of n bits stands for c / (2^n − 1) (glTF 2.0, section 3.11).
+float readUnitFloat(const unsigned char* bytes, std::size_t componentSize) {
+    switch (componentSize) {
+    case 1:
+        return static_cast<float>(bytes[0]) / 255.0f;
+    case 2:
+        return static_cast<float>(readValue<std::uint16_t>(bytes)) / 65535.0f;
+    default:
+        return readValue<float>(bytes);
+    }
+}
+
 std::uint32_t readIndex(const unsigned char* bytes, std::size_t componentSize) {
     switch (componentSize) {
     case 1:
@@ -225,6 +237,28 @@ std::vector<glm::vec3> readVec3Floats(const tinygltf::Model& model, int accessor
         const unsigned char* element = elements.first + i * elements.stride;
         values[i] = {readValue<float>(element), readValue<float>(element + 4),
                      readValue<float>(element + 8)};
+    }
+    return values;
+}
+
+std::vector<glm::vec2> readTexcoords(const tinygltf::Model& model, int accessorIndex,
+                                     const std::string& where) {
+    const tinygltf::Accessor& accessor = findAccessor(model, accessorIndex, where);
+    requireLayout(accessor, accessorIndex, TINYGLTF_TYPE_VEC2,
+                  {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                   TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
+                  where);
+    if (accessor.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !accessor.normalized) {
+        throw GltfProblem(where + ": " + accessorName(accessorIndex) + " is VEC2 of " +
+                          componentTypeName(accessor.componentType) +
+                          " but not normalized, as texture coordinates must be");
+    }
+    const Elements elements = locateElements(model, accessor, accessorIndex, where);
+    std::vector<glm::vec2> values(elements.count);
+    for (std::size_t i = 0; i < elements.count; ++i) {
+        const unsigned char* element = elements.first + i * elements.stride;
+        values[i] = {readUnitFloat(element, elements.componentSize),
+                     readUnitFloat(element + elements.componentSize, elements.componentSize)};
     }
     return values;
 }

@@ -20,6 +20,11 @@ void checkBufferViews(const tinygltf::Model& model);
 std::vector<glm::vec3> readVec3Floats(const tinygltf::Model& model, int accessorIndex,
                                       const std::string& where);
 
+// TEXCOORD_n values: VEC2 of FLOAT, or of normalized UNSIGNED_BYTE or UNSIGNED_SHORT mapped to
+// [0, 1], the three layouts glTF 2.0 allows (section 3.7.2.1).
+std::vector<glm::vec2> readTexcoords(const tinygltf::Model& model, int accessorIndex,
+                                     const std::string& where);
+
 // Indices of any glTF index type (UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT), widened.
 std::vector<std::uint32_t> readIndices(const tinygltf::Model& model, int accessorIndex,
                                        const std::string& where);

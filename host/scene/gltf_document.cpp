@@ -113,10 +113,17 @@ void checkGlbContainer(const Bytes& bytes) {
     checkGlbChunks(bytes, length);
 }
 
-// Textures are not sampled yet, so decoding them would only cost time (about 200 ms for
-// DamagedHelmet's JPEGs). Each image keeps its uri or bufferView and stays empty.
-bool skipImageDecoding(tinygltf::Image*, const int, std::string*, std::string*, int, int,
-                       const unsigned char*, int, void*) {
+// tinygltf hands every image's bytes to this callback while it parses: the file of an external
+// `uri` and the bytes of a data: URI. They are kept as they are (as_is), undecoded, because which
+// images a material uses is known only once the whole document has been read; gltf_images.cpp
+// then decodes those and no others. An image in a buffer view (the usual case in a .glb) is
+// skipped here: tinygltf passes its bytes before any buffer view has been checked against its
+// buffer, so gltf_images.cpp reads them itself after checkBufferViews.
+bool keepEncodedImage(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                      const unsigned char* bytes, int size, void*) {
+    if (image->bufferView >= 0) return true;
+    image->image.assign(bytes, bytes + size);
+    image->as_is = true;
     return true;
 }
 
@@ -135,13 +142,13 @@ std::string directoryPrefix(const std::string& baseDir) {
 
 tinygltf::Model runTinyGltf(const Bytes& bytes, bool binary, const std::string& baseDir) {
     tinygltf::TinyGLTF parser;
-    parser.SetImageLoader(&skipImageDecoding, nullptr);
+    parser.SetImageLoader(&keepEncodedImage, nullptr);
     std::string prefix = directoryPrefix(baseDir);
     parser.SetFsCallbacks({&fileExistsBesideScene, &tinygltf::ExpandFilePath,
                            &tinygltf::ReadWholeFile, &tinygltf::WriteWholeFile, &prefix});
     tinygltf::Model model;
     std::string error;
-    std::string warning; // only about images, which are not used yet
+    std::string warning; // only about image files, which gltf_images.cpp reports if used
     const auto size = static_cast<unsigned int>(bytes.size());
     const bool ok =
         binary ? parser.LoadBinaryFromMemory(&model, &error, &warning, bytes.data(), size, baseDir)

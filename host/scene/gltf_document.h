@@ -16,7 +16,8 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// Reads a .gltf (JSON) or .glb (binary) file and its external buffers. Images are not decoded.
+// Reads a .gltf (JSON) or .glb (binary) file, its external buffers and the encoded bytes of its
+// external and data: URI images (Image::as_is). No image is decoded here (gltf_images.h).
 tinygltf::Model parseGltfFile(const std::string& path);
 
 } // namespace vkpt::gltf

@@ -1,8 +1,10 @@
 // gltf_loader.cpp — the loading pipeline: parse the file, check extensions and buffer views,
-// walk the default scene collecting triangles and cameras, then say what was ignored.
+// convert the materials (decoding the textures they use), walk the default scene collecting
+// triangles, spheres, lights and cameras, then say what was ignored.
 #include "scene/gltf_loader.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <optional>
@@ -14,18 +16,24 @@
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_cameras.h"
 #include "scene/gltf_document.h"
+#include "scene/gltf_lights.h"
 #include "scene/gltf_materials.h"
 #include "scene/gltf_nodes.h"
 #include "scene/gltf_origin.h"
 #include "scene/gltf_primitives.h"
+#include "scene/gltf_shapes.h"
+#include "scene/gltf_textures.h"
 
 namespace vkpt {
 namespace {
 
 using gltf::GltfProblem;
 
-// Extensions that change what vkpt renders and that it implements.
-const std::vector<std::string> kSupportedExtensions = {"KHR_materials_emissive_strength"};
+// Extensions that change what vkpt renders and that it implements. (KHR_implicit_shapes only
+// for spheres, gltf_shapes.cpp; KHR_materials_specular without its textures.)
+const std::vector<std::string> kSupportedExtensions = {
+    "KHR_materials_emissive_strength", "KHR_materials_specular", "KHR_texture_transform",
+    "KHR_lights_punctual", "KHR_implicit_shapes"};
 
 bool isSupported(const std::string& extension) {
     return std::find(kSupportedExtensions.begin(), kSupportedExtensions.end(), extension) !=
@@ -60,15 +68,29 @@ std::string joinNames(const std::vector<std::string>& names) {
     return joined;
 }
 
-// Collects the triangles and cameras of the nodes the walk visits.
+std::string formatNumber(double value) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.6g", value);
+    return text;
+}
+
+// Collects the triangles, spheres, lights and cameras of the nodes the walk visits.
 class SceneBuilder {
 public:
-    SceneBuilder(const tinygltf::Model& model, Scene& scene) : model_(model), scene_(scene) {}
+    SceneBuilder(const tinygltf::Model& model, Scene& scene, gltf::Texcoords texcoords)
+        : model_(model), scene_(scene), texcoords_(texcoords) {}
 
     void visitNode(int nodeIndex, const glm::dmat4& world) {
         const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(nodeIndex)];
         if (node.mesh != -1) appendMesh(nodeIndex, node.mesh, world);
         if (node.camera != -1) appendCamera(nodeIndex, world);
+        if (std::optional<SceneLight> light = gltf::placeLight(model_, nodeIndex, world)) {
+            scene_.lights.push_back(std::move(*light));
+        }
+        if (const std::optional<gltf::WorldSphere> sphere =
+                gltf::placeSphere(model_, nodeIndex, world)) {
+            appendSphere(nodeIndex, *sphere);
+        }
     }
 
     int orthographicCameras() const { return orthographicCameras_; }
@@ -86,8 +108,25 @@ private:
                 "mesh " + std::to_string(meshIndex) + ", primitive " + std::to_string(p);
             const tinygltf::Primitive& primitive = mesh.primitives[p];
             gltf::appendPrimitiveTriangles(model_, primitive, world,
-                                           materialIndex(primitive.material, where), where, scene_);
+                                           materialIndex(primitive.material, where), texcoords_,
+                                           where, scene_);
         }
+    }
+
+    void appendSphere(int nodeIndex, const gltf::WorldSphere& sphere) {
+        SceneSphere converted;
+        converted.centre = glm::vec3(sphere.centre);
+        converted.radius = static_cast<float>(sphere.radius);
+        // A radius below the float range would make a sphere no ray can hit; far above it,
+        // one that fills every float. Either is reported rather than drawn wrongly.
+        if (!(converted.radius > 0.0f) || !std::isfinite(converted.radius) ||
+            !std::isfinite(converted.centre.x + converted.centre.y + converted.centre.z)) {
+            throw GltfProblem("node " + std::to_string(nodeIndex) + ": the sphere's radius " +
+                              formatNumber(sphere.radius) + " is outside the float range");
+        }
+        converted.material = sphere.material < 0 ? defaultMaterialIndex()
+                                                 : static_cast<std::uint32_t>(sphere.material);
+        scene_.spheres.push_back(converted);
     }
 
     void appendCamera(int nodeIndex, const glm::dmat4& world) {
@@ -120,15 +159,10 @@ private:
 
     const tinygltf::Model& model_;
     Scene& scene_;
+    gltf::Texcoords texcoords_;
     std::optional<std::uint32_t> defaultMaterial_;
     int orthographicCameras_ = 0;
 };
-
-std::string formatNumber(double value) {
-    char text[32];
-    std::snprintf(text, sizeof(text), "%.6g", value);
-    return text;
-}
 
 std::string formatPoint(const glm::dvec3& p) {
     return "(" + formatNumber(p.x) + ", " + formatNumber(p.y) + ", " + formatNumber(p.z) + ")";
@@ -166,7 +200,7 @@ std::vector<std::string> geometryNotes(const Scene& scene,
 // one line.
 std::vector<std::string> loadNotes(const tinygltf::Model& model, int orthographicCameras,
                                    const LoadOptions& options) {
-    std::vector<std::string> notes;
+    std::vector<std::string> notes = gltf::materialNotes(model);
     const std::vector<std::string> ignored = ignoredExtensions(model);
     if (options.warnUnsupportedExtensions && !ignored.empty()) {
         notes.push_back("ignoring unsupported extensions: " + joinNames(ignored));
@@ -179,6 +213,8 @@ std::vector<std::string> loadNotes(const tinygltf::Model& model, int orthographi
     return notes;
 }
 
+// A scene of spheres alone is a scene; one with neither triangles nor spheres has nothing to
+// show (lights light nothing).
 std::string noTrianglesMessage(const Scene& scene) {
     const std::size_t skipped = scene.repairs.zeroAreaTriangles;
     if (skipped == 0) return "the scene has no triangles";
@@ -192,18 +228,24 @@ Scene buildScene(const std::string& path, const LoadOptions& options) {
     gltf::checkBufferViews(model);
     Scene scene;
     scene.sourcePath = path;
-    scene.materials = gltf::convertMaterials(model);
+    gltf::TextureTable textures(model, scene.textures, scene.images);
+    scene.materials = gltf::convertMaterials(model, textures);
+    // TEXCOORD_0 is read only to look textures up.
+    const gltf::Texcoords texcoords =
+        scene.textures.empty() ? gltf::Texcoords::Skip : gltf::Texcoords::Read;
     const int sceneIndex = gltf::defaultSceneIndex(model);
     // First the scene's extent in double, so that a far-away scene is recentred before its
     // positions are rounded to float.
     const std::optional<gltf::WorldExtent> extent = gltf::worldExtent(model, sceneIndex);
     scene.worldOrigin = extent ? gltf::chooseWorldOrigin(*extent) : glm::dvec3(0.0);
-    SceneBuilder builder(model, scene);
+    SceneBuilder builder(model, scene, texcoords);
     gltf::walkSceneNodes(
         model, sceneIndex,
         [&](int node, const glm::dmat4& world) { builder.visitNode(node, world); },
         glm::translate(glm::dmat4(1.0), -scene.worldOrigin));
-    if (scene.triangleCount() == 0) throw GltfProblem(noTrianglesMessage(scene));
+    if (scene.triangleCount() == 0 && scene.spheres.empty()) {
+        throw GltfProblem(noTrianglesMessage(scene));
+    }
     std::vector<std::string> notes = loadNotes(model, builder.orthographicCameras(), options);
     for (const std::string& note : geometryNotes(scene, extent))
         notes.push_back(note);

@@ -1,15 +1,17 @@
-// gltf_materials.cpp — reads the core material factors and KHR_materials_emissive_strength;
-// textures are ignored until they are sampled.
+// gltf_materials.cpp — reads the core material factors, the base colour, metallic-roughness and
+// emissive textures, KHR_materials_emissive_strength and KHR_materials_specular.
 #include "scene/gltf_materials.h"
 
 #include <cmath>
 
 #include "scene/gltf_document.h"
+#include "scene/gltf_values.h"
 
 namespace vkpt::gltf {
 namespace {
 
 constexpr const char* kEmissiveStrength = "KHR_materials_emissive_strength";
+constexpr const char* kSpecular = "KHR_materials_specular";
 
 std::string materialName(std::size_t index) {
     return "material " + std::to_string(index);
@@ -61,7 +63,40 @@ void checkFinite(const SceneMaterial& material, std::size_t index) {
     }
 }
 
-SceneMaterial convertMaterial(const tinygltf::Material& material, std::size_t index) {
+// KHR_materials_specular: the strength (specularFactor, in [0, 1]) and colour
+// (specularColorFactor, >= 0) of the dielectric specular layer; absent, both are 1, the core
+// glTF model. Its textures are not read (materialNotes says so).
+void readSpecular(const tinygltf::Material& material, std::size_t index, SceneMaterial& converted) {
+    const tinygltf::Value* extension = findExtension(material.extensions, kSpecular);
+    if (extension == nullptr) return;
+    const std::string where = materialName(index) + ": " + kSpecular;
+    const double factor = readNumber(*extension, "specularFactor", 1.0, where);
+    if (factor < 0.0 || factor > 1.0) {
+        throw GltfProblem(where + ": specularFactor must be in [0, 1]");
+    }
+    const std::vector<double> color =
+        readNumbers(*extension, "specularColorFactor", {1.0, 1.0, 1.0}, where);
+    if (color[0] < 0.0 || color[1] < 0.0 || color[2] < 0.0) {
+        throw GltfProblem(where + ": specularColorFactor must not be negative");
+    }
+    converted.specular = static_cast<float>(factor);
+    converted.specularColor = glm::vec3(glm::dvec3(color[0], color[1], color[2]));
+}
+
+void readTextures(const tinygltf::Material& material, std::size_t index, TextureTable& textures,
+                  SceneMaterial& converted) {
+    const std::string where = materialName(index) + ": ";
+    const tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
+    converted.baseColorTexture =
+        readTextureReference(pbr.baseColorTexture, textures, where + "baseColorTexture");
+    converted.metallicRoughnessTexture = readTextureReference(
+        pbr.metallicRoughnessTexture, textures, where + "metallicRoughnessTexture");
+    converted.emissiveTexture =
+        readTextureReference(material.emissiveTexture, textures, where + "emissiveTexture");
+}
+
+SceneMaterial convertMaterial(const tinygltf::Material& material, std::size_t index,
+                              TextureTable& textures) {
     const tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
     const std::vector<double>& base = pbr.baseColorFactor; // tinygltf ensures 4 entries
     SceneMaterial converted;
@@ -74,18 +109,35 @@ SceneMaterial convertMaterial(const tinygltf::Material& material, std::size_t in
     converted.alphaMode = alphaModeOf(material, index);
     converted.alphaCutoff = static_cast<float>(material.alphaCutoff);
     checkFinite(converted, index);
+    readSpecular(material, index, converted);
+    readTextures(material, index, textures, converted);
     return converted;
+}
+
+bool hasSpecularTexture(const tinygltf::Material& material) {
+    const tinygltf::Value* extension = findExtension(material.extensions, kSpecular);
+    return extension != nullptr && (findMember(*extension, "specularTexture") != nullptr ||
+                                    findMember(*extension, "specularColorTexture") != nullptr);
 }
 
 } // namespace
 
-std::vector<SceneMaterial> convertMaterials(const tinygltf::Model& model) {
+std::vector<SceneMaterial> convertMaterials(const tinygltf::Model& model, TextureTable& textures) {
     std::vector<SceneMaterial> materials;
     materials.reserve(model.materials.size());
     for (std::size_t i = 0; i < model.materials.size(); ++i) {
-        materials.push_back(convertMaterial(model.materials[i], i));
+        materials.push_back(convertMaterial(model.materials[i], i, textures));
     }
     return materials;
+}
+
+std::vector<std::string> materialNotes(const tinygltf::Model& model) {
+    std::size_t count = 0;
+    for (const tinygltf::Material& material : model.materials)
+        count += hasSpecularTexture(material) ? 1 : 0;
+    if (count == 0) return {};
+    return {"ignoring the " + std::string(kSpecular) + " textures of " + std::to_string(count) +
+            (count == 1 ? " material" : " materials") + " (only its factors are supported)"};
 }
 
 SceneMaterial defaultMaterial() {

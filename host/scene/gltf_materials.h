@@ -1,16 +1,24 @@
-// gltf_materials.h — glTF metallic-roughness materials to SceneMaterial, emission included.
+// gltf_materials.h — glTF metallic-roughness materials to SceneMaterial: factors, emission,
+// KHR_materials_specular and the base colour, metallic-roughness and emissive textures.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include <tiny_gltf.h>
 
+#include "scene/gltf_textures.h"
 #include "scene/scene.h"
 
 namespace vkpt::gltf {
 
-// One SceneMaterial per glTF material, in file order (so material indices carry over).
-std::vector<SceneMaterial> convertMaterials(const tinygltf::Model& model);
+// One SceneMaterial per glTF material, in file order (so material indices carry over). The
+// textures they use are added to `textures` (and so decoded); normal and occlusion textures are
+// not read.
+std::vector<SceneMaterial> convertMaterials(const tinygltf::Model& model, TextureTable& textures);
+
+// What the conversion left out, one stderr line each: the KHR_materials_specular textures.
+std::vector<std::string> materialNotes(const tinygltf::Model& model);
 
 // The material the glTF specification prescribes for a primitive without one: white, fully
 // metallic, fully rough, opaque, single-sided.

@@ -1,5 +1,7 @@
 // gltf_origin.cpp — a first walk over the default scene that measures its world-space bounds in
-// double, and the rule that decides whether to recentre it.
+// double (vertices, spheres and the positions of point and spot lights), and the rule that
+// decides whether to recentre it. The loading walk then moves all of them alike, through the
+// root transform it applies to every node.
 #include "scene/gltf_origin.h"
 
 #include <algorithm>
@@ -8,7 +10,9 @@
 
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_document.h"
+#include "scene/gltf_lights.h"
 #include "scene/gltf_nodes.h"
+#include "scene/gltf_shapes.h"
 
 namespace vkpt::gltf {
 namespace {
@@ -22,6 +26,14 @@ public:
     explicit ExtentBuilder(const tinygltf::Model& model) : model_(model) {}
 
     void visitNode(int nodeIndex, const glm::dmat4& world) {
+        if (const std::optional<WorldSphere> sphere = placeSphere(model_, nodeIndex, world)) {
+            addPoint(sphere->centre - glm::dvec3(sphere->radius));
+            addPoint(sphere->centre + glm::dvec3(sphere->radius));
+        }
+        if (const std::optional<SceneLight> light = placeLight(model_, nodeIndex, world)) {
+            // A directional light has no place; the others are points of the scene.
+            if (light->kind != LightKind::Directional) addPoint(glm::dvec3(world[3]));
+        }
         const int mesh = model_.nodes[static_cast<std::size_t>(nodeIndex)].mesh;
         if (mesh < 0 || static_cast<std::size_t>(mesh) >= model_.meshes.size()) return;
         for (const tinygltf::Primitive& primitive :
@@ -38,13 +50,15 @@ public:
 
 private:
     void addVertices(int accessor, const glm::dmat4& world) {
-        for (const glm::vec3& p : readVec3Floats(model_, accessor, "POSITION")) {
-            const glm::dvec3 w(world * glm::dvec4(glm::dvec3(p), 1.0));
-            if (!isFinite(w)) continue;
-            extent_.min = any_ ? glm::min(extent_.min, w) : w;
-            extent_.max = any_ ? glm::max(extent_.max, w) : w;
-            any_ = true;
-        }
+        for (const glm::vec3& p : readVec3Floats(model_, accessor, "POSITION"))
+            addPoint(glm::dvec3(world * glm::dvec4(glm::dvec3(p), 1.0)));
+    }
+
+    void addPoint(const glm::dvec3& w) {
+        if (!isFinite(w)) return;
+        extent_.min = any_ ? glm::min(extent_.min, w) : w;
+        extent_.max = any_ ? glm::max(extent_.max, w) : w;
+        any_ = true;
     }
 
     const tinygltf::Model& model_;

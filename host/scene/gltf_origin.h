@@ -22,7 +22,8 @@ struct WorldExtent {
     double size() const; // the largest side
 };
 
-// Bounds of the default scene's vertex positions in world space, in double. Tolerant by design:
+// Bounds of the default scene's vertex positions, spheres and point and spot lights in world
+// space, in double. Tolerant by design:
 // nullopt when the scene has no readable finite geometry or the file has a problem, which the
 // loading pass that follows reports in its own words.
 std::optional<WorldExtent> worldExtent(const tinygltf::Model& model, int sceneIndex);

@@ -21,6 +21,8 @@ struct WorldGeometry {
     std::optional<std::vector<glm::vec3>> normals; // nullopt: generate flat normals
     std::vector<std::uint32_t> indices;
     bool mirrored = false; // the transform has a negative determinant
+    bool withTexcoords = false;
+    std::optional<std::vector<glm::vec2>> texcoords; // nullopt: (0, 0) at every vertex
 };
 
 const char* modeName(int mode) {
@@ -99,6 +101,24 @@ std::vector<glm::vec3> worldNormals(const tinygltf::Model& model, int accessor,
     return normals;
 }
 
+// TEXCOORD_0 as stored: texture coordinates do not depend on the node transform. A NaN would
+// become a texel index on the GPU, so non-finite values are rejected.
+std::vector<glm::vec2> vertexTexcoords(const tinygltf::Model& model, int accessor,
+                                       std::size_t vertexCount, const std::string& where) {
+    std::vector<glm::vec2> texcoords = readTexcoords(model, accessor, where + ": TEXCOORD_0");
+    if (texcoords.size() != vertexCount) {
+        throw GltfProblem(where + ": TEXCOORD_0 has " + std::to_string(texcoords.size()) +
+                          " elements but POSITION has " + std::to_string(vertexCount));
+    }
+    for (std::size_t i = 0; i < texcoords.size(); ++i) {
+        if (!std::isfinite(texcoords[i].x) || !std::isfinite(texcoords[i].y)) {
+            throw GltfProblem(where + ": vertex " + std::to_string(i) +
+                              " has a non-finite TEXCOORD_0");
+        }
+    }
+    return texcoords;
+}
+
 std::vector<std::uint32_t> triangleIndices(const tinygltf::Model& model,
                                            const tinygltf::Primitive& primitive,
                                            std::size_t vertexCount, const std::string& where) {
@@ -124,13 +144,19 @@ std::vector<std::uint32_t> triangleIndices(const tinygltf::Model& model,
 }
 
 WorldGeometry readWorldGeometry(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
-                                const glm::dmat4& world, const std::string& where) {
+                                const glm::dmat4& world, Texcoords texcoords,
+                                const std::string& where) {
     const std::optional<int> position = attributeAccessor(primitive, "POSITION");
     if (!position) throw GltfProblem(where + ": no POSITION attribute");
     WorldGeometry geometry;
     geometry.positions = worldPositions(model, *position, world, where);
     if (const std::optional<int> normal = attributeAccessor(primitive, "NORMAL")) {
         geometry.normals = worldNormals(model, *normal, world, geometry.positions.size(), where);
+    }
+    geometry.withTexcoords = texcoords == Texcoords::Read;
+    if (const std::optional<int> texcoord = attributeAccessor(primitive, "TEXCOORD_0");
+        texcoord && geometry.withTexcoords) {
+        geometry.texcoords = vertexTexcoords(model, *texcoord, geometry.positions.size(), where);
     }
     geometry.indices = triangleIndices(model, primitive, geometry.positions.size(), where);
     geometry.mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
@@ -178,6 +204,10 @@ void appendTriangle(const WorldGeometry& geometry, std::size_t first, std::uint3
         scene.positions.push_back(geometry.positions[corner]);
         const glm::vec3 normal = geometry.normals ? (*geometry.normals)[corner] : flat;
         scene.normals.push_back(normal == glm::vec3(0.0f) ? flat : normal);
+        if (geometry.withTexcoords) {
+            scene.texcoords.push_back(geometry.texcoords ? (*geometry.texcoords)[corner]
+                                                         : glm::vec2(0.0f));
+        }
     }
     scene.materialIndices.push_back(materialIndex);
 }
@@ -186,9 +216,9 @@ void appendTriangle(const WorldGeometry& geometry, std::size_t first, std::uint3
 
 void appendPrimitiveTriangles(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
                               const glm::dmat4& world, std::uint32_t materialIndex,
-                              const std::string& where, Scene& scene) {
+                              Texcoords texcoords, const std::string& where, Scene& scene) {
     requireTriangles(primitive.mode, where);
-    WorldGeometry geometry = readWorldGeometry(model, primitive, world, where);
+    WorldGeometry geometry = readWorldGeometry(model, primitive, world, texcoords, where);
     if (geometry.normals) repairNormals(*geometry.normals, scene);
     for (std::size_t first = 0; first < geometry.indices.size(); first += 3) {
         appendTriangle(geometry, first, materialIndex, scene);

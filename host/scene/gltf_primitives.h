@@ -11,13 +11,16 @@
 
 namespace vkpt::gltf {
 
+// Whether to fill Scene::texcoords: only a scene with textures needs them.
+enum class Texcoords { Skip, Read };
+
 // Appends the primitive's triangles, in world space and with material materialIndex, to the
-// scene's triangle soup.
+// scene's triangle soup, and with Texcoords::Read their TEXCOORD_0 ((0, 0) when absent).
 // Normals are transformed by the inverse transpose, or generated flat when absent; a mirroring
 // transform swaps two corners so that the front face stays the front face. `where` names the
 // primitive ("mesh 3, primitive 0") in messages.
 void appendPrimitiveTriangles(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
                               const glm::dmat4& world, std::uint32_t materialIndex,
-                              const std::string& where, Scene& scene);
+                              Texcoords texcoords, const std::string& where, Scene& scene);
 
 } // namespace vkpt::gltf

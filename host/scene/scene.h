@@ -13,6 +13,13 @@ namespace vkpt {
 
 enum class AlphaMode : std::uint32_t { Opaque = 0, Mask = 1, Blend = 2 };
 
+// A material's use of a texture: Scene::textures[texture] read at TEXCOORD_0 moved by the
+// KHR_texture_transform matrix (identity when absent).
+struct TextureReference {
+    int texture = -1; // -1: none
+    glm::mat3 transform{1.0f}; // uv' = (transform · (u, v, 1)).xy
+};
+
 struct SceneMaterial {
     std::string name;
     glm::vec4 baseColor{1.0f}; // linear RGBA
@@ -22,6 +29,68 @@ struct SceneMaterial {
     bool doubleSided = false;
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
+    float specular = 1.0f;           // KHR_materials_specular specularFactor
+    glm::vec3 specularColor{1.0f};   // KHR_materials_specular specularColorFactor
+    TextureReference baseColorTexture;         // sRGB-encoded RGBA
+    TextureReference metallicRoughnessTexture; // linear: G roughness, B metallic
+    TextureReference emissiveTexture;          // sRGB-encoded RGB
+
+    // Lambertian only: the glTF model with no metal and no specular layer.
+    bool isDiffuseOnly() const {
+        return metallic == 0.0f && specular == 0.0f && metallicRoughnessTexture.texture < 0;
+    }
+};
+
+// Decoded image pixels, 8 bits per channel, RGBA packed R in the low byte, row 0 first
+// (the image's top row, which glTF maps to v = 0).
+struct SceneImage {
+    std::string name;
+    std::uint32_t width = 0;
+    std::uint32_t height = 0;
+    std::vector<std::uint32_t> texels;
+};
+
+enum class TextureWrap : std::uint32_t { Repeat = 0, ClampToEdge = 1, MirroredRepeat = 2 };
+
+struct SceneTexture {
+    int image = 0; // index into Scene::images
+    TextureWrap wrapS = TextureWrap::Repeat;
+    TextureWrap wrapT = TextureWrap::Repeat;
+    bool nearest = false; // magFilter NEAREST; bilinear otherwise (no mipmaps)
+};
+
+// A KHR_implicit_shapes sphere placed by a node (docs/scene-model.md), in world space.
+struct SceneSphere {
+    glm::vec3 centre{0.0f};
+    float radius = 1.0f;
+    std::uint32_t material = 0;
+};
+
+enum class LightKind : std::uint32_t { Point, Spot, Directional };
+
+// A KHR_lights_punctual light placed by a node, in world space.
+struct SceneLight {
+    std::string name;
+    LightKind kind = LightKind::Point;
+    glm::vec3 position{0.0f};
+    glm::vec3 direction{0.0f, 0.0f, -1.0f}; // unit, the way the light travels (node's -Z)
+    glm::vec3 intensity{1.0f}; // colour × intensity: candela (point, spot) or lux (directional)
+    float range = 0.0f;        // 0: unlimited
+    float innerConeAngle = 0.0f;           // radians, spot lights
+    float outerConeAngle = 0.78539816f;    // π/4, the extension's default
+};
+
+// What rays that leave the scene see: set from the command line (--env, --env-color), not
+// from the glTF file. An empty map means the constant radiance alone.
+struct SceneEnvironment {
+    glm::vec3 radiance{0.0f}; // constant colour, or the map's scale
+    std::uint32_t width = 0;
+    std::uint32_t height = 0;
+    std::vector<glm::vec3> texels; // equirectangular, row 0 at the top (+Y)
+    std::string sourcePath;
+
+    bool present() const { return radiance != glm::vec3(0.0f); }
+    bool hasMap() const { return width > 0 && height > 0; }
 };
 
 // A perspective camera placed by the node tree. forward and up are unit and orthogonal.
@@ -53,7 +122,15 @@ struct Scene {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;
     std::vector<std::uint32_t> materialIndices;
+    // TEXCOORD_0, three per triangle like positions; empty unless some material has a texture
+    // (then (0, 0) for primitives without the attribute).
+    std::vector<glm::vec2> texcoords;
     std::vector<SceneMaterial> materials;
+    std::vector<SceneImage> images;
+    std::vector<SceneTexture> textures;
+    std::vector<SceneSphere> spheres;
+    std::vector<SceneLight> lights;
+    SceneEnvironment environment;
     std::vector<SceneCamera> cameras; // perspective ones, in depth-first node-walk order
     // The file's world-space point that positions and cameras are measured from. The loader
     // moves it to the centre of a scene that lies far from the origin (relative to its size),

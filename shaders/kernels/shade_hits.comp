@@ -1,6 +1,7 @@
-// shade_hits.comp — the shade stage, one hit per invocation, making the reference's decisions
-// in its order (docs/integrator.md): emission with its MIS weight, N light samples as shadow
-// records i·N + k, then the BSDF sample and Russian roulette that append the next bounce's ray.
+// shade_hits.comp — the shade stage, one ray of the queue per invocation, making the
+// reference's decisions in its order (docs/integrator.md): at a hit, emission with its MIS
+// weight, N light samples as shadow records i·N + k, then the BSDF sample and Russian roulette
+// that append the next bounce's ray; on a miss, the environment with its MIS weight.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "lib/frame.glsl"
@@ -9,8 +10,14 @@ layout(local_size_x = WORKGROUP_SIZE) in;
 
 VKPT_READONLY_BUFFER(BINDING_TRIANGLES, Triangle, triangles)
 VKPT_READONLY_BUFFER(BINDING_TRIANGLE_NORMALS, TriangleNormals, triangleNormals)
+VKPT_READONLY_BUFFER(BINDING_TRIANGLE_UVS, vec2, triangleUvs)
 VKPT_READONLY_BUFFER(BINDING_MATERIALS, Material, materials)
+VKPT_READONLY_BUFFER(BINDING_TEXTURES, TextureInfo, textures)
+VKPT_READONLY_BUFFER(BINDING_TEXTURE_TEXELS, uint, textureTexels)
 VKPT_READONLY_BUFFER(BINDING_EMITTERS, Emitter, emitters)
+VKPT_READONLY_BUFFER(BINDING_EMITTER_CDF, float, emitterCdf)
+VKPT_READONLY_BUFFER(BINDING_ENVIRONMENT_TEXELS, vec4, environmentTexels)
+VKPT_READONLY_BUFFER(BINDING_ENVIRONMENT_CDF, float, environmentCdf)
 VKPT_BUFFER(BINDING_PATH_STATES, PathState, pathStates)
 VKPT_BUFFER(BINDING_RAYS, RayRecord, rays)
 VKPT_READONLY_BUFFER(BINDING_HITS, HitRecord, hits)
@@ -47,6 +54,7 @@ void writePathLightSamples(Vertex vertex, PathState state) {
         ShadowRay shadow = makeLightSampleRay(vertex.surface, random4(state, DIM_LIGHT_FIRST + k),
                                               pdfLight, pdfBsdf);
         if (shadow.flags != SHADOW_NONE) {
+            // A punctual light has pdfBsdf 0: no BSDF sample can reach it, so its weight is 1.
             float weight = powerHeuristic(count, pdfLight, 1.0, pdfBsdf);
             shadow.contribution = shadow.contribution * (weight / (count * pdfLight));
         }
@@ -54,20 +62,22 @@ void writePathLightSamples(Vertex vertex, PathState state) {
     }
 }
 
-// The Lambertian BSDF sample and Russian roulette; a surviving path appends its next ray to the
-// other half of the queue (its position there does not matter: nothing depends on it).
+// The BSDF sample (DIM_BSDF: u.xy the direction, u.z the roulette, u.w the lobe) and Russian
+// roulette; a surviving path appends its next ray to the other half of the queue (its position
+// there does not matter: nothing depends on it).
 void continuePath(Vertex vertex, inout PathState state) {
     vec4 u = random4(state, DIM_BSDF);
-    vec3 local = sampleCosineHemisphere(vec2(u.x, u.y));
-    vec3 direction = basisToWorld(makeBasis(vertex.surface.shadingNormal), local);
-    float pdf = cosineHemispherePdf(local.z);
-    if (!(pdf > 0.0) || dot(direction, vertex.surface.geometricNormal) <= 0.0) return;
-    state.throughput *= lambertAlbedo(vertex.surface); // f·cos/pdf = (ρ/π)·cos/(cos/π)
+    SurfacePoint s = vertex.surface;
+    Basis basis = makeBasis(s.shadingNormal);
+    BsdfSample bsdf = sampleBsdf(s.shading, worldToBasis(basis, s.outgoing), vec2(u.x, u.y), u.w);
+    vec3 direction = basisToWorld(basis, bsdf.direction);
+    if (!bsdf.valid || !(bsdf.pdf > 0.0) || dot(direction, s.geometricNormal) <= 0.0) return;
+    state.throughput *= bsdf.weight;
     float survival =
         russianRouletteSurvival(state.throughput, passParams.bounce + 1u, frame.rrStartDepth);
     if (u.z >= survival) return;
     state.throughput /= survival;
-    state.previousBsdfPdf = pdf;
+    state.previousBsdfPdf = bsdf.pdf;
     uint nextHalf = (passParams.bounce & 1u) ^ 1u;
     uint next = atomicAdd(queueCounters[COUNTER_RAYS + nextHalf], 1u);
     vec3 origin = offsetFromSurface(vertex.surface.position, vertex.surface.geometricNormal,
@@ -98,11 +108,11 @@ bool shadePathVertex(Vertex vertex, inout PathState state) {
     return lit;
 }
 
-// CS184's hemisphere estimator: N uniform directions, each a probe that counts the emission
-// it reaches (trace_shadow multiplies it in).
+// CS184's hemisphere estimator: N uniform directions, each a probe that counts the emission it
+// reaches, or the environment when it leaves the scene (trace_shadow multiplies it in).
+// Punctual lights cannot be hit, so this estimator does not see them.
 void writeHemisphereProbes(Vertex vertex, PathState state) {
     SurfacePoint s = vertex.surface;
-    vec3 f = lambertAlbedo(s) * VKPT_INV_PI;
     Basis basis = makeBasis(s.shadingNormal);
     vec3 origin = offsetFromSurface(s.position, s.geometricNormal, s.coordinateScale);
     uint n = frame.lightSamples;
@@ -112,6 +122,7 @@ void writeHemisphereProbes(Vertex vertex, PathState state) {
         vec3 direction = basisToWorld(basis, local);
         ShadowRay probe = ShadowRay(vec3(0.0), SHADOW_NONE, vec3(0.0), VKPT_FAR, vec3(0.0), 0.0);
         if (dot(direction, s.geometricNormal) > 0.0) {
+            vec3 f = evaluateSurfaceBsdf(s, direction).f;
             probe = ShadowRay(origin, SHADOW_PROBE, direction, VKPT_FAR, f,
                               local.z / uniformHemispherePdf());
         }
@@ -144,18 +155,38 @@ bool shadeDirect(Vertex vertex, inout PathState state) {
     return true;
 }
 
+// A ray that left the scene: the environment it sees, for the path tracer weighted against
+// light sampling's chance of choosing that direction (Veach's power heuristic, as at a hit).
+void shadeMiss(RayRecord record) {
+    uint bounce = passParams.bounce;
+    if (!hasEnvironment() || frame.integrator == INTEGRATOR_NORMALS ||
+        !pathFilterKeeps(frame.pathFilter, bounce))
+        return;
+    vec3 unit = normalize(record.direction);
+    vec3 radiance = environmentRadianceAlong(unit);
+    if (radiance == vec3(0.0)) return;
+    PathState state = pathStates[record.slot];
+    if (frame.integrator == INTEGRATOR_PATH && bounce > 0u) {
+        float pdfLight = environmentLightPdf(unit);
+        radiance = radiance *
+                   powerHeuristic(1.0, state.previousBsdfPdf, float(frame.lightSamples), pdfLight);
+    }
+    pathStates[record.slot].radiance = state.radiance + state.throughput * radiance;
+}
+
 void main() {
     uint i = flatInvocationIndex();
     uint queueHalf = passParams.bounce & 1u;
     if (i >= queueCounters[COUNTER_RAYS + queueHalf]) return;
     HitRecord hit = hits[i];
+    RayRecord record = rays[queueHalf * frame.slotCount + i];
     bool lit = false;
     if (hit.triangle != NO_HIT) {
         Vertex vertex;
         vertex.ray = i;
-        vertex.record = rays[queueHalf * frame.slotCount + i];
-        vertex.surface = makeSurfacePoint(hit, vertex.record.direction);
-        PathState state = pathStates[vertex.record.slot];
+        vertex.record = record;
+        vertex.surface = makeSurfacePoint(hit, record.origin, record.direction);
+        PathState state = pathStates[record.slot];
         if (frame.integrator == INTEGRATOR_NORMALS) {
             state.radiance = 0.5 * vertex.surface.rawShadingNormal + 0.5;
         } else if (frame.integrator == INTEGRATOR_PATH) {
@@ -163,7 +194,9 @@ void main() {
         } else {
             lit = shadeDirect(vertex, state);
         }
-        pathStates[vertex.record.slot] = state;
+        pathStates[record.slot] = state;
+    } else {
+        shadeMiss(record);
     }
     if (!lit) clearLightSamples(i);
 }

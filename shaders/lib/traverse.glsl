@@ -1,11 +1,15 @@
 // traverse.glsl — the stackless skip-link walk of the flattened BVH, exactly as host/bvh's
 // closestHitStackless walks it: children in stored order, a missed box or a finished leaf
-// continues at missIndex, an entered interior node at index + 1. Needs frame, bvhNodes and
-// triangles declared.
+// continues at missIndex, an entered interior node at index + 1. A leaf's primitives are
+// triangles or spheres (FEATURE_SPHERES); a crossing of an alpha-masked material's cut-out
+// (FEATURE_ALPHA_MASK) is no hit, for every kind of ray, as the reference's AlphaMaskFilter
+// decides. Needs what lib/materials.glsl needs, and bvhNodes.
 #ifndef VKPT_TRAVERSE_GLSL
 #define VKPT_TRAVERSE_GLSL
 
+#include "lib/materials.glsl"
 #include "shared/intersect.h"
+#include "shared/sphere.h"
 
 struct Traversal {
     HitRecord hit;  // the closest hit found, triangle NO_HIT when none
@@ -13,6 +17,26 @@ struct Traversal {
     uint nodesVisited;
     uint triangleTests;
 };
+
+// The ray's crossing of primitive `index` in (tMin, tMax), unless it is an alpha-masked cut-out.
+TriangleHit testPrimitive(uint index, vec3 origin, vec3 direction, ShearedRay sheared, float tMin,
+                          float tMax) {
+    Triangle primitive = triangles[index];
+    bool sphere = featureSpheres && isSpherePrimitive(primitive);
+    TriangleHit h;
+    if (sphere) {
+        h = intersectSphere(origin, direction, primitive.v0, primitive.v1.x, tMin, tMax);
+    } else {
+        h = intersectTriangleWatertight(origin, sheared, primitive.v0, primitive.v1, primitive.v2,
+                                        tMin, tMax);
+    }
+    if (featureAlphaMask && h.hit) {
+        vec3 sphereNormal =
+            sphere ? sphereNormalAt(origin + h.t * direction, primitive.v0) : vec3(0.0);
+        if (alphaMasked(index, primitive, h.u, h.v, sphereNormal)) h.hit = false;
+    }
+    return h;
+}
 
 // The loop runs while index < nodeCount: every node index is below it and BVH_END is not.
 // Mesa 22.3's lavapipe silently leaves loops after 65,535 iterations per SIMD vector
@@ -42,9 +66,7 @@ Traversal walkBvh(vec3 origin, vec3 direction, float tMin, float tMax, bool stop
         uint end = first + leafTriangleCount(node.leafTriangles);
         for (uint i = first; i < end; ++i) {
             ++walk.triangleTests;
-            Triangle tri = triangles[i];
-            TriangleHit h =
-                intersectTriangleWatertight(origin, sheared, tri.v0, tri.v1, tri.v2, tMin, walk.hit.t);
+            TriangleHit h = testPrimitive(i, origin, direction, sheared, tMin, walk.hit.t);
             if (!h.hit) continue;
             walk.hit = HitRecord(h.t, h.u, h.v, i);
             if (stopAtFirst) break;

@@ -14,7 +14,10 @@ namespace vkpt::gpu {
 
 // ---------------------------------------------------------------------------------------------
 // Bindings of descriptor set 0 (plain ints: GLSL layout qualifiers take them). Each kernel
-// declares only the buffers it uses, and its pipeline layout lists exactly those.
+// declares only the buffers it uses, and its pipeline layout lists exactly those. A scene
+// array a scene does not have (no textures, one emitter, no environment map) is not
+// uploaded: its bindings get a small placeholder buffer that the specialised kernels never
+// read (host/render/device_scene.h).
 #define BINDING_FRAME_PARAMS 0
 #define BINDING_BVH_NODES 1
 #define BINDING_TRIANGLES 2
@@ -29,6 +32,13 @@ namespace vkpt::gpu {
 #define BINDING_ACTIVE_PIXELS 11
 #define BINDING_QUEUE_COUNTERS 12
 #define BINDING_DISPATCH_ARGS 13
+#define BINDING_TRIANGLE_UVS 14       // vec2, three per primitive (TEXCOORD_0)
+#define BINDING_TEXTURES 15           // TextureInfo
+#define BINDING_TEXTURE_TEXELS 16     // uint, RGBA8 texels of every texture
+#define BINDING_EMITTER_CDF 17        // float, inclusive selection CDF (more than one emitter)
+#define BINDING_ENVIRONMENT_TEXELS 18 // vec4, the environment map
+#define BINDING_ENVIRONMENT_CDF 19    // float, the environment map's sampling CDF
+#define BINDING_COUNT 20
 
 // ---------------------------------------------------------------------------------------------
 // What every kernel needs to know about the render, uploaded once (buffer frameParams).
@@ -55,6 +65,7 @@ struct FrameParams {
     uint pixelCount;         // each half of the activePixels buffer holds this many
     uint nodeCount;
     float sampleClamp; // --clamp: largest component a sample may keep; SAMPLE_CLAMP_OFF: none
+    EnvironmentParams environment; // emitterIndex NO_EMITTER: rays that leave see black
 };
 
 // Push constants: what changes from dispatch to dispatch.
@@ -157,9 +168,10 @@ struct PixelState {
 #define DISPATCH_WORDS 8u
 
 #ifdef __cplusplus
-static_assert(sizeof(FrameParams) == 128 && offsetof(FrameParams, seed) == 64 &&
+static_assert(sizeof(FrameParams) == 160 && offsetof(FrameParams, seed) == 64 &&
               offsetof(FrameParams, adaptiveDarkFloor) == 108 &&
-              offsetof(FrameParams, nodeCount) == 120 && offsetof(FrameParams, sampleClamp) == 124);
+              offsetof(FrameParams, nodeCount) == 120 && offsetof(FrameParams, sampleClamp) == 124 &&
+              offsetof(FrameParams, environment) == 128);
 static_assert(sizeof(PassParams) == 32);
 static_assert(sizeof(PathState) == 48 && offsetof(PathState, radiance) == 16 &&
               offsetof(PathState, lightScale) == 32 && offsetof(PathState, previousBsdfPdf) == 44);

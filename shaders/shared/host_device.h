@@ -13,16 +13,23 @@
 namespace vkpt::gpu {
 // The GLSL built-ins that shared code uses, so one spelling compiles on both sides.
 using glm::abs;
+using glm::atan; // atan(y, x) is GLSL's two-argument arctangent
 using glm::clamp;
 using glm::cross;
 using glm::dot;
 using glm::floatBitsToInt;
 using glm::floatBitsToUint;
+using glm::floor;
+using glm::fract;
 using glm::intBitsToFloat;
+using glm::isinf;
+using glm::isnan;
 using glm::length;
 using glm::max;
 using glm::min;
+using glm::mix;
 using glm::normalize;
+using glm::pow;
 using glm::uintBitsToFloat;
 using std::cos;
 using std::sin;
@@ -77,7 +84,12 @@ VKPT_FN uint leafTriangleCount(uint leafTriangles) { return leafTriangles & BVH_
 // ---------------------------------------------------------------------------------------------
 // Geometry, in BVH leaf order. Vertices rather than edges, so that a watertight test can
 // use the same data as Möller–Trumbore (kept in intersect.h for comparison).
+// A record is a triangle or, with PRIMITIVE_SPHERE set in sourceIndex, an analytic sphere:
+// centre v0, radius v1.x (v2 unused). Both kinds share the BVH's leaves, so one walk meets
+// both; scenes without spheres compile the sphere test out (FEATURE_SPHERES).
 #define NO_EMITTER 0xffffffffu
+#define PRIMITIVE_SPHERE 0x80000000u
+#define PRIMITIVE_SOURCE_MASK 0x7fffffffu
 
 struct Triangle {
     vec3 v0;
@@ -85,8 +97,12 @@ struct Triangle {
     vec3 v1;
     uint emitterIndex; // index into emitters, NO_EMITTER when the material does not emit
     vec3 v2;
-    uint sourceIndex; // index in the loaded scene's triangle list, before BVH ordering
+    uint sourceIndex; // index in the loaded scene's triangle (or sphere) list | PRIMITIVE_SPHERE
 };
+
+VKPT_FN bool isSpherePrimitive(Triangle primitive) {
+    return (primitive.sourceIndex & PRIMITIVE_SPHERE) != 0u;
+}
 
 // Shading normals, one record per triangle in the same order (w unused, kept for std430).
 struct TriangleNormals {
@@ -95,34 +111,115 @@ struct TriangleNormals {
     vec4 n2;
 };
 
+// Texture coordinates (TEXCOORD_0) live in their own buffer, three vec2 per primitive in BVH
+// order (triangleUvs[3i + k]), present only when the scene has textures.
+
 // ---------------------------------------------------------------------------------------------
-// Materials: the glTF metallic-roughness parameters as loaded. Rendering is Lambertian with
-// albedo baseColor.rgb for now; metallic, roughness and alpha are kept for the BSDF to come.
+// Materials: glTF metallic-roughness (docs/scene-model.md). A material without the flag
+// MATERIAL_METALLIC_ROUGHNESS is purely Lambertian: metallic 0 and specular 0
+// (KHR_materials_specular) with no metallic-roughness texture, the "diffuse" kind, which
+// scenes made only of it compile without the microfacet code.
 #define MATERIAL_DOUBLE_SIDED 1u
+#define MATERIAL_METALLIC_ROUGHNESS 2u
 
 #define ALPHA_MODE_OPAQUE 0u
 #define ALPHA_MODE_MASK 1u
 #define ALPHA_MODE_BLEND 2u
+
+#define NO_TEXTURE 0xffffffffu
+
+// A material's use of a texture: which one, and the KHR_texture_transform of TEXCOORD_0 as
+// the first two rows of a 3×3 matrix: uv' = (dot(row0, (u, v, 1)), dot(row1, (u, v, 1))).
+struct TextureSlot {
+    vec3 transformRow0;
+    uint texture; // index into textures, NO_TEXTURE when the factor alone applies
+    vec3 transformRow1;
+    uint unused0;
+};
 
 struct Material {
     vec4 baseColor; // linear RGBA factor
     vec3 emission;  // emitted radiance: emissiveFactor × KHR_materials_emissive_strength
     uint flags;     // MATERIAL_* bits
     float metallic;
-    float roughness;
+    float roughness; // perceptual; the GGX α is roughness²
     float alphaCutoff;
-    uint alphaMode; // ALPHA_MODE_*
+    uint alphaMode;     // ALPHA_MODE_*
+    vec3 specularColor; // KHR_materials_specular specularColorFactor (1 when absent)
+    float specular;     // KHR_materials_specular specularFactor (1 when absent)
+    TextureSlot baseColorTexture;         // sRGB; alpha in .a
+    TextureSlot metallicRoughnessTexture; // linear; roughness in .g, metallic in .b
+    TextureSlot emissiveTexture;          // sRGB
 };
 
 // ---------------------------------------------------------------------------------------------
-// Area lights: every emitting triangle, chosen with probability proportional to its power
-// (emitted luminance × area × emitting sides). cdf is inclusive, so the last entry is 1.
-struct Emitter {
-    uint triangleIndex;
-    float area;
-    float selectProbability;
-    float cdf;
+// Textures: RGBA8 texels packed one per uint (R in the low byte, as unpackUnorm4x8 reads
+// them) in one storage buffer, each texture a row-major block starting at texelOffset, row 0
+// at v = 0. No descriptor indexing is needed, so lavapipe can run it; the limit is the
+// storage buffer's size (docs/scene-model.md).
+#define TEXTURE_WRAP_REPEAT 0u
+#define TEXTURE_WRAP_CLAMP 1u
+#define TEXTURE_WRAP_MIRROR 2u
+#define TEXTURE_FILTER_NEAREST 16u // sampler bit; bilinear otherwise
+
+struct TextureInfo {
+    uint texelOffset;
+    uint width;
+    uint height;
+    uint samplerBits; // wrapS | wrapT << 2 | TEXTURE_FILTER_NEAREST ("sampler" is a GLSL type)
 };
+
+// ---------------------------------------------------------------------------------------------
+// Emitters: everything next-event estimation samples. Emitting triangles and spheres,
+// KHR_lights_punctual lights and the environment, chosen with probability proportional to
+// their power; the inclusive selection CDF is a separate buffer (emitterCdf), absent when
+// the scene has one emitter.
+#define EMITTER_TRIANGLE 0u
+#define EMITTER_SPHERE 1u
+#define EMITTER_POINT 2u
+#define EMITTER_SPOT 3u
+#define EMITTER_DIRECTIONAL 4u
+#define EMITTER_ENVIRONMENT 5u
+
+struct Emitter {
+    vec3 position; // point and spot lights
+    uint kind;     // EMITTER_*
+    vec3 direction; // spot and directional lights: unit, the way the light travels
+    uint primitive; // triangle and sphere emitters: BVH-ordered index into triangles
+    vec3 intensity; // point and spot: candela × colour; directional: lux × colour
+    float range;    // point and spot: KHR_lights_punctual range, 0 when unlimited
+    float area;     // triangle and sphere emitters
+    float selectProbability;
+    float cosInnerCone; // spot lights
+    float cosOuterCone;
+};
+
+// The environment seen by rays that leave the scene: a constant radiance, or an
+// equirectangular map (environmentTexels, width × height RGB, row 0 at the top, +Y up)
+// times `radiance`, importance sampled by the luminance × sin θ CDF in environmentCdf:
+// height rows of width conditional entries, then the height marginal entries.
+struct EnvironmentParams {
+    vec3 radiance; // constant colour, or the map's scale
+    uint width;    // 0: no map
+    uint height;
+    uint emitterIndex; // NO_EMITTER: no environment
+    uint unused0;
+    uint unused1;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Features a kernel is specialised for: the constant_id of each specialisation constant
+// (bool). A scene's pipelines set exactly the features it uses; --general sets all of them.
+#define FEATURE_METALLIC_ROUGHNESS 0
+#define FEATURE_TEXTURES 1
+#define FEATURE_ALPHA_MASK 2
+#define FEATURE_SPHERES 3
+#define FEATURE_PUNCTUAL_LIGHTS 4
+#define FEATURE_ENVIRONMENT 5
+#define FEATURE_ENVIRONMENT_MAP 6
+#define FEATURE_EMITTER_CDF 7
+#define FEATURE_DOUBLE_SIDED 8
+#define FEATURE_COUNT 9
 
 // ---------------------------------------------------------------------------------------------
 // Pinhole camera. Pixel (0, 0) is the top-left; a sample at (x + u, y + v) maps to the
@@ -145,10 +242,21 @@ static_assert(sizeof(Triangle) == 48 && offsetof(Triangle, materialIndex) == 12 
               offsetof(Triangle, v1) == 16 && offsetof(Triangle, emitterIndex) == 28 &&
               offsetof(Triangle, v2) == 32 && offsetof(Triangle, sourceIndex) == 44);
 static_assert(sizeof(TriangleNormals) == 48 && offsetof(TriangleNormals, n2) == 32);
-static_assert(sizeof(Material) == 48 && offsetof(Material, emission) == 16 &&
+static_assert(sizeof(TextureSlot) == 32 && offsetof(TextureSlot, texture) == 12 &&
+              offsetof(TextureSlot, transformRow1) == 16);
+static_assert(sizeof(Material) == 160 && offsetof(Material, emission) == 16 &&
               offsetof(Material, flags) == 28 && offsetof(Material, metallic) == 32 &&
-              offsetof(Material, alphaMode) == 44);
-static_assert(sizeof(Emitter) == 16 && offsetof(Emitter, cdf) == 12);
+              offsetof(Material, alphaMode) == 44 && offsetof(Material, specularColor) == 48 &&
+              offsetof(Material, specular) == 60 && offsetof(Material, baseColorTexture) == 64 &&
+              offsetof(Material, metallicRoughnessTexture) == 96 &&
+              offsetof(Material, emissiveTexture) == 128);
+static_assert(sizeof(TextureInfo) == 16);
+static_assert(sizeof(Emitter) == 64 && offsetof(Emitter, direction) == 16 &&
+              offsetof(Emitter, primitive) == 28 && offsetof(Emitter, intensity) == 32 &&
+              offsetof(Emitter, range) == 44 && offsetof(Emitter, area) == 48 &&
+              offsetof(Emitter, cosOuterCone) == 60);
+static_assert(sizeof(EnvironmentParams) == 32 && offsetof(EnvironmentParams, width) == 12 &&
+              offsetof(EnvironmentParams, emitterIndex) == 20);
 static_assert(sizeof(Camera) == 64 && offsetof(Camera, right) == 16 &&
               offsetof(Camera, up) == 32 && offsetof(Camera, width) == 44 &&
               offsetof(Camera, forward) == 48 && offsetof(Camera, height) == 60);

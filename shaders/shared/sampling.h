@@ -35,6 +35,11 @@ VKPT_FN vec3 basisToWorld(Basis basis, vec3 v) {
     return v.x * basis.tangent + v.y * basis.bitangent + v.z * basis.normal;
 }
 
+// The inverse of basisToWorld: the basis is orthonormal, so its transpose undoes it.
+VKPT_FN vec3 worldToBasis(Basis basis, vec3 v) {
+    return vec3(dot(v, basis.tangent), dot(v, basis.bitangent), dot(v, basis.normal));
+}
+
 // Malley's method: a uniform disk point lifted to the hemisphere; pdf = cos θ / π.
 VKPT_FN vec3 sampleCosineHemisphere(vec2 u) {
     float r = sqrt(u.x);
@@ -53,6 +58,17 @@ VKPT_FN vec3 sampleUniformHemisphere(vec2 u) {
 }
 
 VKPT_FN float uniformHemispherePdf() { return 0.5f * VKPT_INV_PI; }
+
+// Uniform over the whole sphere: z uniform in [-1, 1] (Archimedes' hat-box theorem);
+// pdf = 1 / (4π).
+VKPT_FN vec3 sampleUniformSphere(vec2 u) {
+    float z = 1.0f - 2.0f * u.x;
+    float r = sqrt(max(0.0f, 1.0f - z * z));
+    float phi = 2.0f * VKPT_PI * u.y;
+    return vec3(r * cos(phi), r * sin(phi), z);
+}
+
+VKPT_FN float uniformSpherePdf() { return 0.25f * VKPT_INV_PI; }
 
 // Uniform point on a triangle as barycentrics (b0, b1, b2): pbrt-v3's square-root warp
 // (Osada et al. 2002); the point is b0·v0 + b1·v1 + b2·v2.

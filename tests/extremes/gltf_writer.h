@@ -3,6 +3,8 @@
 // origin through the node tree. Written with tinygltf, buffers embedded as data URIs.
 #pragma once
 
+#include <algorithm>
+
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
@@ -37,6 +39,11 @@ public:
         m.pbrMetallicRoughness.baseColorFactor = {albedo.x, albedo.y, albedo.z, 1.0};
         m.pbrMetallicRoughness.metallicFactor = 0.0;
         m.emissiveFactor = {emission.x, emission.y, emission.z};
+        // specularFactor 0: the Lambertian "diffuse" kind the extreme-case answers assume.
+        tinygltf::Value::Object specular;
+        specular["specularFactor"] = tinygltf::Value(0.0);
+        m.extensions["KHR_materials_specular"] = tinygltf::Value(specular);
+        addExtensionUsed("KHR_materials_specular");
         model_.materials.push_back(m);
         return int(model_.materials.size() - 1);
     }
@@ -71,6 +78,11 @@ public:
     }
 
     void write(const std::string& path) { writeModel(model_, path); }
+
+    void addExtensionUsed(const std::string& name) {
+        auto& used = model_.extensionsUsed;
+        if (std::find(used.begin(), used.end(), name) == used.end()) used.push_back(name);
+    }
 
     static void writeModel(tinygltf::Model& model, const std::string& path) {
         tinygltf::TinyGLTF io;

@@ -31,9 +31,15 @@ struct SharedStructs {
     std::vector<Triangle> triangles;
     std::vector<TriangleNormals> triangleNormals;
     std::vector<Material> materials;
+    std::vector<TextureInfo> textures;
     std::vector<Emitter> emitters;
+    std::vector<EnvironmentParams> environments;
     std::vector<Camera> cameras;
 };
+
+TextureSlot makeTextureSlot(Values& x) {
+    return {x.v3(), x.u(), x.v3(), x.u()};
+}
 
 // Field by field in declaration order (designated initialisers would let a field be missed).
 SharedStructs makeStructs() {
@@ -43,8 +49,15 @@ SharedStructs makeStructs() {
         s.bvhNodes.push_back({x.v3(), x.u(), x.v3(), x.u()});
         s.triangles.push_back({x.v3(), x.u(), x.v3(), x.u(), x.v3(), x.u()});
         s.triangleNormals.push_back({x.v4(), x.v4(), x.v4()});
-        s.materials.push_back({x.v4(), x.v3(), x.u(), x.f(), x.f(), x.f(), x.u()});
-        s.emitters.push_back({x.u(), x.f(), x.f(), x.f()});
+        Material m{x.v4(), x.v3(), x.u(), x.f(), x.f(), x.f(), x.u(), x.v3(), x.f(), {}, {}, {}};
+        m.baseColorTexture = makeTextureSlot(x);
+        m.metallicRoughnessTexture = makeTextureSlot(x);
+        m.emissiveTexture = makeTextureSlot(x);
+        s.materials.push_back(m);
+        s.textures.push_back({x.u(), x.u(), x.u(), x.u()});
+        s.emitters.push_back(
+            {x.v3(), x.u(), x.v3(), x.u(), x.v3(), x.f(), x.f(), x.f(), x.f(), x.f()});
+        s.environments.push_back({x.v3(), x.u(), x.u(), x.u(), x.u(), x.u()});
         s.cameras.push_back({x.v3(), x.f(), x.v3(), x.f(), x.v3(), x.u(), x.v3(), x.u()});
     }
     return s;
@@ -63,7 +76,9 @@ std::vector<uint> flatten(const SharedStructs& s) {
     appendWords(words, s.triangles);
     appendWords(words, s.triangleNormals);
     appendWords(words, s.materials);
+    appendWords(words, s.textures);
     appendWords(words, s.emitters);
+    appendWords(words, s.environments);
     appendWords(words, s.cameras);
     return words;
 }
@@ -93,12 +108,15 @@ TEST_F(LayoutRoundTrip, DeviceReadsEveryFieldAtItsCppOffset) {
     const Buffer triangles = structBuffer("triangles", s.triangles);
     const Buffer triangleNormals = structBuffer("triangleNormals", s.triangleNormals);
     const Buffer materials = structBuffer("materials", s.materials);
+    const Buffer textures = structBuffer("textures", s.textures);
     const Buffer emitters = structBuffer("emitters", s.emitters);
+    const Buffer environments = structBuffer("environments", s.environments);
     const Buffer cameras = structBuffer("cameras", s.cameras);
     const Buffer words = makeStorageBuffer("words", LAYOUT_TOTAL_WORDS * sizeof(uint));
-    const Kernel kernel = makeKernel("read_layouts", 7, 0);
+    const Kernel kernel = makeKernel("read_layouts", 9, 0);
     runKernel(kernel,
-              {&bvhNodes, &triangles, &triangleNormals, &materials, &emitters, &cameras, &words},
+              {&bvhNodes, &triangles, &triangleNormals, &materials, &textures, &emitters,
+               &environments, &cameras, &words},
               LAYOUT_COUNT);
 
     const std::vector<uint> expected = flatten(s);
@@ -118,11 +136,15 @@ TEST_F(LayoutRoundTrip, DeviceWritesEveryFieldAtItsCppOffset) {
     const Buffer triangleNormals =
         makeStorageBuffer("triangleNormals", LAYOUT_COUNT * sizeof(TriangleNormals));
     const Buffer materials = makeStorageBuffer("materials", LAYOUT_COUNT * sizeof(Material));
+    const Buffer textures = makeStorageBuffer("textures", LAYOUT_COUNT * sizeof(TextureInfo));
     const Buffer emitters = makeStorageBuffer("emitters", LAYOUT_COUNT * sizeof(Emitter));
+    const Buffer environments =
+        makeStorageBuffer("environments", LAYOUT_COUNT * sizeof(EnvironmentParams));
     const Buffer cameras = makeStorageBuffer("cameras", LAYOUT_COUNT * sizeof(Camera));
-    const Kernel kernel = makeKernel("write_layouts", 7, 0);
+    const Kernel kernel = makeKernel("write_layouts", 9, 0);
     runKernel(kernel,
-              {&bvhNodes, &triangles, &triangleNormals, &materials, &emitters, &cameras, &words},
+              {&bvhNodes, &triangles, &triangleNormals, &materials, &textures, &emitters,
+               &environments, &cameras, &words},
               LAYOUT_COUNT);
 
     expectSameBytes(download<BvhNode>(context(), bvhNodes, LAYOUT_COUNT), s.bvhNodes, "bvhNodes");
@@ -132,7 +154,11 @@ TEST_F(LayoutRoundTrip, DeviceWritesEveryFieldAtItsCppOffset) {
                     s.triangleNormals, "triangleNormals");
     expectSameBytes(download<Material>(context(), materials, LAYOUT_COUNT), s.materials,
                     "materials");
+    expectSameBytes(download<TextureInfo>(context(), textures, LAYOUT_COUNT), s.textures,
+                    "textures");
     expectSameBytes(download<Emitter>(context(), emitters, LAYOUT_COUNT), s.emitters, "emitters");
+    expectSameBytes(download<EnvironmentParams>(context(), environments, LAYOUT_COUNT),
+                    s.environments, "environments");
     expectSameBytes(download<Camera>(context(), cameras, LAYOUT_COUNT), s.cameras, "cameras");
 }
 

@@ -20,7 +20,11 @@ class SameSeed : public GpuTest {
 protected:
     void expectAgreement(const std::string& name, const std::string& scenePath,
                          const RenderSettings& settings, const WavefrontOptions& options = {}) {
-        LoadedTestScene scene = loadTestScene(scenePath);
+        expectAgreement(name, loadTestScene(scenePath), settings, options);
+    }
+
+    void expectAgreement(const std::string& name, const LoadedTestScene& scene,
+                         const RenderSettings& settings, const WavefrontOptions& options = {}) {
         RenderStats gpuStats, cpuStats;
         RenderOutput gpu = renderOnDevice(context(), scene, settings, &gpuStats, options);
         RenderOutput cpu = renderTestScene(scene, settings, &cpuStats);
@@ -111,6 +115,29 @@ TEST_F(SameSeed, SharedCornellBoxMatchesTheReference) {
 TEST_F(SameSeed, EmittingSidesMatchTheReference) {
     RenderSettings settings = testSettings(24, 8);
     expectAgreement("emission_sides", "test/emission-sides.gltf", settings);
+}
+
+// The scene model's feature test scenes (scenes/test/features: spheres, GGX materials,
+// textures and alpha cut-outs, punctual lights, the environment map), each under the path
+// tracer and both direct estimators.
+TEST_F(SameSeed, FeatureTestScenesMatchTheReference) {
+    const std::vector<std::string> scenes = featureTestScenes();
+    if (scenes.empty()) GTEST_SKIP() << "no scenes in " << scenePath("test/features");
+    for (const std::string& path : scenes) {
+        SCOPED_TRACE(path);
+        LoadedTestScene scene = loadFeatureTestScene(path);
+        const std::string name = std::filesystem::path(path).stem().string();
+        RenderSettings settings = testSettings(24, 8);
+        settings.seed = 6;
+        settings.lightSamples = 2;
+        expectAgreement(name + "_path", scene, settings);
+        settings = testSettings(16, 4);
+        settings.integrator = Integrator::Direct;
+        settings.lightSamples = 2;
+        expectAgreement(name + "_direct_light", scene, settings);
+        settings.lightSampling = LightSampling::Hemisphere;
+        expectAgreement(name + "_direct_hemisphere", scene, settings);
+    }
 }
 
 class DifferentSeeds : public GpuTest {

@@ -1,8 +1,9 @@
 // traversal_kernel_test.cpp — trace_closest and trace_shadow, run on uploaded ray lists, return
 // what the reference's ordered stack walk returns (closestHitStack, anyHitStack) on 10^4 rays
 // per scene: the Cornell box, the deep-BVH scene (whose long walks lavapipe's loop limit would
-// cut short) and a shared glTF scene. A last test builds a BVH whose walks must exceed that
-// limit and checks that the kernels report it instead of answering wrongly in silence.
+// cut short), scenes with spheres and alpha-masked cut-outs (the reference's AlphaMaskFilter)
+// and a shared glTF scene. A last test builds a BVH whose walks must exceed that limit and
+// checks that the kernels report it instead of answering wrongly in silence.
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -10,13 +11,20 @@
 
 #include "bvh/bvh_traverse.h"
 #include "bvh/synthetic_scenes.h"
+#include "feature_scenes.h"
+#include "reference/scene_tracer.h"
 #include "render/ray_queries.h"
 #include "shared/camera.h"
 #include "shared/intersect.h"
+#include "shared/sphere.h"
 #include "wavefront_test_support.h"
 
 namespace vkpt::test {
 namespace {
+
+using feature_scenes::featureScenes;
+using feature_scenes::NamedScene;
+using feature_scenes::prepareTestScene;
 
 constexpr int kRays = 10000;
 
@@ -85,9 +93,23 @@ bool sameClosestHit(const PreparedScene& scene, const DeviceRay& ray, const gpu:
     if (g.triangle == c.triangle) return close(g.u, c.u, 1e-5f) && close(g.v, c.v, 1e-5f);
     const gpu::Triangle& tri = scene.triangles[g.triangle];
     gpu::TriangleHit h =
-        gpu::intersectTriangle(ray.origin, ray.direction, tri.v0, tri.v1, tri.v2, 0.0f, VKPT_FAR);
+        gpu::isSpherePrimitive(tri)
+            ? gpu::intersectSphere(ray.origin, ray.direction, tri.v0, tri.v1.x, 0.0f, VKPT_FAR)
+            : gpu::intersectTriangle(ray.origin, ray.direction, tri.v0, tri.v1, tri.v2, 0.0f,
+                                     VKPT_FAR);
     return h.hit && close(h.t, c.t, 1e-6f);
 }
+
+// The reference's filter for the scene: alpha MASK cut-outs let rays through (none without).
+class ReferenceFilter {
+public:
+    explicit ReferenceFilter(const PreparedScene& scene) : alphaMask_(scene), scene_(scene) {}
+    const HitFilter* get() const { return scene_.features.alphaMask ? &alphaMask_ : nullptr; }
+
+private:
+    AlphaMaskFilter alphaMask_;
+    const PreparedScene& scene_;
+};
 
 struct WalkFigures {
     double meanNodes = 0.0;
@@ -116,10 +138,12 @@ protected:
             rays.push_back(maker.next());
         DeviceRayQueries queries(context(), scene.prepared);
         std::vector<gpu::HitRecord> hits = queries.closest(rays);
+        ReferenceFilter filter(scene.prepared);
         int disagreements = 0, hitCount = 0;
         for (std::size_t i = 0; i < rays.size(); ++i) {
-            ClosestHit cpu = closestHitStack(scene.prepared.tree, scene.prepared.triangles,
-                                             {rays[i].origin, rays[i].direction});
+            ClosestHit cpu =
+                closestHitStack(scene.prepared.tree, scene.prepared.triangles,
+                                {rays[i].origin, rays[i].direction, 0.0f, VKPT_FAR, filter.get()});
             hitCount += cpu.hit ? 1 : 0;
             if (sameClosestHit(scene.prepared, rays[i], hits[i], cpu)) continue;
             if (++disagreements <= 5)
@@ -145,10 +169,12 @@ protected:
             rays.push_back(maker.nextSegment());
         DeviceRayQueries queries(context(), scene.prepared);
         std::vector<bool> occluded = queries.occluded(rays);
+        ReferenceFilter filter(scene.prepared);
         int disagreements = 0, blocked = 0;
         for (std::size_t i = 0; i < rays.size(); ++i) {
-            bool cpu = anyHitStack(scene.prepared.tree, scene.prepared.triangles,
-                                   {rays[i].origin, rays[i].direction, 0.0f, rays[i].tMax});
+            bool cpu =
+                anyHitStack(scene.prepared.tree, scene.prepared.triangles,
+                            {rays[i].origin, rays[i].direction, 0.0f, rays[i].tMax, filter.get()});
             blocked += cpu ? 1 : 0;
             if (occluded[i] == cpu) continue;
             if (++disagreements <= 5)
@@ -178,6 +204,16 @@ TEST_F(DeviceTraversal, ClosestHitsMatchTheStackWalkInTheDeepBvh) {
 
 TEST_F(DeviceTraversal, AnyHitsMatchTheStackWalkInTheDeepBvh) {
     expectAnyHitMatchesStack(loadTestScene("test/deep-bvh.gltf"), "deep-bvh");
+}
+
+// Spheres among the triangles, and alpha cut-outs (textured, on triangles and on a sphere).
+TEST_F(DeviceTraversal, SpheresAndAlphaCutOutsMatchTheStackWalk) {
+    for (const NamedScene& named : featureScenes()) {
+        if (named.name != "spheres" && named.name != "alpha_mask") continue;
+        LoadedTestScene scene = prepareTestScene(named.make());
+        expectClosestMatchesStack(scene, named.name);
+        expectAnyHitMatchesStack(scene, named.name);
+    }
 }
 
 TEST_F(DeviceTraversal, ClosestAndAnyHitsMatchTheStackWalkInASharedScene) {

@@ -1,13 +1,42 @@
 // wavefront_test_support.cpp — device renders and comparisons for the image tests.
 #include "wavefront_test_support.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 
 #include "image/image_io.h"
+#include "prepare/environment_map.h"
 
 namespace vkpt::test {
+
+std::vector<std::string> featureTestScenes() {
+    const std::filesystem::path directory = scenePath("test/features");
+    std::vector<std::string> found;
+    if (!std::filesystem::is_directory(directory)) return found;
+    for (const auto& entry : std::filesystem::directory_iterator(directory)) {
+        const std::string extension = entry.path().extension().string();
+        if (extension == ".gltf" || extension == ".glb")
+            found.push_back("test/features/" + entry.path().filename().string());
+    }
+    std::sort(found.begin(), found.end());
+    return found;
+}
+
+LoadedTestScene loadFeatureTestScene(const std::string& relative, bool general) {
+    LoadOptions options;
+    options.warnUnsupportedExtensions = false;
+    LoadedTestScene loaded{loadGltfScene(scenePath(relative), options), {}};
+    if (relative == "test/features/environment.gltf")
+        loaded.scene.environment =
+            readEnvironmentMap(scenePath("test/features/sky.hdr"), glm::vec3(1.0f));
+    PrepareOptions prepare;
+    prepare.nearFirstDirection = selectCamera(loaded.scene, {}).forward;
+    prepare.general = general;
+    loaded.prepared = prepareScene(loaded.scene, prepare);
+    return loaded;
+}
 
 RenderOutput renderOnDevice(GpuContext& context, const LoadedTestScene& loaded,
                             const RenderSettings& settings, RenderStats* stats,

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "../support/reference_render.h"
 #include "gpu_test_support.h"
@@ -17,6 +18,14 @@ namespace vkpt::test {
 inline std::string sharedScenePath(const std::string& relative) {
     return std::string(VKPT_SCENES_DIR) + "/../../shared/scenes/" + relative;
 }
+
+// The feature test scenes (scenes/test/features/*.gltf, *.glb), listed when the test runs so
+// that a scene added there is tested without rebuilding; paths relative to scenes/.
+std::vector<std::string> featureTestScenes();
+
+// A scene as loadTestScene loads it; test/features/environment.gltf gets its environment map
+// (test/features/sky.hdr), which vkpt takes from the command line rather than the file.
+LoadedTestScene loadFeatureTestScene(const std::string& relative, bool general = false);
 
 // Renders `loaded` on the device with the camera renderTestScene uses, so that both
 // executors see the same rays. Fails the test if a traversal was cut short.

@@ -33,11 +33,21 @@ struct LoadedTestScene {
     PreparedScene prepared;
 };
 
-inline LoadedTestScene loadTestScene(const std::string& relative) {
+// What a test may add to a scene file: an environment (--env, --env-color) and the general
+// layout (--general).
+struct TestSceneOptions {
+    SceneEnvironment environment;
+    bool general = false;
+};
+
+inline LoadedTestScene loadTestScene(const std::string& relative,
+                                     const TestSceneOptions& sceneOptions = {}) {
     LoadOptions options;
     options.warnUnsupportedExtensions = false;
     LoadedTestScene loaded{loadGltfScene(scenePath(relative), options), {}};
-    loaded.prepared = prepareScene(loaded.scene, {{}, selectCamera(loaded.scene, {}).forward});
+    loaded.scene.environment = sceneOptions.environment;
+    loaded.prepared = prepareScene(
+        loaded.scene, {{}, selectCamera(loaded.scene, {}).forward, sceneOptions.general});
     return loaded;
 }
 

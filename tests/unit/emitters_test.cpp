@@ -2,6 +2,7 @@
 // light-sampling pdf that integrates to 1 over the directions that reach an emitter.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "../support/chi_square.h"
@@ -18,7 +19,8 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-void addQuad(Scene& scene, glm::vec3 corner, glm::vec3 edgeA, glm::vec3 edgeB, std::uint32_t material) {
+void addQuad(Scene& scene, glm::vec3 corner, glm::vec3 edgeA, glm::vec3 edgeB,
+             std::uint32_t material) {
     glm::vec3 p[4] = {corner, corner + edgeA, corner + edgeA + edgeB, corner + edgeB};
     glm::vec3 n = glm::normalize(glm::cross(edgeA, edgeB));
     for (int t : {0, 2}) {
@@ -45,10 +47,25 @@ Scene threeEmitterScene() {
     Scene scene;
     scene.materials = {emitter(glm::vec3(1.0f), false), emitter(glm::vec3(8.0f), false),
                        emitter(glm::vec3(2.0f), true), emitter(glm::vec3(0.0f), false)};
-    addQuad(scene, {-1, -1, -2}, {2, 0, 0}, {0, 2, 0}, 0);       // faces +z, towards the origin
+    addQuad(scene, {-1, -1, -2}, {2, 0, 0}, {0, 2, 0}, 0); // faces +z, towards the origin
     addQuad(scene, {-0.2f, 1.5f, -0.2f}, {0, 0, 0.4f}, {0.4f, 0, 0}, 1); // faces −y
     addQuad(scene, {2, -0.5f, -0.5f}, {0, 1, 0}, {0, 0, 1}, 2);
     addQuad(scene, {-3, -3, 3}, {6, 0, 0}, {0, 6, 0}, 3);
+    return scene;
+}
+
+// The three emitters plus an emitting sphere (radius 0.3, radiance 3) and a point light of
+// 5 cd: every kind of area emitter and a delta light in one list.
+Scene mixedEmitterScene() {
+    Scene scene = threeEmitterScene();
+    scene.materials.push_back(emitter(glm::vec3(3.0f), false));
+    scene.spheres.push_back(
+        {glm::vec3(-1.5f, 0.2f, 0.4f), 0.3f, std::uint32_t(scene.materials.size() - 1)});
+    SceneLight point;
+    point.kind = LightKind::Point;
+    point.position = glm::vec3(0.0f, -1.0f, 1.0f);
+    point.intensity = glm::vec3(5.0f);
+    scene.lights.push_back(point);
     return scene;
 }
 
@@ -57,16 +74,18 @@ TEST(Emitters, ListHoldsEmittingTrianglesWithPowerProportionalProbabilities) {
     ASSERT_EQ(prepared.emitters.size(), 6u);
     double total = 0.0;
     for (const gpu::Emitter& e : prepared.emitters) {
-        const gpu::Triangle& t = prepared.triangles[e.triangleIndex];
+        ASSERT_EQ(e.kind, EMITTER_TRIANGLE);
+        const gpu::Triangle& t = prepared.triangles[e.primitive];
         const gpu::Material& m = prepared.materials[t.materialIndex];
         double sides = (m.flags & MATERIAL_DOUBLE_SIDED) ? 2.0 : 1.0;
-        double power = gpu::luminance(m.emission) * triangleArea(t) * sides;
+        double power = kPi * gpu::luminance(m.emission) * triangleArea(t) * sides;
         total += power;
         EXPECT_NEAR(e.selectProbability, power / prepared.totalEmittedPower, 1e-6);
         EXPECT_EQ(&prepared.emitters[t.emitterIndex], &e);
     }
-    EXPECT_NEAR(total, prepared.totalEmittedPower, 1e-9);
-    EXPECT_EQ(prepared.emitters.back().cdf, 1.0f);
+    EXPECT_NEAR(total, prepared.totalEmittedPower, 1e-9 * total);
+    ASSERT_EQ(prepared.emitterCdf.size(), prepared.emitters.size());
+    EXPECT_EQ(prepared.emitterCdf.back(), 1.0f);
 }
 
 TEST(Emitters, SelectionFrequenciesMatchProbabilitiesByChiSquare) {
@@ -74,54 +93,120 @@ TEST(Emitters, SelectionFrequenciesMatchProbabilitiesByChiSquare) {
     const int n = 100000;
     std::vector<double> observed(prepared.emitters.size(), 0.0), expected(observed.size());
     for (uint32_t i = 0; i < uint32_t(n); ++i)
-        observed[selectEmitter(prepared.emitters, gpu::randomFloats(9, i, 0, 0, DIM_LIGHT_FIRST).x)] += 1;
-    for (std::size_t i = 0; i < expected.size(); ++i) expected[i] = n * double(prepared.emitters[i].selectProbability);
+        observed[selectEmitter(prepared.emitterCdf,
+                               gpu::randomFloats(9, i, 0, 0, DIM_LIGHT_FIRST).x)] += 1;
+    for (std::size_t i = 0; i < expected.size(); ++i)
+        expected[i] = n * double(prepared.emitters[i].selectProbability);
     test::ChiSquareResult r = test::chiSquareTest(observed, expected);
     EXPECT_GT(r.pValue, 0.01) << "chi2 " << r.statistic;
 }
 
 TEST(Emitters, SelectionCoversTheUnitIntervalEnds) {
     PreparedScene prepared = prepareScene(threeEmitterScene());
-    EXPECT_EQ(selectEmitter(prepared.emitters, 0.0f), 0u);
-    EXPECT_EQ(selectEmitter(prepared.emitters, std::nextafter(1.0f, 0.0f)), prepared.emitters.size() - 1);
+    EXPECT_EQ(selectEmitter(prepared.emitterCdf, 0.0f), 0u);
+    EXPECT_EQ(selectEmitter(prepared.emitterCdf, std::nextafter(1.0f, 0.0f)),
+              prepared.emitters.size() - 1);
 }
 
-// ∫ p_light(ω) dω over the sphere = 1 when every emitter point is visible: estimated with
-// uniform directions as 4π·E[p_light], within 4.42 standard errors (p = 1e-5) of 1.
-TEST(Emitters, LightPdfIntegratesToOneOverDirections) {
-    PreparedScene prepared = prepareScene(threeEmitterScene());
+struct PdfMean {
+    double mean = 0.0;
+    double standardError = 0.0;
+};
+
+// 4π·E[p_light(ω)] over uniform directions from `origin`: ∫ p_light dω over the directions
+// that reach an area emitter.
+PdfMean integrateLightPdf(const PreparedScene& prepared, const glm::vec3& origin,
+                          std::uint32_t seed) {
     SceneTracer tracer(prepared);
-    const glm::vec3 origin(0.1f, 0.05f, -0.3f);
     const int n = 400000;
     double sum = 0.0, sumSq = 0.0;
     for (uint32_t i = 0; i < uint32_t(n); ++i) {
-        glm::vec4 u = gpu::randomFloats(5, i, 0, 0, DIM_BSDF);
+        glm::vec4 u = gpu::randomFloats(seed, i, 0, 0, DIM_BSDF);
         float z = 1.0f - 2.0f * u.x, r = std::sqrt(std::max(0.0f, 1.0f - z * z));
         float phi = 2.0f * float(kPi) * u.y;
         glm::vec3 d(r * std::cos(phi), r * std::sin(phi), z);
         ClosestHit hit = tracer.closest(origin, d, RayKind::Extension);
         if (!hit.hit) continue;
-        SurfacePoint s = makeSurfacePoint(prepared, hit, d);
+        SurfacePoint s = makeSurfacePoint(prepared, hit, origin, d);
         double value = 4.0 * kPi * lightPdf(prepared, s, origin);
         sum += value;
         sumSq += value * value;
     }
     double mean = sum / n, variance = sumSq / n - mean * mean;
-    EXPECT_NEAR(mean, 1.0, 4.42 * std::sqrt(variance / n));
+    return {mean, std::sqrt(variance / n)};
+}
+
+// ∫ p_light(ω) dω over the sphere = 1 when every emitter point is visible, within 4.42
+// standard errors (p = 1e-5).
+TEST(Emitters, LightPdfIntegratesToOneOverDirections) {
+    PdfMean m = integrateLightPdf(prepareScene(threeEmitterScene()), {0.1f, 0.05f, -0.3f}, 5);
+    EXPECT_NEAR(m.mean, 1.0, 4.42 * m.standardError);
+}
+
+// Sphere power π·L·4πr², point power 4π·I, and the selection probabilities in their ratio.
+TEST(Emitters, SpheresAndPunctualLightsJoinTheListByPower) {
+    PreparedScene prepared = prepareScene(mixedEmitterScene());
+    ASSERT_EQ(prepared.emitters.size(), 8u);
+    // Surfaces come in BVH order, then the punctual lights.
+    auto sphereAt = std::find_if(prepared.emitters.begin(), prepared.emitters.end(),
+                                 [](const gpu::Emitter& e) { return e.kind == EMITTER_SPHERE; });
+    ASSERT_NE(sphereAt, prepared.emitters.end());
+    const gpu::Emitter& sphere = *sphereAt;
+    const gpu::Emitter& point = prepared.emitters[7];
+    ASSERT_EQ(point.kind, EMITTER_POINT);
+    EXPECT_TRUE(gpu::isSpherePrimitive(prepared.triangles[sphere.primitive]));
+    EXPECT_EQ(prepared.triangles[sphere.primitive].emitterIndex,
+              std::uint32_t(sphereAt - prepared.emitters.begin()));
+    double spherePower = kPi * 3.0 * 4.0 * kPi * 0.3 * 0.3;
+    double pointPower = 4.0 * kPi * 5.0;
+    EXPECT_NEAR(sphere.selectProbability, spherePower / prepared.totalEmittedPower, 1e-6);
+    EXPECT_NEAR(point.selectProbability, pointPower / prepared.totalEmittedPower, 1e-6);
+    EXPECT_TRUE(prepared.usedFeatures.emissiveSpheres);
+    EXPECT_TRUE(prepared.usedFeatures.pointLights);
+    EXPECT_EQ(prepared.usedFeatures.emitterCount, 8u);
+}
+
+// One emitter: no CDF is built, and light sampling takes it without reading one.
+TEST(Emitters, SingleEmitterHasNoCdf) {
+    Scene scene;
+    scene.materials = {emitter(glm::vec3(1.0f), false)};
+    addQuad(scene, {-1, -1, -2}, {2, 0, 0}, {0, 2, 0}, 0);
+    scene.materialIndices.pop_back(); // one triangle of the quad
+    scene.positions.resize(3);
+    scene.normals.resize(3);
+    PreparedScene prepared = prepareScene(scene);
+    ASSERT_EQ(prepared.emitters.size(), 1u);
+    EXPECT_TRUE(prepared.emitterCdf.empty());
+    LightSample light = sampleLight(prepared, glm::vec3(0.0f), glm::vec4(0.9f, 0.3f, 0.3f, 0.0f));
+    EXPECT_TRUE(light.valid);
+    PreparedScene general = prepareScene(scene, {{}, std::nullopt, true});
+    EXPECT_EQ(general.emitterCdf.size(), 1u);
+}
+
+// With an emitting sphere among the triangles, ∫ p_light dω over the directions that reach an
+// area emitter is their share of the selection probability (the point light takes the rest).
+TEST(Emitters, LightPdfWithASphereIntegratesToTheAreaEmittersShare) {
+    PreparedScene prepared = prepareScene(mixedEmitterScene());
+    const double areaShare = 1.0 - double(prepared.emitters[7].selectProbability);
+    PdfMean m = integrateLightPdf(prepared, {0.1f, 0.05f, -0.3f}, 15);
+    EXPECT_NEAR(m.mean, areaShare, 4.42 * m.standardError);
 }
 
 // A light sample's pdf must equal lightPdf() for the same point: the two halves of MIS.
 TEST(Emitters, SampledPdfEqualsEvaluatedPdf) {
-    PreparedScene prepared = prepareScene(threeEmitterScene());
+    PreparedScene prepared = prepareScene(mixedEmitterScene());
     SceneTracer tracer(prepared);
     const glm::vec3 origin(0.1f, 0.05f, -0.3f);
     for (uint32_t i = 0; i < 2000; ++i) {
-        LightSample light = sampleLight(prepared, origin, gpu::randomFloats(6, i, 0, 0, DIM_LIGHT_FIRST));
+        LightSample light =
+            sampleLight(prepared, origin, gpu::randomFloats(6, i, 0, 0, DIM_LIGHT_FIRST));
         ASSERT_TRUE(light.valid);
+        if (light.delta) continue;
         ClosestHit hit = tracer.closest(origin, light.direction, RayKind::Extension);
         ASSERT_TRUE(hit.hit);
-        SurfacePoint s = makeSurfacePoint(prepared, hit, light.direction);
-        EXPECT_NEAR(lightPdf(prepared, s, origin), light.pdfSolidAngle, 1e-3f * light.pdfSolidAngle);
+        SurfacePoint s = makeSurfacePoint(prepared, hit, origin, light.direction);
+        EXPECT_NEAR(lightPdf(prepared, s, origin), light.pdfSolidAngle,
+                    1e-3f * light.pdfSolidAngle);
     }
 }
 

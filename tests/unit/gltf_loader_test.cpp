@@ -209,7 +209,7 @@ TEST(GltfLoader, ListsUnsupportedExtensionsOnceInOneLine) {
     loadGltfScene(path);
     EXPECT_EQ(testing::internal::GetCapturedStderr(),
               path +
-                  ": ignoring unsupported extensions: KHR_texture_transform, NV_materials_mdl\n");
+                  ": ignoring unsupported extensions: EXT_mesh_gpu_instancing, NV_materials_mdl\n");
 }
 
 TEST(GltfLoader, OptionSilencesTheUnsupportedExtensionNote) {
@@ -280,6 +280,25 @@ const InvalidCase kInvalidCases[] = {
      "mesh 0, primitive 0: NORMAL has 2 elements but POSITION has 3"},
     {"MissingAccessor", "missing_accessor.gltf",
      "mesh 0, primitive 0: POSITION: accessor 7 does not exist (the file has 3 accessors)"},
+    {"UnknownLightType", "light_type.gltf",
+     "light 0: type 'area' is not point, spot or directional"},
+    {"NegativeLightIntensity", "light_negative_intensity.gltf",
+     "light 0: intensity must not be negative"},
+    {"SpotInnerConeWiderThanOuter", "light_spot_cone.gltf",
+     "light 0: spot innerConeAngle 0.75 exceeds outerConeAngle 0.5"},
+    {"SphereUnderNonUniformScale", "sphere_non_uniform_scale.gltf",
+     "node 1: sphere under non-uniform scale (1, 2, 1)"},
+    {"TextureWithoutSource", "texture_without_source.gltf",
+     "material 0: baseColorTexture: texture 0 has only a KHR_texture_basisu image, which vkpt "
+     "does not support (only PNG and JPEG)"},
+    {"UndecodableImage", "image_undecodable.gltf",
+     "image 0: cannot decode the PNG data (bad zlib header)"},
+    {"ImageNotPngOrJpeg", "image_not_png.gltf",
+     "image 0: not a PNG or JPEG image (the formats glTF 2.0 allows)"},
+    {"MissingImageFile", "missing_image.gltf",
+     "image 0: cannot find the image file 'missing_image.png'"},
+    {"TextureOnTexcoord1", "texcoord_1.gltf",
+     "material 0: baseColorTexture: reads TEXCOORD_1; only TEXCOORD_0 is supported"},
 };
 
 class GltfLoaderRejects : public testing::TestWithParam<InvalidCase> {};
@@ -323,46 +342,52 @@ struct SharedScene {
     glm::vec3 boundsMax;
     std::size_t cameras;
     std::size_t emissiveMaterials;
+    std::size_t images; // decoded: those the materials' base colour, MR and emissive slots use
 };
 
 // Figures from shared/scenes/README.md (bounds printed there with six significant digits).
 const SharedScene kSharedScenes[] = {
-    {"Box", "Box/Box.glb", 12, {-0.5f, -0.5f, -0.5f}, {0.5f, 0.5f, 0.5f}, 0, 0},
+    {"Box", "Box/Box.glb", 12, {-0.5f, -0.5f, -0.5f}, {0.5f, 0.5f, 0.5f}, 0, 0, 0},
     {"EmissiveStrengthTest",
      "EmissiveStrengthTest/EmissiveStrengthTest.glb",
      90,
      {-8.00261f, -6.00107f, -2.0f},
      {8.00111f, 4.0094f, 1.99893f},
      0,
-     5},
+     5,
+     1},
     {"CornellBox",
      "CornellBox/cornellBox.gltf",
      16732,
      {-5.05f, -5.05f, -5.05f},
      {5.05f, 5.05f, 5.0f},
      1,
-     1},
+     1,
+     0},
     {"DamagedHelmet",
      "DamagedHelmet/DamagedHelmet.glb",
      15452,
      {-0.947459f, -0.900974f, -1.18716f},
      {0.942495f, 0.900995f, 0.812845f},
      0,
-     1},
+     1,
+     3},
     {"ToyCar",
      "ToyCar/ToyCar.gltf",
      108936,
      {-0.0349951f, -0.0162063f, -0.0369811f},
      {0.0384478f, 0.0126166f, 0.0369811f},
      8,
-     1},
+     1,
+     4},
     {"TransmissionTest",
      "TransmissionTest/TransmissionTest.glb",
      128775,
      {-0.976367f, -0.4f, -0.521006f},
      {0.826243f, 0.620546f, 1.36801f},
      1,
-     1},
+     1,
+     8},
 };
 
 std::size_t emissiveMaterialCount(const Scene& scene) {
@@ -390,6 +415,11 @@ TEST_P(GltfLoaderSharedScene, MatchesTheCountsAndBoundsOfTheReadme) {
     EXPECT_EQ(scene.triangleCount() + scene.repairs.zeroAreaTriangles, expected.triangles);
     EXPECT_EQ(scene.cameras.size(), expected.cameras);
     EXPECT_EQ(emissiveMaterialCount(scene), expected.emissiveMaterials);
+    EXPECT_EQ(scene.images.size(), expected.images);
+    for (const SceneImage& image : scene.images)
+        EXPECT_EQ(image.texels.size(), std::size_t(image.width) * image.height) << image.name;
+    // TEXCOORD_0 per triangle corner exactly when some texture is read.
+    EXPECT_EQ(scene.texcoords.size(), expected.images > 0 ? 3 * scene.triangleCount() : 0);
     const Bounds bounds = computeBounds(scene);
     const float tolerance = 1e-5f * glm::length(expected.boundsMax - expected.boundsMin);
     expectNear(bounds.min, expected.boundsMin, tolerance);

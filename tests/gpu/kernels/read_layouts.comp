@@ -13,9 +13,11 @@ VKPT_READONLY_BUFFER(0, BvhNode, bvhNodes)
 VKPT_READONLY_BUFFER(1, Triangle, triangles)
 VKPT_READONLY_BUFFER(2, TriangleNormals, triangleNormals)
 VKPT_READONLY_BUFFER(3, Material, materials)
-VKPT_READONLY_BUFFER(4, Emitter, emitters)
-VKPT_READONLY_BUFFER(5, Camera, cameras)
-VKPT_WRITEONLY_BUFFER(6, uint, words)
+VKPT_READONLY_BUFFER(4, TextureInfo, textures)
+VKPT_READONLY_BUFFER(5, Emitter, emitters)
+VKPT_READONLY_BUFFER(6, EnvironmentParams, environments)
+VKPT_READONLY_BUFFER(7, Camera, cameras)
+VKPT_WRITEONLY_BUFFER(8, uint, words)
 
 uint cursor;
 
@@ -34,6 +36,13 @@ void putVec3(vec3 value) {
 void putVec4(vec4 value) {
     putVec3(value.xyz);
     putFloat(value.w);
+}
+
+void putTextureSlot(TextureSlot slot) {
+    putVec3(slot.transformRow0);
+    putUint(slot.texture);
+    putVec3(slot.transformRow1);
+    putUint(slot.unused0);
 }
 
 void main() {
@@ -67,12 +76,37 @@ void main() {
     putFloat(materials[i].roughness);
     putFloat(materials[i].alphaCutoff);
     putUint(materials[i].alphaMode);
+    putVec3(materials[i].specularColor);
+    putFloat(materials[i].specular);
+    putTextureSlot(materials[i].baseColorTexture);
+    putTextureSlot(materials[i].metallicRoughnessTexture);
+    putTextureSlot(materials[i].emissiveTexture);
+
+    cursor = LAYOUT_OFFSET_TEXTURES + i * LAYOUT_WORDS_TEXTURE_INFO;
+    putUint(textures[i].texelOffset);
+    putUint(textures[i].width);
+    putUint(textures[i].height);
+    putUint(textures[i].samplerBits);
 
     cursor = LAYOUT_OFFSET_EMITTERS + i * LAYOUT_WORDS_EMITTER;
-    putUint(emitters[i].triangleIndex);
+    putVec3(emitters[i].position);
+    putUint(emitters[i].kind);
+    putVec3(emitters[i].direction);
+    putUint(emitters[i].primitive);
+    putVec3(emitters[i].intensity);
+    putFloat(emitters[i].range);
     putFloat(emitters[i].area);
     putFloat(emitters[i].selectProbability);
-    putFloat(emitters[i].cdf);
+    putFloat(emitters[i].cosInnerCone);
+    putFloat(emitters[i].cosOuterCone);
+
+    cursor = LAYOUT_OFFSET_ENVIRONMENTS + i * LAYOUT_WORDS_ENVIRONMENT;
+    putVec3(environments[i].radiance);
+    putUint(environments[i].width);
+    putUint(environments[i].height);
+    putUint(environments[i].emitterIndex);
+    putUint(environments[i].unused0);
+    putUint(environments[i].unused1);
 
     cursor = LAYOUT_OFFSET_CAMERAS + i * LAYOUT_WORDS_CAMERA;
     putVec3(cameras[i].position);

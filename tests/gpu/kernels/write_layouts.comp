@@ -13,9 +13,11 @@ VKPT_WRITEONLY_BUFFER(0, BvhNode, bvhNodes)
 VKPT_WRITEONLY_BUFFER(1, Triangle, triangles)
 VKPT_WRITEONLY_BUFFER(2, TriangleNormals, triangleNormals)
 VKPT_WRITEONLY_BUFFER(3, Material, materials)
-VKPT_WRITEONLY_BUFFER(4, Emitter, emitters)
-VKPT_WRITEONLY_BUFFER(5, Camera, cameras)
-VKPT_READONLY_BUFFER(6, uint, words)
+VKPT_WRITEONLY_BUFFER(4, TextureInfo, textures)
+VKPT_WRITEONLY_BUFFER(5, Emitter, emitters)
+VKPT_WRITEONLY_BUFFER(6, EnvironmentParams, environments)
+VKPT_WRITEONLY_BUFFER(7, Camera, cameras)
+VKPT_READONLY_BUFFER(8, uint, words)
 
 uint cursor;
 
@@ -35,6 +37,15 @@ vec3 takeVec3() {
 vec4 takeVec4() {
     vec3 xyz = takeVec3();
     return vec4(xyz, takeFloat());
+}
+
+TextureSlot takeTextureSlot() {
+    TextureSlot slot;
+    slot.transformRow0 = takeVec3();
+    slot.texture = takeUint();
+    slot.transformRow1 = takeVec3();
+    slot.unused0 = takeUint();
+    return slot;
 }
 
 void main() {
@@ -68,12 +79,37 @@ void main() {
     materials[i].roughness = takeFloat();
     materials[i].alphaCutoff = takeFloat();
     materials[i].alphaMode = takeUint();
+    materials[i].specularColor = takeVec3();
+    materials[i].specular = takeFloat();
+    materials[i].baseColorTexture = takeTextureSlot();
+    materials[i].metallicRoughnessTexture = takeTextureSlot();
+    materials[i].emissiveTexture = takeTextureSlot();
+
+    cursor = LAYOUT_OFFSET_TEXTURES + i * LAYOUT_WORDS_TEXTURE_INFO;
+    textures[i].texelOffset = takeUint();
+    textures[i].width = takeUint();
+    textures[i].height = takeUint();
+    textures[i].samplerBits = takeUint();
 
     cursor = LAYOUT_OFFSET_EMITTERS + i * LAYOUT_WORDS_EMITTER;
-    emitters[i].triangleIndex = takeUint();
+    emitters[i].position = takeVec3();
+    emitters[i].kind = takeUint();
+    emitters[i].direction = takeVec3();
+    emitters[i].primitive = takeUint();
+    emitters[i].intensity = takeVec3();
+    emitters[i].range = takeFloat();
     emitters[i].area = takeFloat();
     emitters[i].selectProbability = takeFloat();
-    emitters[i].cdf = takeFloat();
+    emitters[i].cosInnerCone = takeFloat();
+    emitters[i].cosOuterCone = takeFloat();
+
+    cursor = LAYOUT_OFFSET_ENVIRONMENTS + i * LAYOUT_WORDS_ENVIRONMENT;
+    environments[i].radiance = takeVec3();
+    environments[i].width = takeUint();
+    environments[i].height = takeUint();
+    environments[i].emitterIndex = takeUint();
+    environments[i].unused0 = takeUint();
+    environments[i].unused1 = takeUint();
 
     cursor = LAYOUT_OFFSET_CAMERAS + i * LAYOUT_WORDS_CAMERA;
     cameras[i].position = takeVec3();

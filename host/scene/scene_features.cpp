@@ -1,0 +1,173 @@
+// scene_features.cpp — the feature set of a loaded scene, from what its triangles and spheres
+// actually use: a material, texture or light kind no primitive reaches is not a feature.
+#include "scene/scene_features.h"
+
+#include <algorithm>
+#include <cstring>
+#include <set>
+#include <vector>
+
+#include "shared/intersect.h"
+#include "shared/sampling.h"
+
+namespace vkpt {
+namespace {
+
+// buildEmitters (host/prepare/emitters.h) lists an emitting triangle once however often the
+// soup repeats it: same corners in the same cyclic order (compared bit for bit, −0 as +0) and
+// same material. The count here applies the same rule, so that it is the length of that list.
+using SurfaceKey = std::array<std::uint32_t, 10>;
+
+SurfaceKey surfaceKey(const Scene& scene, std::size_t triangle) {
+    std::array<std::array<std::uint32_t, 3>, 3> corners{};
+    for (std::size_t k = 0; k < 3; ++k) {
+        const glm::vec3 canonical = scene.positions[3 * triangle + k] + glm::vec3(0.0f);
+        std::memcpy(corners[k].data(), &canonical, sizeof(corners[k]));
+    }
+    const auto first = static_cast<std::size_t>(std::min_element(corners.begin(), corners.end()) -
+                                                corners.begin());
+    SurfaceKey key{};
+    for (std::size_t k = 0; k < 3; ++k)
+        for (std::size_t c = 0; c < 3; ++c)
+            key[3 * k + c] = corners[(first + k) % 3][c];
+    key[9] = scene.materialIndices[triangle];
+    return key;
+}
+
+bool emits(const SceneMaterial& material) {
+    return gpu::luminance(material.emission) > 0.0f;
+}
+
+std::vector<char> usedMaterials(const Scene& scene) {
+    std::vector<char> used(scene.materials.size(), 0);
+    for (std::uint32_t material : scene.materialIndices)
+        used[material] = 1;
+    for (const SceneSphere& sphere : scene.spheres)
+        used[sphere.material] = 1;
+    return used;
+}
+
+void addMaterial(const SceneMaterial& material, SceneFeatures& features) {
+    (material.isDiffuseOnly() ? features.diffuseMaterials : features.metallicRoughnessMaterials) =
+        true;
+    features.baseColorTextures |= material.baseColorTexture.texture >= 0;
+    features.metallicRoughnessTextures |= material.metallicRoughnessTexture.texture >= 0;
+    features.emissiveTextures |= material.emissiveTexture.texture >= 0;
+    features.alphaMask |= material.alphaMode == AlphaMode::Mask;
+    features.doubleSided |= material.doubleSided;
+}
+
+std::uint32_t emittingTriangles(const Scene& scene) {
+    std::set<SurfaceKey> surfaces;
+    for (std::size_t t = 0; t < scene.triangleCount(); ++t) {
+        if (!emits(scene.materials[scene.materialIndices[t]])) continue;
+        const glm::vec3* p = &scene.positions[3 * t];
+        if (!(gpu::triangleAreaOf(p[0], p[1], p[2]) > 0.0f)) continue; // never hit, never sampled
+        surfaces.insert(surfaceKey(scene, t));
+    }
+    return static_cast<std::uint32_t>(surfaces.size());
+}
+
+std::uint32_t emittingSpheres(const Scene& scene) {
+    return static_cast<std::uint32_t>(
+        std::count_if(scene.spheres.begin(), scene.spheres.end(), [&](const SceneSphere& s) {
+            return s.radius > 0.0f && emits(scene.materials[s.material]);
+        }));
+}
+
+void addLights(const Scene& scene, SceneFeatures& features) {
+    for (const SceneLight& light : scene.lights) {
+        features.pointLights |= light.kind == LightKind::Point;
+        features.spotLights |= light.kind == LightKind::Spot;
+        features.directionalLights |= light.kind == LightKind::Directional;
+        // A black light carries no power, so light sampling leaves it out.
+        if (gpu::luminance(light.intensity) > 0.0f) ++features.emitterCount;
+    }
+}
+
+void appendIf(bool condition, const char* name, std::vector<std::string>& names) {
+    if (condition) names.emplace_back(name);
+}
+
+std::string joined(const std::vector<std::string>& names) {
+    std::string text;
+    for (const std::string& name : names)
+        text += (text.empty() ? "" : ", ") + name;
+    return text;
+}
+
+} // namespace
+
+std::array<bool, FEATURE_COUNT> SceneFeatures::kernelFeatures() const {
+    std::array<bool, FEATURE_COUNT> on{};
+    on[FEATURE_METALLIC_ROUGHNESS] = metallicRoughnessMaterials;
+    on[FEATURE_TEXTURES] = textures();
+    on[FEATURE_ALPHA_MASK] = alphaMask;
+    on[FEATURE_SPHERES] = spheres;
+    on[FEATURE_PUNCTUAL_LIGHTS] = punctualLights();
+    on[FEATURE_ENVIRONMENT] = environment;
+    on[FEATURE_ENVIRONMENT_MAP] = environmentMap;
+    on[FEATURE_EMITTER_CDF] = emitterCdf();
+    on[FEATURE_DOUBLE_SIDED] = doubleSided;
+    return on;
+}
+
+SceneFeatures analyseScene(const Scene& scene) {
+    SceneFeatures features;
+    const std::vector<char> used = usedMaterials(scene);
+    for (std::size_t m = 0; m < scene.materials.size(); ++m)
+        if (used[m]) addMaterial(scene.materials[m], features);
+    features.triangles = scene.triangleCount() > 0;
+    features.spheres = !scene.spheres.empty();
+    const std::uint32_t triangles = emittingTriangles(scene);
+    const std::uint32_t spheres = emittingSpheres(scene);
+    features.emissiveTriangles = triangles > 0;
+    features.emissiveSpheres = spheres > 0;
+    features.emitterCount = triangles + spheres;
+    addLights(scene, features);
+    features.environment = scene.environment.present();
+    features.environmentMap = features.environment && scene.environment.hasMap();
+    if (features.environment) ++features.emitterCount;
+    return features;
+}
+
+SceneFeatures generalFeatures(const SceneFeatures& used) {
+    SceneFeatures all;
+    all.diffuseMaterials = all.metallicRoughnessMaterials = true;
+    all.baseColorTextures = all.metallicRoughnessTextures = all.emissiveTextures = true;
+    all.alphaMask = all.doubleSided = true;
+    all.triangles = all.spheres = true;
+    all.emissiveTriangles = all.emissiveSpheres = true;
+    all.pointLights = all.spotLights = all.directionalLights = true;
+    all.environment = all.environmentMap = true;
+    all.emitterCount = used.emitterCount;
+    all.general = true;
+    return all;
+}
+
+std::string describeFeatures(const SceneFeatures& features) {
+    std::vector<std::string> names;
+    appendIf(features.diffuseMaterials, "diffuse", names);
+    appendIf(features.metallicRoughnessMaterials, "metallic-roughness", names);
+    std::vector<std::string> textures;
+    appendIf(features.baseColorTextures, "base colour", textures);
+    appendIf(features.metallicRoughnessTextures, "metallic-roughness", textures);
+    appendIf(features.emissiveTextures, "emissive", textures);
+    if (!textures.empty()) names.push_back("textures (" + joined(textures) + ")");
+    appendIf(features.alphaMask, "alpha mask", names);
+    appendIf(features.doubleSided, "double-sided", names);
+    appendIf(features.triangles, "triangles", names);
+    appendIf(features.spheres, "spheres", names);
+    appendIf(features.emissiveTriangles, "emissive triangles", names);
+    appendIf(features.emissiveSpheres, "emissive spheres", names);
+    appendIf(features.pointLights, "point lights", names);
+    appendIf(features.spotLights, "spot lights", names);
+    appendIf(features.directionalLights, "directional lights", names);
+    appendIf(features.environment && !features.environmentMap, "environment colour", names);
+    appendIf(features.environmentMap, "environment map", names);
+    names.push_back(std::to_string(features.emitterCount) +
+                    (features.emitterCount == 1 ? " emitter" : " emitters"));
+    return joined(names);
+}
+
+} // namespace vkpt

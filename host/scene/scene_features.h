@@ -1,0 +1,60 @@
+// scene_features.h — what a scene uses, found once after loading: material kinds, textures,
+// spheres, light kinds, the environment. Both renderers build for exactly this set (the
+// kernels through specialisation constants, the host through the buffers it creates), and
+// --general asks for all of it, for comparison (docs/scene-model.md).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+
+#include "scene/scene.h"
+#include "shared/host_device.h"
+
+namespace vkpt {
+
+struct SceneFeatures {
+    bool diffuseMaterials = false;           // Lambertian-only materials present
+    bool metallicRoughnessMaterials = false; // glTF GGX materials present
+    bool baseColorTextures = false;
+    bool metallicRoughnessTextures = false;
+    bool emissiveTextures = false;
+    bool alphaMask = false;   // some material has alphaMode MASK
+    bool doubleSided = false; // some material is double-sided
+    bool triangles = false;
+    bool spheres = false;
+    bool emissiveTriangles = false;
+    bool emissiveSpheres = false;
+    bool pointLights = false;
+    bool spotLights = false;
+    bool directionalLights = false;
+    bool environment = false;    // a constant colour or a map
+    bool environmentMap = false; // --env image.hdr
+    std::uint32_t emitterCount = 0; // everything light sampling chooses from
+    bool general = false; // --general: all switches on, and the CDF read even for one emitter
+
+    bool textures() const {
+        return baseColorTextures || metallicRoughnessTextures || emissiveTextures;
+    }
+    // TEXCOORD_0 is needed only to read textures.
+    bool textureCoordinates() const { return textures(); }
+    bool punctualLights() const { return pointLights || spotLights || directionalLights; }
+    bool emitterCdf() const { return general || emitterCount > 1; }
+
+    // The specialisation constants (FEATURE_* of shared/host_device.h) of this set.
+    std::array<bool, FEATURE_COUNT> kernelFeatures() const;
+};
+
+// The features `scene` uses; emitterCount counts emitting triangles (a repeated one once),
+// emitting spheres, punctual lights and the environment.
+SceneFeatures analyseScene(const Scene& scene);
+
+// Everything on (and general set): what the --general pipelines are built for. emitterCount
+// is kept from `used`, since it is a count, not a switch.
+SceneFeatures generalFeatures(const SceneFeatures& used);
+
+// "diffuse, metallic-roughness, textures (base colour, emissive), spheres, 3 emitters, ...",
+// for --verbose.
+std::string describeFeatures(const SceneFeatures& features);
+
+} // namespace vkpt

@@ -1,0 +1,282 @@
+#!/usr/bin/env python3
+"""generate_feature_scenes.py — writes the small scenes that exercise one part of vkpt's scene
+model each (scenes/test/features/): analytic spheres, glTF metallic-roughness (GGX)
+materials, textures with KHR_texture_transform and alpha MASK, KHR_lights_punctual lights, and
+a scene lit only by the environment (with a tiny equirectangular .hdr).
+
+Run from anywhere:  python3 scenes/generate_feature_scenes.py
+
+Standard library only; deterministic output. The tests render every scene with vkpt-ref and
+vkpt at one seed and compare them pixel by pixel, so the scenes are small and each feature
+covers a good part of the image. scenes/README.md describes them.
+"""
+
+import math
+import struct
+from pathlib import Path
+
+from generate_loader_scenes import Gltf, data_uri, png_bytes, primitive, write, write_embedded
+
+FEATURES_DIR = Path(__file__).resolve().parent / "test" / "features"
+SPECULAR = "KHR_materials_specular"
+EMISSIVE_STRENGTH = "KHR_materials_emissive_strength"
+TEXTURE_TRANSFORM = "KHR_texture_transform"
+PUNCTUAL = "KHR_lights_punctual"
+SHAPES = "KHR_implicit_shapes"
+UNSIGNED_SHORT = 5123
+
+
+class FeatureScene(Gltf):
+    """A Gltf with the helpers these scenes need: quads and boxes, materials of both kinds,
+    textures, spheres, punctual lights and a camera."""
+
+    def __init__(self):
+        super().__init__()
+        self.roots = []
+        self.extensions = set()
+
+    def use(self, extension):
+        self.extensions.add(extension)
+
+    def material(self, name, base, metallic=0.0, roughness=1.0, diffuse=False, emission=None,
+                 strength=None, double_sided=False, **extra):
+        """diffuse=True: specularFactor 0, the Lambertian kind; else glTF's GGX model."""
+        pbr = {"baseColorFactor": list(base) + ([1.0] if len(base) == 3 else []),
+               "metallicFactor": metallic, "roughnessFactor": roughness}
+        pbr.update(extra.pop("pbr", {}))
+        m = {"name": name, "pbrMetallicRoughness": pbr}
+        extensions = {}
+        if diffuse:
+            extensions[SPECULAR] = {"specularFactor": 0.0}
+            self.use(SPECULAR)
+        if emission is not None:
+            m["emissiveFactor"] = list(emission)
+        if strength is not None:
+            extensions[EMISSIVE_STRENGTH] = {"emissiveStrength": strength}
+            self.use(EMISSIVE_STRENGTH)
+        if extensions:
+            m["extensions"] = extensions
+        if double_sided:
+            m["doubleSided"] = True
+        m.update(extra)
+        return self.add("materials", m)
+
+    def quad(self, name, corner, edge_u, edge_v, material, uv_scale=1.0):
+        """A rectangle corner + s·edge_u + t·edge_v, front face (counter-clockwise) along
+        edge_u × edge_v, with texture coordinates (s, t)·uv_scale."""
+        p = [corner,
+             [corner[i] + edge_u[i] for i in range(3)],
+             [corner[i] + edge_u[i] + edge_v[i] for i in range(3)],
+             [corner[i] + edge_v[i] for i in range(3)]]
+        n = cross(edge_u, edge_v)
+        length = math.sqrt(sum(c * c for c in n))
+        n = [c / length for c in n]
+        uv = [(0.0, 0.0), (uv_scale, 0.0), (uv_scale, uv_scale), (0.0, uv_scale)]
+        prim = primitive(self.positions(p), self.normals([n] * 4),
+                         self.indices([0, 1, 2, 0, 2, 3], UNSIGNED_SHORT), material,
+                         texcoord=self.texcoords(uv))
+        self.roots.append(self.node(name=name, mesh=self.mesh([prim], name)))
+
+    def box(self, name, lo, hi, material):
+        """An axis-aligned box with outward faces."""
+        x0, y0, z0 = lo
+        x1, y1, z1 = hi
+        dx, dy, dz = x1 - x0, y1 - y0, z1 - z0
+        self.quad(name + " -x", [x0, y0, z0], [0, 0, dz], [0, dy, 0], material)
+        self.quad(name + " +x", [x1, y0, z0], [0, dy, 0], [0, 0, dz], material)
+        self.quad(name + " -y", [x0, y0, z0], [dx, 0, 0], [0, 0, dz], material)
+        self.quad(name + " +y", [x0, y1, z0], [0, 0, dz], [dx, 0, 0], material)
+        self.quad(name + " -z", [x0, y0, z0], [0, dy, 0], [dx, 0, 0], material)
+        self.quad(name + " +z", [x0, y0, z1], [dx, 0, 0], [0, dy, 0], material)
+
+    def texture(self, rows, sampler=None):
+        image = self.add("images", {"uri": data_uri(png_bytes(rows), "image/png")})
+        texture = {"source": image}
+        if sampler is not None:
+            texture["sampler"] = self.add("samplers", sampler)
+        return self.add("textures", texture)
+
+    def sphere(self, name, centre, radius, material):
+        shapes = self.doc.setdefault("extensions", {}).setdefault(SHAPES, {"shapes": []})
+        shapes["shapes"].append({"type": "sphere", "sphere": {"radius": radius}})
+        self.use(SHAPES)
+        self.roots.append(self.node(name=name, translation=list(centre),
+                                    extensions={SHAPES: {"shape": len(shapes["shapes"]) - 1}},
+                                    extras={"vkpt_material": material}))
+
+    def light(self, name, light, translation=None, rotation=None):
+        lights = self.doc.setdefault("extensions", {}).setdefault(PUNCTUAL, {"lights": []})
+        lights["lights"].append(dict(light, name=name))
+        self.use(PUNCTUAL)
+        node = {"name": name, "extensions": {PUNCTUAL: {"light": len(lights["lights"]) - 1}}}
+        if translation is not None:
+            node["translation"] = list(translation)
+        if rotation is not None:
+            node["rotation"] = list(rotation)
+        self.roots.append(self.node(**node))
+
+    def camera(self, eye, yfov_degrees=45.0):
+        """A camera at eye looking along −Z (the glTF camera's own direction)."""
+        camera = self.add("cameras", {"type": "perspective", "name": "camera",
+                                      "perspective": {"yfov": math.radians(yfov_degrees),
+                                                      "znear": 0.01}})
+        self.roots.append(self.node(name="camera", camera=camera, translation=list(eye)))
+
+    def save(self, name):
+        if self.extensions:
+            self.doc["extensionsUsed"] = sorted(self.extensions)
+        self.scene(self.roots)
+        write_embedded(FEATURES_DIR / name, self)
+
+
+def cross(a, b):
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+def quat_about_x(degrees):
+    h = math.radians(degrees) / 2.0
+    return [math.sin(h), 0.0, 0.0, math.cos(h)]
+
+
+def room(scene, floor_material, back_material):
+    """A floor (y = 0) and a back wall (z = −1) seen by a camera at (0, 0.6, 2.2)."""
+    scene.quad("floor", [-1.5, 0.0, 1.5], [3.0, 0.0, 0.0], [0.0, 0.0, -3.0], floor_material,
+               uv_scale=3.0)
+    scene.quad("back wall", [-1.5, 0.0, -1.0], [3.0, 0.0, 0.0], [0.0, 2.0, 0.0], back_material)
+    scene.camera([0.0, 0.6, 2.2], 50.0)
+
+
+def spheres():
+    """A diffuse, a rough-metal and a glossy dielectric sphere next to an emitting sphere."""
+    s = FeatureScene()
+    white = s.material("white", (0.75, 0.75, 0.75), diffuse=True)
+    room(s, white, white)
+    s.sphere("diffuse sphere", (-0.75, 0.35, 0.0), 0.35, s.material("red", (0.7, 0.1, 0.1),
+                                                                      diffuse=True))
+    s.sphere("metal sphere", (0.0, 0.35, 0.1), 0.35,
+             s.material("gold", (1.0, 0.78, 0.34), metallic=1.0, roughness=0.3))
+    s.sphere("glossy sphere", (0.75, 0.35, 0.0), 0.35,
+             s.material("blue plastic", (0.1, 0.2, 0.7), roughness=0.15))
+    s.sphere("light sphere", (0.0, 1.4, 0.3), 0.2,
+             s.material("sphere light", (0.0, 0.0, 0.0), diffuse=True, emission=(1.0, 0.9, 0.8),
+                        strength=12.0))
+    s.save("spheres.gltf")
+
+
+def ggx():
+    """Metals and dielectrics across roughness under a quad light, so that glossy reflections
+    of the light and of the walls cover much of the image."""
+    s = FeatureScene()
+    grey = s.material("grey", (0.6, 0.6, 0.6), diffuse=True)
+    room(s, s.material("polished floor", (0.5, 0.5, 0.55), roughness=0.2), grey)
+    for i, (roughness, metallic) in enumerate([(0.05, 1.0), (0.35, 1.0), (0.7, 1.0),
+                                               (0.35, 0.0)]):
+        x = -1.2 + 0.6 * i
+        s.box(f"block {i}", [x, 0.0, -0.5], [x + 0.45, 0.5 + 0.15 * i, -0.05],
+              s.material(f"rough {roughness} metal {metallic}", (0.9, 0.6, 0.4),
+                         metallic=metallic, roughness=roughness))
+    s.quad("light", [-0.5, 1.6, -0.5], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0],
+           s.material("light", (0.0, 0.0, 0.0), diffuse=True, emission=(1.0, 1.0, 1.0),
+                      strength=6.0))
+    s.save("ggx.gltf")
+
+
+def checker(size, a, b):
+    return [[a if (x + y) % 2 == 0 else b for x in range(size)] for y in range(size)]
+
+
+def textured():
+    """Base colour (sRGB, repeated and transformed), metallic-roughness and emissive textures,
+    and an alpha-masked screen between the light and the floor."""
+    s = FeatureScene()
+    s.use(TEXTURE_TRANSFORM)
+    colours = s.texture(checker(4, (230, 200, 40, 255), (30, 60, 160, 255)))
+    floor = s.material("checker floor", (1.0, 1.0, 1.0), diffuse=True, pbr={
+        "baseColorTexture": {"index": colours, "extensions": {TEXTURE_TRANSFORM: {
+            "offset": [0.25, 0.0], "rotation": 0.3, "scale": [1.5, 1.5]}}}})
+    # Green channel roughness, blue channel metallic: stripes of polished metal and rough paint.
+    stripes = s.texture([[(0, 30, 255, 255), (0, 230, 0, 255)]] * 2,
+                        {"magFilter": 9728, "wrapS": 10497, "wrapT": 33071})
+    wall = s.material("striped wall", (0.8, 0.8, 0.8), metallic=1.0, roughness=1.0,
+                      pbr={"metallicRoughnessTexture": {"index": stripes}})
+    room(s, floor, wall)
+    glow = s.texture(checker(2, (255, 255, 255, 255), (255, 80, 20, 255)))
+    s.quad("light", [-0.6, 1.5, -0.6], [1.2, 0.0, 0.0], [0.0, 0.0, 1.2],
+           s.material("textured light", (0.0, 0.0, 0.0), diffuse=True, emission=(1.0, 1.0, 1.0),
+                      strength=5.0, emissiveTexture={"index": glow}))
+    holes = [[(255, 255, 255, 255 if (x // 2 + y // 2) % 2 else 0) for x in range(8)]
+             for y in range(8)]
+    screen = s.material("masked screen", (0.9, 0.9, 0.9), diffuse=True, double_sided=True,
+                        alphaMode="MASK", alphaCutoff=0.5,
+                        pbr={"baseColorTexture": {"index": s.texture(holes)}})
+    s.quad("masked screen", [-0.7, 0.9, 0.7], [1.4, 0.0, 0.0], [0.0, 0.0, -1.4], screen)
+    s.save("textured.gltf")
+
+
+def punctual():
+    """A point, a spot and a directional light (KHR_lights_punctual) on a floor and blocks."""
+    s = FeatureScene()
+    white = s.material("white", (0.8, 0.8, 0.8), diffuse=True)
+    room(s, white, white)
+    s.box("block", [-0.9, 0.0, -0.4], [-0.4, 0.6, 0.1], white)
+    s.box("glossy block", [0.3, 0.0, -0.5], [0.8, 0.4, 0.0],
+          s.material("glossy", (0.2, 0.7, 0.3), roughness=0.3))
+    s.light("point", {"type": "point", "color": [1.0, 0.8, 0.6], "intensity": 2.0,
+                      "range": 4.0}, translation=[-0.3, 1.2, 0.6])
+    s.light("spot", {"type": "spot", "color": [0.5, 0.7, 1.0], "intensity": 6.0,
+                     "spot": {"innerConeAngle": 0.2, "outerConeAngle": 0.45}},
+            translation=[0.6, 1.6, 0.2], rotation=quat_about_x(-90.0))
+    s.light("sun", {"type": "directional", "color": [1.0, 1.0, 0.9], "intensity": 0.8},
+            rotation=quat_about_x(-60.0))
+    s.save("punctual.gltf")
+
+
+def environment_room():
+    """No emitters: a floor and spheres lit by the environment alone (--env-color, --env)."""
+    s = FeatureScene()
+    white = s.material("white", (0.7, 0.7, 0.7), diffuse=True)
+    s.quad("floor", [-1.5, 0.0, 1.5], [3.0, 0.0, 0.0], [0.0, 0.0, -3.0], white)
+    s.sphere("diffuse sphere", (-0.45, 0.4, 0.0), 0.4, white)
+    s.sphere("metal sphere", (0.45, 0.4, 0.0), 0.4,
+             s.material("chrome", (0.95, 0.95, 0.95), metallic=1.0, roughness=0.2))
+    s.camera([0.0, 0.6, 2.2], 50.0)
+    s.save("environment.gltf")
+
+
+def radiance_hdr(width, height, texel):
+    """A Radiance .hdr (flat, not run-length encoded) of texel(x, y) → (r, g, b)."""
+    def rgbe(r, g, b):
+        m = max(r, g, b)
+        if m < 1e-32:
+            return bytes(4)
+        mantissa, exponent = math.frexp(m)
+        scale = mantissa * 256.0 / m
+        return bytes([int(r * scale), int(g * scale), int(b * scale), exponent + 128])
+
+    header = (b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n" +
+              f"-Y {height} +X {width}\n".encode("ascii"))
+    body = b"".join(rgbe(*texel(x, y)) for y in range(height) for x in range(width))
+    return header + body
+
+
+def sky_texel(x, y, width=32, height=16):
+    """A blue sky brightening to the horizon, a dark ground, and a small warm sun."""
+    v = (y + 0.5) / height
+    if 13 <= x <= 14 and 4 <= y <= 5:
+        return (40.0, 36.0, 30.0)
+    if v < 0.5:
+        return (0.3 + 0.5 * v, 0.5 + 0.6 * v, 1.0)
+    return (0.15, 0.13, 0.1)
+
+
+def main():
+    spheres()
+    ggx()
+    textured()
+    punctual()
+    environment_room()
+    write(FEATURES_DIR / "sky.hdr", radiance_hdr(32, 16, sky_texel))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,30 @@
+// features.glsl — the scene features a kernel is specialised for (FEATURE_* of
+// shared/host_device.h), as boolean specialisation constants. The host sets them from the
+// scene's SceneFeatures when it creates the pipelines (host/render/wavefront_kernels.cpp), so
+// code guarded by a feature the scene lacks is folded away by the driver's compiler and its
+// buffers are never read. The defaults (everything on) are the general kernels.
+#ifndef VKPT_FEATURES_GLSL
+#define VKPT_FEATURES_GLSL
+
+#include "shared/host_device.h"
+
+// glTF GGX materials (diffuse-only scenes keep the Lambertian BSDF alone).
+layout(constant_id = FEATURE_METALLIC_ROUGHNESS) const bool featureMetallicRoughness = true;
+// Base colour, metallic-roughness or emissive textures, and the TEXCOORD_0 they are read at.
+layout(constant_id = FEATURE_TEXTURES) const bool featureTextures = true;
+// alphaMode MASK: traversals skip the cut-out parts of such materials.
+layout(constant_id = FEATURE_ALPHA_MASK) const bool featureAlphaMask = true;
+// Analytic spheres among the primitives.
+layout(constant_id = FEATURE_SPHERES) const bool featureSpheres = true;
+// KHR_lights_punctual point, spot and directional lights.
+layout(constant_id = FEATURE_PUNCTUAL_LIGHTS) const bool featurePunctualLights = true;
+// Rays that leave the scene see an environment (a constant colour or a map).
+layout(constant_id = FEATURE_ENVIRONMENT) const bool featureEnvironment = true;
+// The environment is an equirectangular map (environmentTexels, environmentCdf).
+layout(constant_id = FEATURE_ENVIRONMENT_MAP) const bool featureEnvironmentMap = true;
+// More than one emitter: selection reads the CDF (emitterCdf).
+layout(constant_id = FEATURE_EMITTER_CDF) const bool featureEmitterCdf = true;
+// Some material is double-sided: emission may leave the back face.
+layout(constant_id = FEATURE_DOUBLE_SIDED) const bool featureDoubleSided = true;
+
+#endif // VKPT_FEATURES_GLSL

@@ -1,0 +1,114 @@
+// feature_render_test.cpp — the scene model's features on the device (feature_scenes.h):
+// spheres, metallic-roughness materials, textures, alpha cut-outs, punctual lights and the
+// environment. At one seed vkpt and vkpt-ref trace the same paths, so their images agree pixel
+// by pixel up to float rounding (docs/wavefront.md); and the kernels specialised to each
+// scene give the general kernels' image.
+#include <cstdio>
+#include <string>
+
+#include "feature_scenes.h"
+#include "wavefront_test_support.h"
+
+namespace vkpt::test {
+namespace {
+
+using feature_scenes::featureScenes;
+using feature_scenes::NamedScene;
+using feature_scenes::prepareTestScene;
+
+// As render_compare_test.cpp: paths that diverge on a last-bit difference stay rare.
+constexpr double kMinimumAgreement = 0.99;
+
+std::string nameOf(const ::testing::TestParamInfo<NamedScene>& info) {
+    return info.param.name;
+}
+
+class FeatureScenes : public GpuTest, public ::testing::WithParamInterface<NamedScene> {
+protected:
+    void SetUp() override {
+        GpuTest::SetUp();
+        scene_ = prepareTestScene(GetParam().make());
+    }
+
+    void expectSameSeedAgreement(const std::string& label, const RenderSettings& settings) {
+        const std::string name = GetParam().name + "_" + label;
+        RenderStats gpuStats, cpuStats;
+        RenderOutput gpu = renderOnDevice(context(), scene_, settings, &gpuStats);
+        RenderOutput cpu = renderTestScene(scene_, settings, &cpuStats);
+        SameSeedAgreement a = compareSameSeed(gpu, cpu);
+        std::printf("%s (%s): %s; rays %llu vs %llu\n", name.c_str(),
+                    describeFeatures(scene_.prepared.usedFeatures).c_str(), a.summary().c_str(),
+                    (unsigned long long)gpuStats.rays.total(),
+                    (unsigned long long)cpuStats.rays.total());
+        EXPECT_GE(a.fraction(), kMinimumAgreement) << writeComparisonImages(name, gpu, cpu);
+        EXPECT_EQ(gpuStats.samplesTaken, cpuStats.samplesTaken);
+        // A black image would agree trivially; but hemisphere probes cannot hit a punctual
+        // light, so a scene lit by those alone is black to them.
+        const bool probes = settings.integrator == Integrator::Direct &&
+                            settings.lightSampling == LightSampling::Hemisphere;
+        if (probes && onlyPunctualLights()) {
+            EXPECT_EQ(totalOf(gpu), 0.0) << name << ": probes found a punctual light";
+        } else {
+            EXPECT_GT(totalOf(gpu), 0.0) << name << ": the image is black";
+        }
+    }
+
+    bool onlyPunctualLights() const {
+        for (const gpu::Emitter& e : scene_.prepared.emitters)
+            if (e.kind == EMITTER_TRIANGLE || e.kind == EMITTER_SPHERE ||
+                e.kind == EMITTER_ENVIRONMENT)
+                return false;
+        return true;
+    }
+
+    static double totalOf(const RenderOutput& output) {
+        double sum = 0.0;
+        for (const glm::vec3& p : output.image.pixels)
+            sum += double(p.x + p.y + p.z);
+        return sum;
+    }
+
+    LoadedTestScene scene_;
+};
+
+TEST_P(FeatureScenes, PathTracerMatchesTheReference) {
+    RenderSettings settings = testSettings(24, 8);
+    settings.seed = 21;
+    settings.lightSamples = 2;
+    expectSameSeedAgreement("path", settings);
+}
+
+TEST_P(FeatureScenes, DirectIntegratorsMatchTheReference) {
+    RenderSettings settings = testSettings(20, 4);
+    settings.seed = 22;
+    settings.integrator = Integrator::Direct;
+    settings.lightSamples = 3;
+    expectSameSeedAgreement("direct_light", settings);
+    settings.lightSampling = LightSampling::Hemisphere;
+    expectSameSeedAgreement("direct_hemisphere", settings);
+}
+
+TEST_P(FeatureScenes, NormalsMatchTheReference) {
+    RenderSettings settings = testSettings(20, 1);
+    settings.integrator = Integrator::Normals;
+    expectSameSeedAgreement("normals", settings);
+}
+
+// Specialisation removes only code the scene cannot reach: same seed, same image, every pixel.
+TEST_P(FeatureScenes, SpecialisedKernelsGiveTheGeneralImage) {
+    LoadedTestScene general = prepareTestScene(scene_.scene, true);
+    RenderSettings settings = testSettings(20, 4);
+    settings.seed = 23;
+    settings.lightSamples = 2;
+    RenderOutput specialised = renderOnDevice(context(), scene_, settings);
+    RenderOutput all = renderOnDevice(context(), general, settings);
+    SameSeedAgreement a = compareSameSeed(specialised, all);
+    const std::string name = GetParam().name + "_specialised";
+    std::printf("%s: %s\n", name.c_str(), a.summary().c_str());
+    EXPECT_EQ(a.within, a.pixels) << writeComparisonImages(name, specialised, all);
+}
+
+INSTANTIATE_TEST_SUITE_P(Features, FeatureScenes, ::testing::ValuesIn(featureScenes()), nameOf);
+
+} // namespace
+} // namespace vkpt::test
