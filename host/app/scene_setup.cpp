@@ -38,10 +38,10 @@ SceneSetup setUpScene(const RenderSettings& settings, const std::string& program
     setup.prepared = prepareScene(scene, {{}, camera.forward, settings.general});
     const BvhStats& bvh = setup.prepared.bvhStats;
     std::fprintf(stderr,
-                 "%s: %s: %zu triangles, %zu emitters; BVH %u nodes, depth %u, SAH cost %.2f, "
-                 "built in %.3f s\n",
+                 "%s: %s: %zu triangles, %zu spheres, %zu emitters; BVH %u nodes, depth %u, "
+                 "SAH cost %.2f, built in %.3f s\n",
                  program.c_str(), settings.scenePath.c_str(), scene.triangleCount(),
-                 setup.prepared.emitters.size(), bvh.nodeCount, bvh.maxDepth, double(bvh.sahCost),
+                 scene.spheres.size(), setup.prepared.emitters.size(), bvh.nodeCount, bvh.maxDepth, double(bvh.sahCost),
                  bvh.buildSeconds);
     if (settings.verbose)
         std::fprintf(stderr, "%s: features: %s%s\n", program.c_str(),
