@@ -1,6 +1,7 @@
 // study_runner.cpp — references, runs and outputs of the trade study.
 #include "app/study_runner.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -84,11 +85,14 @@ bool wanted(const StudyInvocation& invocation, const std::string& family) {
     return false;
 }
 
-std::vector<StudyRun> plannedRuns(const StudyInvocation& invocation) {
-    std::vector<StudyRun> runs;
-    for (StudyRun& run : planStudy(invocation.base, invocation.scale))
-        if (wanted(invocation, run.family)) runs.push_back(std::move(run));
-    return runs;
+// Adds a reference to the summary's list, or replaces the one of its kind that --merge read.
+void addReference(std::vector<ReferenceInfo>& references, const ReferenceInfo& info) {
+    for (ReferenceInfo& r : references)
+        if (r.kind == info.kind) {
+            r = info;
+            return;
+        }
+    references.push_back(info);
 }
 
 class StudyRunner {
@@ -102,12 +106,16 @@ public:
 private:
     const Image& reference(StudyReference kind);
     RenderOutput renderReferenceImage(const RenderSettings& settings, ReferenceInfo& info);
+    const SceneSetup& setupFor(const RenderSettings& settings);
     RunResult measure(const StudyRun& run);
     const RunResult* sharableRun(const StudyRun& run) const;
+    void renderPlan(const StudySummary& earlier);
+    void composeNote(const StudySummary& earlier, const std::string& loadAtStart);
 
     const StudyInvocation& invocation_;
     GpuContext context_;
     SceneSetup setup_;
+    std::optional<SceneSetup> generalSetup_; // --general's layout, made for the first such run
     Image references_[2];
     bool haveReference_[2] = {false, false};
     StudySummary summary_;
@@ -159,31 +167,52 @@ const Image& StudyRunner::reference(StudyReference kind) {
                      path.c_str());
     }
     cached->info.kind = kind;
-    summary_.references.push_back(cached->info);
+    addReference(summary_.references, cached->info);
     references_[slot] = std::move(cached->image);
     haveReference_[slot] = true;
     return references_[slot];
 }
 
+// The scene laid out as the run's pipelines expect it: specialised to its features, or for
+// all of them (--general).
+const SceneSetup& StudyRunner::setupFor(const RenderSettings& settings) {
+    if (!settings.general) return setup_;
+    if (!generalSetup_) {
+        std::fprintf(stderr, "%s: the scene again, laid out for every feature (--general)\n",
+                     kProgram);
+        RenderSettings general = invocation_.base;
+        general.general = true;
+        generalSetup_ = setUpScene(general, kProgram);
+    }
+    return *generalSetup_;
+}
+
 // An earlier run that traced the same samples with at least this budget: its curve's first
 // part is this run's curve.
 const RunResult* StudyRunner::sharableRun(const StudyRun& run) const {
+    if (!run.shareable) return nullptr;
     for (const RunResult& r : summary_.results)
-        if (r.sharedWith.empty() && sameSamplesExceptBudget(r.run.settings, run.settings) &&
+        if (r.sharedWith.empty() && r.run.shareable &&
+            sameSamplesExceptBudget(r.run.settings, run.settings) &&
             r.run.settings.samplesPerPixel >= run.settings.samplesPerPixel &&
             r.run.reference == run.reference)
             return &r;
     return nullptr;
 }
 
-RunResult StudyRunner::measure(const StudyRun& run) {
+// A run read off the curve of the run sharableRun found.
+RunResult readOff(const StudyRun& run, const RunResult& lender) {
     RunResult result;
     result.run = run;
-    if (const RunResult* shared = sharableRun(run)) {
-        result.curve = curvePrefix(shared->curve, run.settings.samplesPerPixel);
-        result.sharedWith = shared->run.label;
-        return result;
-    }
+    result.curve = curvePrefix(lender.curve, run.settings.samplesPerPixel);
+    result.sharedWith = lender.run.label;
+    return result;
+}
+
+RunResult StudyRunner::measure(const StudyRun& run) {
+    if (const RunResult* lender = sharableRun(run)) return readOff(run, *lender);
+    RunResult result;
+    result.run = run;
     ConvergenceTracker tracker(&reference(run.reference), 0.0);
     WavefrontOptions options;
     options.slotCount = invocation_.pathSlots;
@@ -192,9 +221,10 @@ RunResult StudyRunner::measure(const StudyRun& run) {
         tracker.record(passFigures(progress), progress.output);
         return false;
     };
+    const SceneSetup& setup = setupFor(run.settings);
     const Clock::time_point start = Clock::now();
     const WavefrontResult rendered =
-        renderWavefront(context_, setup_.prepared, setup_.camera, run.settings, options);
+        renderWavefront(context_, setup.prepared, setup.camera, run.settings, options);
     result.setupSeconds = secondsSince(start) - rendered.stats.seconds;
     result.curve = tracker.curve();
     if (rendered.truncatedTraversals > 0)
@@ -268,8 +298,78 @@ StudySummary readSummary(const StudyInvocation& invocation) {
     std::ifstream meta(dir / (invocation.name + "-meta.txt"));
     if (!csv || !meta)
         throw InputError((dir / invocation.name).string() +
-                         ".csv and -meta.txt: cannot read (--replot needs an earlier study)");
+                         ".csv and -meta.txt: cannot read (--replot and --merge need an earlier "
+                         "study)");
     return readStudySummary(csv, meta);
+}
+
+// --merge: the earlier study that the runs not rendered now are kept from, made at this size.
+StudySummary readEarlierStudy(const StudyInvocation& invocation) {
+    if (!invocation.merge) return {};
+    StudySummary earlier = readSummary(invocation);
+    if (earlier.width != invocation.base.width || earlier.height != invocation.base.height)
+        throw InputError(
+            invocation.name + ".csv: made at " + std::to_string(earlier.width) + "x" +
+            std::to_string(earlier.height) + ", not " + std::to_string(invocation.base.width) +
+            "x" + std::to_string(invocation.base.height) + " (--merge needs the same --res)");
+    return earlier;
+}
+
+// The earlier study's result of a planned run, with the plan's settings (the CSV keeps only
+// what the report needs, and sharing compares settings); none when it has no such run.
+std::optional<RunResult> keptRun(const StudySummary& earlier, const StudyRun& run) {
+    for (const RunResult& r : earlier.results)
+        if (r.run.label == run.label) {
+            if (r.run.flags != run.flags)
+                throw InputError(earlier.name + ".csv: run '" + run.label + "' was made with '" +
+                                 r.run.flags + "', this study's plan has '" + run.flags +
+                                 "' (--merge needs the same --spp and --side-spp)");
+            RunResult kept = r;
+            kept.run = run;
+            return kept;
+        }
+    return std::nullopt;
+}
+
+// Renders the wanted runs in the plan's order; with --merge, keeps the others from `earlier`.
+void StudyRunner::renderPlan(const StudySummary& earlier) {
+    const std::vector<StudyRun> plan = planStudy(invocation_.base, invocation_.scale);
+    const std::size_t count =
+        std::size_t(std::count_if(plan.begin(), plan.end(), [&](const StudyRun& r) {
+            return wanted(invocation_, r.family);
+        }));
+    std::size_t rendered = 0;
+    for (const StudyRun& run : plan) {
+        if (wanted(invocation_, run.family)) {
+            summary_.results.push_back(measure(run));
+            reportRun(summary_.results.back(), rendered++, count);
+        } else if (std::optional<RunResult> kept = keptRun(earlier, run)) {
+            // A kept run that was read off another's curve follows it, should that one have
+            // been rendered again.
+            const RunResult* lender = sharableRun(run);
+            summary_.results.push_back(lender ? readOff(run, *lender) : std::move(*kept));
+        }
+    }
+}
+
+// The table's note: --note and the machine's load while this study ran; after --merge, the
+// earlier study's note first, and which runs this one rendered.
+void StudyRunner::composeNote(const StudySummary& earlier, const std::string& loadAtStart) {
+    std::string note = earlier.note;
+    const auto add = [&note](const std::string& sentence) {
+        if (!sentence.empty()) note += (note.empty() ? "" : " ") + sentence;
+    };
+    if (invocation_.merge) {
+        add("The " + familyList(invocation_.families) +
+            " runs were rendered later and merged into this study (--merge).");
+        if (earlier.machine != summary_.machine)
+            add("The earlier runs' machine: " + earlier.machine + ".");
+    }
+    add(invocation_.note);
+    add("Load average (1 min, /proc/loadavg)" +
+        std::string(invocation_.merge ? " while they ran: " : ": ") + loadAtStart +
+        " at the start, " + loadAverage() + " at the end.");
+    summary_.note = note;
 }
 
 int StudyRunner::run() {
@@ -283,15 +383,11 @@ int StudyRunner::run() {
         context_.deviceInfo().type == VK_PHYSICAL_DEVICE_TYPE_CPU ? StudyClock::Cpu
                                                                   : StudyClock::Wall);
     const std::string loadAtStart = loadAverage();
-    const std::vector<StudyRun> runs = plannedRuns(invocation_);
-    for (std::size_t i = 0; i < runs.size(); ++i) {
-        summary_.results.push_back(measure(runs[i]));
-        reportRun(summary_.results.back(), i, runs.size());
-    }
-    summary_.studySeconds = secondsSince(start);
-    summary_.note = invocation_.note + (invocation_.note.empty() ? "" : " ") +
-                    "Load average (1 min, /proc/loadavg): " + loadAtStart + " at the start, " +
-                    loadAverage() + " at the end.";
+    const StudySummary earlier = readEarlierStudy(invocation_);
+    summary_.references = earlier.references;
+    renderPlan(earlier);
+    summary_.studySeconds = earlier.studySeconds + secondsSince(start);
+    composeNote(earlier, loadAtStart);
     writeData(invocation_.outDir, summary_);
     writeReport(invocation_, summary_);
     if (context_.validationMessageCount() > 0)

@@ -26,6 +26,8 @@ struct StudyInvocation {
     bool referenceOnDevice = false;    // references with vkpt's renderer instead of vkpt-ref's
     bool freshReferences = false;      // remake references even when cached
     bool replot = false; // only redraw the table and plots from <name>.csv and <name>-meta.txt
+    // Render only `families` and keep every other run from <name>.csv (same size and budgets).
+    bool merge = false;
     // The time axis; unset: CPU time on a CPU device (lavapipe), wall time on a GPU.
     std::optional<StudyClock> clock;
     GpuOptions gpu;

@@ -1,6 +1,8 @@
 // vkpt_study_main.cpp — vkpt-study, the speed-against-accuracy trade study of one scene: error
 // against a high-spp reference versus render time for uniform and adaptive sampling, light
-// and hemisphere sampling, depth limits and Russian roulette (docs/trade/README.md).
+// and hemisphere sampling, depth limits, Russian roulette and pipelines specialised to the
+// scene against general ones (docs/trade/README.md).
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -45,10 +47,10 @@ std::vector<std::string> splitList(const std::string& text) {
 }
 
 void checkFamilies(const std::vector<std::string>& families) {
+    const std::vector<std::string>& known = studyFamilies();
     for (const std::string& f : families)
-        if (f != "uniform" && f != "adaptive" && f != "sampling" && f != "depth" && f != "roulette")
-            throw InputError("option --only: '" + f +
-                             "' is not one of uniform, adaptive, sampling, depth, roulette");
+        if (std::find(known.begin(), known.end(), f) == known.end())
+            throw InputError("option --only: '" + f + "' is not one of " + familyList(known));
 }
 
 void addScaleOptions(CommandLine& cl, ScaleOverrides& o) {
@@ -105,11 +107,15 @@ void addStudyOptions(CommandLine& cl, StudyInvocation& s) {
                                      "' is not one of cpu, device");
                 s.referenceOnDevice = v[0] == "device";
             }});
-    cl.add(
-        {"only", {}, "LIST", "strategies: uniform,adaptive,sampling,depth,roulette", [&s](auto v) {
-             s.families = splitList(v[0]);
-             checkFamilies(s.families);
-         }});
+    cl.add({"only", {}, "LIST", "strategies: " + familyList(studyFamilies()), [&s](auto v) {
+                s.families = splitList(v[0]);
+                checkFamilies(s.families);
+            }});
+    cl.add({"merge",
+            {},
+            "",
+            "with --only: keep the other strategies' runs from NAME.csv (same scale)",
+            [&s](auto) { s.merge = true; }});
     cl.add(
         {"camera", {}, "N", "render from the scene's camera N (default: the first)", [&s](auto v) {
              s.base.cameraIndex = int(parseUnsigned("camera", v[0]));
@@ -178,6 +184,8 @@ Parsed parseArguments(int argc, char** argv) {
     }
     if (positional.size() != 1) throw InputError("give exactly one scene file (see --help)");
     StudyInvocation& s = parsed.invocation;
+    if (s.merge && s.families.empty())
+        throw InputError("option --merge: give the strategies to render again with --only");
     s.scale = composeScale(parsed.overrides);
     s.base.scenePath = positional[0];
     s.base.width = s.scale.width;

@@ -12,8 +12,9 @@
 
 namespace vkpt {
 
-// Bumped when a change to the integrators makes cached references wrong.
-inline constexpr int kReferenceCacheVersion = 1;
+// Bumped when a change to the integrators makes cached references wrong. 2: the glTF
+// metallic-roughness BSDF and textures changed every scene that is not diffuse-only.
+inline constexpr int kReferenceCacheVersion = 2;
 
 // $XDG_CACHE_HOME/vkpt, else $HOME/.cache/vkpt; throws InputError when neither is set.
 std::string defaultCacheDirectory();

@@ -53,6 +53,7 @@ std::string strategyCell(const RunResult& r) {
     if (r.run.label == "uniform" || r.run.label == "max depth 16" ||
         r.run.label == "roulette from 3")
         cell += r.run.family == "uniform" ? " (defaults)" : " (= uniform)";
+    if (r.run.label == "specialised pipelines") cell += " (defaults, timed beside general)";
     return cell;
 }
 
@@ -63,8 +64,6 @@ void writeHeadlineRows(std::ostream& out, const StudySummary& summary) {
         out << "| " << strategyCell(r) << " | `" << r.run.flags << "` | "
             << reachCell(r, summary, kHeadlineErrors[0]) << " | "
             << reachCell(r, summary, kHeadlineErrors[1]) << " | " << lastCell(r, summary) << " |\n";
-    for (const UnavailableStrategy& u : unavailableStrategies())
-        out << "| " << u.family << " | — | " << u.reason << " | — | — |\n";
 }
 
 double meanSetupSeconds(const StudySummary& summary) {
@@ -146,7 +145,13 @@ void writeSpeedup(std::ostream& out, const StudySummary& summary, const Adaptive
         << format("%.0f", s.uniformSamples / spp) << " samples/pixel)\n";
 }
 
+bool hasFamily(const StudySummary& summary, const std::string& family) {
+    return std::any_of(summary.results.begin(), summary.results.end(),
+                       [&](const RunResult& r) { return r.run.family == family; });
+}
+
 void writeSpeedups(std::ostream& out, const StudySummary& summary) {
+    if (!hasFamily(summary, "uniform") || !hasFamily(summary, "adaptive")) return; // --only
     out << "\nSpeedup of adaptive over uniform sampling at equal error, with the best adaptive "
            "setting for each (in time, and in samples taken, which no machine load disturbs):"
            "\n\n";
@@ -161,6 +166,40 @@ void writeSpeedups(std::ostream& out, const StudySummary& summary) {
                                                     : "uniform sampling did not reach it")
                 << " within the budget\n";
     }
+}
+
+const RunResult* findRun(const StudySummary& summary, const std::string& label) {
+    for (const RunResult& r : summary.results)
+        if (r.run.label == label) return &r;
+    return nullptr;
+}
+
+// "**1.04×** (1.3 s against 1.25 s)": general over specialised time, or why there is none.
+std::string timeRatio(double general, double specialised) {
+    if (!std::isfinite(general) || !std::isfinite(specialised) || specialised <= 0.0)
+        return "not measured: not reached within the budget";
+    return format("**%.2f×** (", general / specialised) + seconds(general) + " against " +
+           seconds(specialised) + ")";
+}
+
+void writePipelineComparison(std::ostream& out, const StudySummary& summary) {
+    const RunResult* specialised = findRun(summary, "specialised pipelines");
+    const RunResult* general = findRun(summary, "general pipelines");
+    if (!specialised || !general || specialised->curve.empty() || general->curve.empty()) return;
+    out << "\nGeneral over specialised pipelines (`--general` against the default; the same "
+           "samples, rendered one after the other), the general run's "
+        << clockName(summary.clock) << " time as a multiple of the specialised run's:\n\n";
+    for (double error : kHeadlineErrors)
+        out << "- to relMSE " << format("%.0e", error) << ": "
+            << timeRatio(timeToReach(general->curve, error, summary.clock),
+                         timeToReach(specialised->curve, error, summary.clock))
+            << "\n";
+    const ConvergencePoint &g = general->curve.back(), &s = specialised->curve.back();
+    out << "- the whole budget, " << format("%.0f", samplesPerPixel(g, summary))
+        << " samples/pixel: " << timeRatio(pointSeconds(g, summary), pointSeconds(s, summary))
+        << "\n- set-up before the first pass (upload and pipeline creation, wall time): "
+        << seconds(general->setupSeconds) << " against " << seconds(specialised->setupSeconds)
+        << "\n";
 }
 
 std::string timeDefinition(const StudySummary& summary) {
@@ -274,33 +313,61 @@ std::string familyCurves(const StudySummary& summary, const std::string& familie
     return clauses;
 }
 
-std::string floorClause(const StudySummary& summary, StudyReference kind) {
-    return format("%.6g", referenceFloor(summary, kind)) +
-           " with lines dt 3 lc rgb '#555555' title \"reference's own noise\"";
+// The dotted line of the reference's own noise; none when the study has no such reference.
+std::vector<std::string> floorClause(const StudySummary& summary, StudyReference kind) {
+    const double floor = referenceFloor(summary, kind);
+    if (floor <= 0.0) return {};
+    return {format("%.6g", floor) +
+            " with lines dt 3 lc rgb '#555555' title \"reference's own noise\""};
+}
+
+// One plot command of the clauses; a study of a few strategies (--only) may have none for a
+// panel, which then stays blank.
+void writePlot(std::ostream& out, const std::vector<std::string>& clauses, bool inMultiplot) {
+    if (clauses.empty()) {
+        if (inMultiplot) out << "set multiplot next\n";
+        return;
+    }
+    out << "plot ";
+    for (std::size_t i = 0; i < clauses.size(); ++i)
+        out << (i ? ", \\\n     " : "") << clauses[i];
+    out << "\n";
 }
 
 void writeHeadlinePlot(std::ostream& out, const StudySummary& summary,
                        const std::vector<std::string>& fronts) {
     out << "set title '" << summary.name << " (" << summary.width << "x" << summary.height
         << "): uniform against adaptive sampling'\n";
-    out << "plot " << familyCurves(summary, "uniform") << ", \\\n     $uniformMarks using 1:2:3 "
-        << "with labels offset char -1.2,-0.8 font ',8' notitle";
+    std::vector<std::string> clauses;
+    if (const std::string uniform = familyCurves(summary, "uniform"); !uniform.empty()) {
+        clauses.push_back(uniform);
+        clauses.push_back(
+            "$uniformMarks using 1:2:3 with labels offset char -1.2,-0.8 font ',8' notitle");
+    }
     for (std::size_t i = 0; i < fronts.size(); ++i) {
         const std::string& b = fronts[i];
-        out << ", \\\n     $adaptive" << b << " using 1:2 with linespoints lw 2 pt 7 title "
-            << "'adaptive, batch " << b << " (label: tolerance)', \\\n     $adaptive" << b
-            << " using 1:2:3 with labels offset char " << (i % 2 ? "1.5,-0.7" : "-1.5,0.8")
-            << " font ',8' notitle";
+        clauses.push_back("$adaptive" + b + " using 1:2 with linespoints lw 2 pt 7 title " +
+                          "'adaptive, batch " + b + " (label: tolerance)'");
+        clauses.push_back("$adaptive" + b + " using 1:2:3 with labels offset char " +
+                          (i % 2 ? "1.5,-0.7" : "-1.5,0.8") + " font ',8' notitle");
     }
-    out << ", \\\n     " << floorClause(summary, StudyReference::Full) << "\n";
+    if (!clauses.empty())
+        for (std::string& floor : floorClause(summary, StudyReference::Full))
+            clauses.push_back(floor);
+    writePlot(out, clauses, false);
 }
 
 void writeOverviewPanel(std::ostream& out, const StudySummary& summary, const std::string& title,
                         const std::string& families, StudyReference reference) {
     out << "set title '" << title << "'\n";
     const std::string curves = familyCurves(summary, families);
-    out << "plot " << (curves.empty() ? std::string() : curves + ", \\\n     ")
-        << floorClause(summary, reference) << "\n";
+    std::vector<std::string> clauses;
+    if (!curves.empty()) {
+        clauses.push_back(curves);
+        for (std::string& floor : floorClause(summary, reference))
+            clauses.push_back(floor);
+    }
+    writePlot(out, clauses, true);
 }
 
 } // namespace
@@ -322,6 +389,7 @@ void writeStudyTable(std::ostream& out, const StudySummary& summary, const std::
     writeHeadlineRows(out, summary);
     writeSpeedups(out, summary);
     writeTimingNoise(out, summary);
+    writePipelineComparison(out, summary);
     writeReferences(out, summary);
     out << "\nAll strategies: ![" << summary.name << ": every strategy](" << plotFile << ")\n\n";
     out << "The study took " << seconds(summary.studySeconds)
@@ -344,9 +412,9 @@ void writeGnuplotScript(std::ostream& out, const StudySummary& summary,
         << headlineSvg << "'\n";
     writeCommonSettings(out, summary);
     writeHeadlinePlot(out, summary, fronts);
-    out << "unset output\nset terminal svg size 1400,1000 dynamic enhanced font 'sans,12' "
+    out << "unset output\nset terminal svg size 1400,1500 dynamic enhanced font 'sans,12' "
            "background rgb 'white'\nset output '"
-        << overviewSvg << "'\nset multiplot layout 2,2 title '" << summary.name
+        << overviewSvg << "'\nset multiplot layout 3,2 title '" << summary.name
         << ": relMSE against time'\n";
     writeOverviewPanel(out, summary, "uniform and adaptive sampling", "uniform adaptive",
                        StudyReference::Full);
@@ -356,6 +424,8 @@ void writeGnuplotScript(std::ostream& out, const StudySummary& summary,
                        StudyReference::Full);
     writeOverviewPanel(out, summary, "Russian roulette (max depth 16)", "roulette",
                        StudyReference::Full);
+    writeOverviewPanel(out, summary, "pipelines specialised to the scene against general ones",
+                       "pipeline", StudyReference::Full);
     out << "unset multiplot\nunset output\n";
 }
 

@@ -35,13 +35,14 @@ struct StudySummary {
 };
 
 // The headline: time to relMSE 1e-2 and 1e-3 per strategy, adaptive's speedup over uniform at
-// equal error, the references, the machine, and the strategies not yet available.
+// equal error, the general pipelines' cost over the specialised ones, the references and the
+// machine.
 void writeStudyTable(std::ostream& out, const StudySummary& summary, const std::string& plotFile,
                      const std::string& headlineFile);
 
-// A gnuplot script that writes `headlineSvg` (uniform vs adaptive) and `overviewSvg` (four
-// panels: sampling, light vs hemisphere, depth, roulette); the data are inline, so the script
-// alone redraws the plots.
+// A gnuplot script that writes `headlineSvg` (uniform vs adaptive) and `overviewSvg` (five
+// panels: sampling, light vs hemisphere, depth, roulette, pipelines); the data are inline, so
+// the script alone redraws the plots.
 void writeGnuplotScript(std::ostream& out, const StudySummary& summary,
                         const std::string& headlineSvg, const std::string& overviewSvg);
 

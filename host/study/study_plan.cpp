@@ -86,7 +86,34 @@ void addRoulette(std::vector<StudyRun>& runs, const RenderSettings& base, const 
     }
 }
 
+// Uniform sampling with the pipelines and buffers specialised to the scene's features (vkpt's
+// default) and with the all-features ones (--general), rendered one after the other so that
+// the machine's load changes as little as possible between the two.
+void addPipelines(std::vector<StudyRun>& runs, const RenderSettings& base,
+                  const StudyScale& scale) {
+    for (bool general : {false, true}) {
+        RenderSettings s = studySettings(base, scale.sideSpp);
+        s.general = general;
+        runs.push_back({"pipeline", general ? "general pipelines" : "specialised pipelines",
+                        sppFlag(scale.sideSpp) + (general ? " --general" : ""), s,
+                        StudyReference::Full, false});
+    }
+}
+
 } // namespace
+
+const std::vector<std::string>& studyFamilies() {
+    static const std::vector<std::string> families{"uniform", "adaptive", "sampling",
+                                                   "depth",   "roulette", "pipeline"};
+    return families;
+}
+
+std::string familyList(const std::vector<std::string>& families) {
+    std::string list;
+    for (const std::string& f : families)
+        list += (list.empty() ? "" : ",") + f;
+    return list;
+}
 
 const char* referenceName(StudyReference reference) {
     return reference == StudyReference::Full ? "full" : "direct";
@@ -117,6 +144,7 @@ std::vector<StudyRun> planStudy(const RenderSettings& base, const StudyScale& sc
     addSampling(runs, base, scale);
     addDepths(runs, base, scale);
     addRoulette(runs, base, scale);
+    addPipelines(runs, base, scale);
     return runs;
 }
 
@@ -137,14 +165,8 @@ bool sameSamplesExceptBudget(const RenderSettings& a, const RenderSettings& b) {
            a.cameraIndex == b.cameraIndex && a.seed == b.seed && a.maxDepth == b.maxDepth &&
            a.rrStartDepth == b.rrStartDepth && a.integrator == b.integrator &&
            a.lightSampling == b.lightSampling && a.lightSamples == b.lightSamples &&
-           a.pathFilter == b.pathFilter && a.clamp == b.clamp && !a.adaptive.enabled &&
-           !b.adaptive.enabled;
-}
-
-std::vector<UnavailableStrategy> unavailableStrategies() {
-    return {{"specialised vs general pipeline",
-             "not yet available: vkpt has no --general switch (pipelines specialised to a "
-             "scene's feature set are a later issue), so there is nothing to compare"}};
+           a.pathFilter == b.pathFilter && a.clamp == b.clamp && a.general == b.general &&
+           !a.adaptive.enabled && !b.adaptive.enabled;
 }
 
 } // namespace vkpt

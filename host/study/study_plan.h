@@ -21,7 +21,7 @@ struct StudyScale {
     std::uint32_t width = 128;
     std::uint32_t height = 128;
     std::uint32_t maxSpp = 4096;  // uniform and adaptive budgets
-    std::uint32_t sideSpp = 1024; // light/hemisphere, depth and roulette budgets
+    std::uint32_t sideSpp = 1024; // light/hemisphere, depth, roulette and pipeline budgets
     std::uint32_t referenceSpp = 16384;
     std::uint32_t referenceDepth = 64; // scattering events of the full reference
     std::vector<std::uint32_t> adaptiveBatches{16, 64};
@@ -39,12 +39,20 @@ inline constexpr std::uint32_t kStudySeed = 1;
 inline constexpr std::uint32_t kReferenceSeed = 0x5eed0001u;
 
 struct StudyRun {
-    std::string family; // "uniform", "adaptive", "sampling", "depth", "roulette"
+    std::string family; // "uniform", "adaptive", "sampling", "depth", "roulette", "pipeline"
     std::string label;  // unique: "uniform", "adaptive b16 tol 0.05", "max depth 4", ...
     std::string flags;  // the vkpt options that select it: "--spp 4096 --adaptive 16 0.05"
     RenderSettings settings;
     StudyReference reference = StudyReference::Full;
+    // false: rendered even when an earlier run took the same samples, and never lent to a
+    // later one, so that its time is measured beside the run it is compared with.
+    bool shareable = true;
 };
+
+// The families of planStudy, in its order, and a list of families as --only takes it
+// ("uniform,adaptive").
+const std::vector<std::string>& studyFamilies();
+std::string familyList(const std::vector<std::string>& families);
 
 // The runs, in the order they are rendered and reported. `base` supplies the scene, size and
 // camera; every other setting comes from the plan.
@@ -54,15 +62,9 @@ std::vector<StudyRun> planStudy(const RenderSettings& base, const StudyScale& sc
 RenderSettings referenceSettings(const RenderSettings& base, const StudyScale& scale,
                                  StudyReference reference);
 
-// Whether two settings trace the same samples except for the budget, so that the render with
-// the smaller --spp is a prefix of the other (its curve can be read off the larger run's).
+// Whether two settings trace the same samples with the same pipelines except for the budget,
+// so that the render with the smaller --spp is a prefix of the other (its curve can be read
+// off the larger run's).
 bool sameSamplesExceptBudget(const RenderSettings& a, const RenderSettings& b);
-
-// The strategy the issue asks for that vkpt cannot run yet, and why; the table lists it.
-struct UnavailableStrategy {
-    std::string family;
-    std::string reason;
-};
-std::vector<UnavailableStrategy> unavailableStrategies();
 
 } // namespace vkpt

@@ -1,7 +1,7 @@
 # check_study.cmake — runs vkpt-study and checks what it leaves behind.
 #
-#   cmake -DMODE=quick|replot|without_gnuplot -DSTUDY=<vkpt-study> -DSCENE=<gltf> -DOUT=<dir>
-#         -DCACHE=<dir> -P check_study.cmake
+#   cmake -DMODE=quick|replot|merge|without_gnuplot -DSTUDY=<vkpt-study> -DSCENE=<gltf>
+#         -DOUT=<dir> -DCACHE=<dir> -P check_study.cmake
 foreach(variable MODE STUDY SCENE OUT CACHE)
     if(NOT DEFINED ${variable})
         message(FATAL_ERROR "check_study.cmake: -D${variable}=... is missing")
@@ -31,10 +31,19 @@ endfunction()
 function(expect_outputs)
     expect_file(cornell-box.csv "^scene,family,label,.*\ncornell-box,uniform,\"uniform\",full,")
     expect_file(cornell-box-meta.txt "reference full 1024 64 ")
-    expect_file(cornell-box.md "time to relMSE 1e-3.*\\| no roulette \\|.*not yet available")
+    set(general "\\| general pipelines \\| `--spp 16 --general` \\|")
+    expect_file(cornell-box.md
+                "time to relMSE 1e-3.*\\| no roulette \\|.*${general}.*General over specialised")
     expect_file(cornell-box.gp "set logscale xy")
     expect_file(cornell-box-headline.svg "<svg.*relMSE.*(render time|CPU time of the render)")
-    expect_file(cornell-box.svg "<svg.*light against hemisphere sampling")
+    expect_file(cornell-box.svg "<svg.*light against hemisphere sampling.*specialised to the scene")
+endfunction()
+
+# The CSV's rows of every family but the pipeline one.
+function(rows_but_pipeline file variable)
+    file(STRINGS "${file}" rows)
+    list(FILTER rows EXCLUDE REGEX "^cornell-box,pipeline,")
+    set(${variable} "${rows}" PARENT_SCOPE)
 endfunction()
 
 if(MODE STREQUAL "quick")
@@ -51,6 +60,19 @@ elseif(MODE STREQUAL "replot")
          "${OUT}/cornell-box-headline.svg")
     study(0 --replot)
     expect_outputs()
+elseif(MODE STREQUAL "merge")
+    # In a directory of its own, so as not to race study.replot.
+    file(REMOVE_RECURSE "${OUT}-merge")
+    file(COPY "${OUT}/cornell-box.csv" "${OUT}/cornell-box-meta.txt" DESTINATION "${OUT}-merge")
+    set(OUT "${OUT}-merge")
+    rows_but_pipeline("${OUT}/cornell-box.csv" before)
+    study(0 --only pipeline --merge)
+    expect_outputs()
+    rows_but_pipeline("${OUT}/cornell-box.csv" after)
+    if(NOT before STREQUAL after)
+        message(FATAL_ERROR "--merge changed the rows it should have kept")
+    endif()
+    expect_file(cornell-box.md "The pipeline runs were rendered later and merged")
 elseif(MODE STREQUAL "without_gnuplot")
     set(ENV{PATH} "/nonexistent")
     study(1 -o "${OUT}-unused")

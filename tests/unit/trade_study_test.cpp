@@ -1,6 +1,6 @@
 // trade_study_test.cpp — the parts of vkpt-study that need no device: the plan of runs, the
 // time at which a curve reaches an error, adaptive's speedup, the CSV written and read back,
-// the table and plot script, and the reference cache.
+// the table (with the pipeline comparison) and plot script, and the reference cache.
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -55,8 +55,30 @@ TEST(TradeStudyPlan, CoversEveryStrategyWithUniqueLabels) {
             EXPECT_EQ(run.settings.seed, kStudySeed);
             EXPECT_NE(run.settings.seed, kReferenceSeed);
         }
-        EXPECT_EQ(families,
-                  (std::set<std::string>{"uniform", "adaptive", "sampling", "depth", "roulette"}));
+        EXPECT_EQ(families, (std::set<std::string>{"uniform", "adaptive", "sampling", "depth",
+                                                   "roulette", "pipeline"}));
+        EXPECT_EQ(families, std::set<std::string>(studyFamilies().begin(), studyFamilies().end()));
+    }
+}
+
+TEST(TradeStudyPlan, SpecialisedAndGeneralPipelinesAreTimedOneAfterTheOther) {
+    for (const StudyScale& scale : {fullScale(), quickScale()}) {
+        std::vector<StudyRun> pipelines;
+        for (const StudyRun& run : planStudy(base(), scale))
+            if (run.family == "pipeline") pipelines.push_back(run);
+        ASSERT_EQ(pipelines.size(), 2u);
+        EXPECT_EQ(pipelines[0].label, "specialised pipelines");
+        EXPECT_FALSE(pipelines[0].settings.general);
+        EXPECT_EQ(pipelines[1].label, "general pipelines");
+        EXPECT_TRUE(pipelines[1].settings.general);
+        EXPECT_EQ(pipelines[1].flags, "--spp " + std::to_string(scale.sideSpp) + " --general");
+        for (const StudyRun& run : pipelines) {
+            // Rendered, not read off the uniform run, so that both are timed side by side.
+            EXPECT_FALSE(run.shareable);
+            EXPECT_EQ(run.settings.samplesPerPixel, scale.sideSpp);
+            EXPECT_FALSE(run.settings.adaptive.enabled);
+            EXPECT_EQ(run.reference, StudyReference::Full);
+        }
     }
 }
 
@@ -98,6 +120,9 @@ TEST(TradeStudyPlan, OnlyTheBudgetMayDifferForARunToBeShared) {
     EXPECT_FALSE(sameSamplesExceptBudget(a, b));
     b = a;
     b.adaptive.enabled = true;
+    EXPECT_FALSE(sameSamplesExceptBudget(a, b));
+    b = a;
+    b.general = true; // the same samples, but not the same time
     EXPECT_FALSE(sameSamplesExceptBudget(a, b));
 }
 
@@ -171,6 +196,16 @@ StudySummary sampleSummary() {
     RunResult shared = result("depth", "max depth 16", {point(0.1, 0.5, 1)});
     shared.sharedWith = "uniform";
     summary.results.push_back(shared);
+    // The general run is the specialised one 1.1 times slower throughout.
+    RunResult specialised =
+        result("pipeline", "specialised pipelines", {point(0.1, 0.5, 1), point(1, 4e-3, 9)});
+    specialised.setupSeconds = 0.02;
+    summary.results.push_back(specialised);
+    RunResult general =
+        result("pipeline", "general pipelines", {point(0.11, 0.5, 1), point(1.1, 4e-3, 9)});
+    general.run.flags = "--spp 64 --general";
+    general.setupSeconds = 0.05;
+    summary.results.push_back(general);
     return summary;
 }
 
@@ -195,14 +230,27 @@ TEST(TradeStudyData, AForeignCsvIsRefused) {
     EXPECT_THROW(readStudySummary(csv, meta), InputError);
 }
 
-TEST(TradeStudyOutput, TheTableHasTheHeadlineAndTheStrategyNotYetAvailable) {
+TEST(TradeStudyOutput, TheTableHasTheHeadline) {
     std::ostringstream table;
     writeStudyTable(table, sampleSummary(), "box.svg", "box-headline.svg");
     const std::string text = table.str();
     for (const char* expected :
          {"time to relMSE 1e-2", "time to relMSE 1e-3", "| uniform (defaults) |", "(6 spp)",
-          "specialised vs general pipeline", "not yet available", "**1.29×** in wall time",
-          "max depth 16 (= uniform)", "1024", "A note.", "![box: uniform against adaptive"})
+          "**1.29×** in wall time", "max depth 16 (= uniform)", "1024", "A note.",
+          "![box: uniform against adaptive"})
+        EXPECT_NE(text.find(expected), std::string::npos) << expected << " in\n" << text;
+}
+
+TEST(TradeStudyOutput, TheTableComparesGeneralWithSpecialisedPipelines) {
+    std::ostringstream table;
+    writeStudyTable(table, sampleSummary(), "box.svg", "box-headline.svg");
+    const std::string text = table.str();
+    for (const char* expected :
+         {"| specialised pipelines (defaults, timed beside general) | `--spp 64` |",
+          "| general pipelines | `--spp 64 --general` |", "General over specialised pipelines",
+          "- to relMSE 1e-02: **1.10×** (", "- to relMSE 1e-03: not measured",
+          "- the whole budget, 9 samples/pixel: **1.10×** (1.1 s against 1 s)",
+          "wall time): 0.05 s against 0.02 s"})
         EXPECT_NE(text.find(expected), std::string::npos) << expected << " in\n" << text;
 }
 
@@ -211,7 +259,8 @@ TEST(TradeStudyOutput, TheScriptWritesBothPlotsWithLogAxes) {
     writeGnuplotScript(script, sampleSummary(), "h.svg", "o.svg");
     const std::string text = script.str();
     for (const char* expected : {"set output 'h.svg'", "set output 'o.svg'", "set logscale xy",
-                                 "$run0 << EOD", "$adaptive16 << EOD", "set multiplot"})
+                                 "$run0 << EOD", "$adaptive16 << EOD", "set multiplot",
+                                 "$run4 using 1:2 with lines lw 2 title 'general pipelines'"})
         EXPECT_NE(text.find(expected), std::string::npos) << expected;
 }
 
