@@ -14,6 +14,7 @@
 #include <thread>
 #include <vector>
 
+#include "bench_statistics.h"
 #include "bvh/bvh_flatten.h"
 #include "bvh/bvh_traverse.h"
 #include "bvh/synthetic_scenes.h"
@@ -23,6 +24,8 @@
 
 namespace vkpt {
 namespace {
+
+using vkpt::bench::median;
 
 constexpr int kBuildRuns = 3;
 constexpr int kTimedRuns = 3;
@@ -36,11 +39,6 @@ struct BenchScene {
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    return values[values.size() / 2];
 }
 
 double medianSeconds(int runs, const std::function<void()>& work) {

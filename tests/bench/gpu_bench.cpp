@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_statistics.h"
 #include "common/errors.h"
 #include "gpu/context.h"
 #include "gpu/vk_check.h"
@@ -20,6 +21,8 @@
 #include "scene/gltf_loader.h"
 
 namespace {
+
+using vkpt::bench::median;
 
 using namespace vkpt;
 
@@ -57,11 +60,6 @@ BenchOptions parse(int argc, char** argv) {
                     std::string(VKPT_SCENES_DIR) +
                         "/../../shared/scenes/TransmissionTest/TransmissionTest.glb"};
     return o;
-}
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    return values[values.size() / 2];
 }
 
 struct Figures {

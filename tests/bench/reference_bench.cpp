@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_statistics.h"
 #include "common/errors.h"
 #include "prepare/prepared_scene.h"
 #include "reference/reference_renderer.h"
@@ -15,6 +16,8 @@
 #include "scene/gltf_loader.h"
 
 namespace {
+
+using vkpt::bench::median;
 
 using namespace vkpt;
 
@@ -41,11 +44,6 @@ BenchOptions parse(int argc, char** argv) {
         o.scenes = {std::string(VKPT_SCENES_DIR) + "/cornell-box.gltf",
                     std::string(VKPT_SCENES_DIR) + "/../../shared/scenes/TransmissionTest/TransmissionTest.glb"};
     return o;
-}
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    return values[values.size() / 2];
 }
 
 void benchScene(const std::string& path, const BenchOptions& o) {

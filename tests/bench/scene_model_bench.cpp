@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_statistics.h"
 #include "common/errors.h"
 #include "gpu/context.h"
 #include "gpu/vk_check.h"
@@ -27,6 +28,8 @@
 #include "scene/gltf_loader.h"
 
 namespace {
+
+using vkpt::bench::median;
 
 using namespace vkpt;
 
@@ -75,11 +78,6 @@ BenchOptions parse(int argc, char** argv) {
             {shared + "DamagedHelmet/DamagedHelmet.glb", o.environment.value_or(glm::vec3(1.0f))}};
     }
     return o;
-}
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    return values[values.size() / 2];
 }
 
 struct ModeFigures {

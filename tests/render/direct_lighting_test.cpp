@@ -3,16 +3,12 @@
 #include <gtest/gtest.h>
 
 #include "../support/reference_render.h"
+#include "../support/render_checks.h"
 #include "image/image_compare.h"
 
 namespace vkpt {
 namespace {
 
-// Per-pixel z-test, family-wise alpha 0.01 over all pixels (Šidák), variances from the renders.
-void expectSameImage(const RenderOutput& a, const RenderOutput& b, const std::string& what) {
-    ZTestResult z = zTestPerPixel(a, b, 0.01);
-    EXPECT_TRUE(z.passed) << what << ": " << z.summary;
-}
 
 TEST(DirectLighting, HemisphereAndLightSamplingConvergeToTheSameImage) {
     test::LoadedTestScene scene = test::loadTestScene("test/quad-light-floor.gltf");
@@ -28,7 +24,7 @@ TEST(DirectLighting, HemisphereAndLightSamplingConvergeToTheSameImage) {
     settings.lightSampling = LightSampling::Hemisphere;
     settings.seed = 1;
     RenderOutput hemisphere = test::renderTestScene(scene, settings);
-    expectSameImage(light, hemisphere, "light vs hemisphere sampling");
+    test::expectSameImage(light, hemisphere, "light vs hemisphere sampling");
 }
 
 TEST(DirectLighting, PathTracerAtDepthOneMatchesTheDirectIntegrator) {
@@ -39,7 +35,7 @@ TEST(DirectLighting, PathTracerAtDepthOneMatchesTheDirectIntegrator) {
     settings.integrator = Integrator::Direct;
     settings.seed = 1;
     RenderOutput direct = test::renderTestScene(scene, settings);
-    expectSameImage(path, direct, "path depth 1 vs direct");
+    test::expectSameImage(path, direct, "path depth 1 vs direct");
 }
 
 TEST(DirectLighting, MoreLightSamplesReduceVariance) {

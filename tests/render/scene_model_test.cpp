@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "../support/reference_render.h"
+#include "../support/render_checks.h"
 #include "../support/scene_builder.h"
 #include "image/image_compare.h"
 #include "prepare/environment_map.h"
@@ -124,11 +125,6 @@ TEST(Environment, ConstantEnvironmentLightsAFloorWithItsIrradiance) {
         ASSERT_EQ(pixel, sky.environment.radiance);
 }
 
-// Per-pixel z-test, family-wise α = 0.01 over all pixels (Šidák), variances from the renders.
-void expectSameImage(const RenderOutput& a, const RenderOutput& b, const std::string& what) {
-    ZTestResult z = zTestPerPixel(a, b, 0.01);
-    EXPECT_TRUE(z.passed) << what << ": " << z.summary;
-}
 
 // The environment map's importance sampling against uniform hemisphere directions: both
 // estimate the same direct lighting, so their images agree in distribution.
@@ -145,7 +141,7 @@ TEST(Environment, MapImportanceSamplingAgreesWithHemisphereSampling) {
     settings.lightSampling = LightSampling::Hemisphere;
     settings.seed = 1;
     RenderOutput hemisphere = test::renderTestScene(scene, settings);
-    expectSameImage(light, hemisphere, "environment map: light vs hemisphere sampling");
+    test::expectSameImage(light, hemisphere, "environment map: light vs hemisphere sampling");
 }
 
 // GGX materials: light sampling alone (evaluateBsdf) and the path tracer at depth 1, whose
@@ -161,7 +157,7 @@ TEST(MetallicRoughness, LightSamplingAndBsdfSamplingAgree) {
     RenderSettings path = test::testSettings(16, 256);
     path.maxDepth = 1;
     path.seed = 2;
-    expectSameImage(test::renderTestScene(scene, path), light, "GGX: path depth 1 vs direct");
+    test::expectSameImage(test::renderTestScene(scene, path), light, "GGX: path depth 1 vs direct");
 }
 
 // An emitting sphere seen directly: exactly its emission inside the silhouette, and the

@@ -16,6 +16,14 @@
 
 namespace vkpt::test {
 
+// Two renders of one scene by independent estimators (or seeds) agree in distribution: the
+// per-pixel Welch test at family-wise α = 0.01 over all pixels (Šidák), variances from the
+// renders themselves.
+inline void expectSameImage(const RenderOutput& a, const RenderOutput& b, const std::string& what) {
+    ZTestResult z = zTestPerPixel(a, b, 0.01);
+    EXPECT_TRUE(z.passed) << what << ": " << z.summary;
+}
+
 // The white furnace: inside a closed surface of albedo a emitting E, the radiance with at most
 // D scattering events is exactly E·(1 − a^(D+1)) / (1 − a) everywhere.
 struct FurnaceParameters {

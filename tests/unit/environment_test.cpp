@@ -21,6 +21,7 @@
 
 #include "../support/chi_square.h"
 #include "common/errors.h"
+#include "../support/test_directory.h"
 #include "image/image_io.h"
 #include "shared/environment.h"
 #include "shared/rng.h"
@@ -456,25 +457,13 @@ TEST(EnvironmentDistribution, ParamsDescribeTheMapOrTheColour) {
 // -------------------------------------------------------------------------------------------
 // Files
 
-// Each test writes into its own directory, since CTest may run tests in parallel.
-class EnvironmentFile : public ::testing::Test {
+class EnvironmentFile : public test::TestDirectory {
 protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path() /
-               ("vkpt_environment_" + std::string(info->name()) + "_" + std::to_string(getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+    EnvironmentFile() : TestDirectory("vkpt_environment") {}
 
     void writeText(const std::string& name, const std::string& text) const {
         std::ofstream(path(name), std::ios::binary) << text;
     }
-
-    fs::path dir_;
 };
 
 std::string errorOf(const std::function<void()>& action) {

@@ -1,6 +1,7 @@
 // image_io_test.cpp — image files as other tools read them: PFM bytes and byte orders, PNG
 // sRGB values decoded back with stb_image, Radiance HDR within RGBE precision, the heat map,
 // and the errors a user sees for a bad path or file.
+#include "../support/test_directory.h"
 #include "image/image_io.h"
 
 #include <algorithm>
@@ -26,21 +27,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Each test writes into its own directory, since CTest may run tests in parallel.
-class ImageIo : public ::testing::Test {
+class ImageIo : public test::TestDirectory {
 protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path() /
-               ("vkpt_image_io_" + std::string(info->name()) + "_" + std::to_string(getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-    fs::path dir_;
+    ImageIo() : TestDirectory("vkpt_image_io") {}
 };
 
 std::vector<unsigned char> readBytes(const std::string& path) {
