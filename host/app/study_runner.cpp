@@ -16,6 +16,7 @@
 #include "app/pass_figures.h"
 #include "app/scene_setup.h"
 #include "common/errors.h"
+#include "common/progress.h"
 #include "gpu/device_list.h"
 #include "image/error_metrics.h"
 #include "reference/reference_renderer.h"
@@ -33,6 +34,12 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 const char* const kProgram = "vkpt-study";
+
+std::string formatRelMse(double relMse) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3e", relMse);
+    return text;
+}
 
 double secondsSince(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
@@ -107,7 +114,7 @@ private:
     const Image& reference(StudyReference kind);
     RenderOutput renderReferenceImage(const RenderSettings& settings, ReferenceInfo& info);
     const SceneSetup& setupFor(const RenderSettings& settings);
-    RunResult measure(const StudyRun& run);
+    RunResult measure(const StudyRun& run, const std::string& progressLabel);
     const RunResult* sharableRun(const StudyRun& run) const;
     void renderPlan(const StudySummary& earlier);
     void composeNote(const StudySummary& earlier, const std::string& loadAtStart);
@@ -209,22 +216,30 @@ RunResult readOff(const StudyRun& run, const RunResult& lender) {
     return result;
 }
 
-RunResult StudyRunner::measure(const StudyRun& run) {
+// Renders one run, measuring its error after every pass. A full-scale run takes minutes on
+// lavapipe, so it shows its progress in samples out of its budget (adaptive runs end early).
+RunResult StudyRunner::measure(const StudyRun& run, const std::string& progressLabel) {
     if (const RunResult* lender = sharableRun(run)) return readOff(run, *lender);
     RunResult result;
     result.run = run;
     ConvergenceTracker tracker(&reference(run.reference), 0.0);
+    const std::uint64_t budget = std::uint64_t(run.settings.samplesPerPixel) *
+                                 run.settings.width * run.settings.height;
+    ProgressBar progressBar(progressLabel, budget);
     WavefrontOptions options;
     options.slotCount = invocation_.pathSlots;
     options.readPixelsAfterPass = true;
-    options.afterPass = [&tracker](const PassProgress& progress) {
+    options.afterPass = [&tracker, &progressBar](const PassProgress& progress) {
         tracker.record(passFigures(progress), progress.output);
+        progressBar.setStatus("relMSE " + formatRelMse(tracker.curve().back().relMse));
+        progressBar.advance(progress.samplesTaken - progressBar.done());
         return false;
     };
     const SceneSetup& setup = setupFor(run.settings);
     const Clock::time_point start = Clock::now();
     const WavefrontResult rendered =
         renderWavefront(context_, setup.prepared, setup.camera, run.settings, options);
+    progressBar.finish();
     result.setupSeconds = secondsSince(start) - rendered.stats.seconds;
     result.curve = tracker.curve();
     if (rendered.truncatedTraversals > 0)
@@ -341,7 +356,10 @@ void StudyRunner::renderPlan(const StudySummary& earlier) {
     std::size_t rendered = 0;
     for (const StudyRun& run : plan) {
         if (wanted(invocation_, run.family)) {
-            summary_.results.push_back(measure(run));
+            const std::string label = std::string(kProgram) + ": [" +
+                                      std::to_string(rendered + 1) + "/" + std::to_string(count) +
+                                      "] " + run.label;
+            summary_.results.push_back(measure(run, label));
             reportRun(summary_.results.back(), rendered++, count);
         } else if (std::optional<RunResult> kept = keptRun(earlier, run)) {
             // A kept run that was read off another's curve follows it, should that one have
