@@ -32,13 +32,14 @@ void traceRecord(uint index) {
     ShadowRay record = shadowRays[index];
     uint kind = record.flags & SHADOW_KIND_MASK;
     if (kind == SHADOW_NONE) return;
-    Traversal walk;
-    if (kind == SHADOW_SEGMENT) {
-        walk = traceAny(record.origin, record.direction, 0.0, record.tMax);
+    // One walk for both kinds: lavapipe runs both sides of a branch, so a walk on each side
+    // would cost every record two walks' code.
+    bool segment = kind == SHADOW_SEGMENT;
+    Traversal walk = walkBvh(record.origin, record.direction, 0.0, record.tMax, segment);
+    if (segment) {
         if (walk.hit.triangle == NO_HIT) shadowRays[index].flags = record.flags | SHADOW_VISIBLE;
         atomicAdd(groupShadowRays, 1u);
     } else {
-        walk = traceClosest(record.origin, record.direction, 0.0, record.tMax);
         // The emission reached, or the environment when the probe leaves the scene.
         bool hit = walk.hit.triangle != NO_HIT;
         if (hit || hasEnvironment()) {

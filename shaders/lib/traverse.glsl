@@ -3,7 +3,7 @@
 // continues at missIndex, an entered interior node at index + 1. A leaf's primitives are
 // triangles or spheres (FEATURE_SPHERES); a crossing of an alpha-masked material's cut-out
 // (FEATURE_ALPHA_MASK) is no hit, for every kind of ray, as the reference's AlphaMaskFilter
-// decides. Needs what lib/materials.glsl needs, and bvhNodes.
+// decides, in the same order of crossings. Needs what lib/materials.glsl needs, and bvhNodes.
 #ifndef VKPT_TRAVERSE_GLSL
 #define VKPT_TRAVERSE_GLSL
 
@@ -18,31 +18,106 @@ struct Traversal {
     uint triangleTests;
 };
 
-// The ray's crossing of primitive `index` in (tMin, tMax), unless it is an alpha-masked cut-out.
-TriangleHit testPrimitive(uint index, vec3 origin, vec3 direction, ShearedRay sheared, float tMin,
-                          float tMax) {
+// The ray's crossing of primitive `index` in (tMin, tMax), cut-outs included.
+TriangleHit crossPrimitive(uint index, vec3 origin, vec3 direction, ShearedRay sheared,
+                           float tMin, float tMax) {
     Triangle primitive = triangles[index];
-    bool sphere = featureSpheres && isSpherePrimitive(primitive);
-    TriangleHit h;
-    if (sphere) {
-        h = intersectSphere(origin, direction, primitive.v0, primitive.v1.x, tMin, tMax);
-    } else {
-        h = intersectTriangleWatertight(origin, sheared, primitive.v0, primitive.v1, primitive.v2,
-                                        tMin, tMax);
-    }
-    if (featureAlphaMask && h.hit) {
-        vec3 sphereNormal =
-            sphere ? sphereNormalAt(origin + h.t * direction, primitive.v0) : vec3(0.0);
-        if (alphaMasked(index, primitive, h.u, h.v, sphereNormal)) h.hit = false;
-    }
-    return h;
+    if (featureSpheres && isSpherePrimitive(primitive))
+        return intersectSphere(origin, direction, primitive.v0, primitive.v1.x, tMin, tMax);
+    return intersectTriangleWatertight(origin, sheared, primitive.v0, primitive.v1, primitive.v2,
+                                       tMin, tMax);
 }
 
-// The loop runs while index < nodeCount: every node index is below it and BVH_END is not.
+// Whether a crossing of primitive `index` must pass the alpha test before it counts.
+bool needsAlphaTest(uint index) {
+    return featureAlphaMask &&
+           materials[triangles[index].materialIndex].alphaMode == ALPHA_MODE_MASK;
+}
+
+// Whether crossing `h` of primitive `index` lies in an alpha-masked material's cut-out.
+bool isCutOut(uint index, TriangleHit h, vec3 origin, vec3 direction) {
+    Triangle primitive = triangles[index];
+    bool sphere = featureSpheres && isSpherePrimitive(primitive);
+    vec3 sphereNormal =
+        sphere ? sphereNormalAt(origin + h.t * direction, primitive.v0) : vec3(0.0);
+    return alphaMasked(index, primitive, h.u, h.v, sphereNormal);
+}
+
+// Where a walk stands: the next node to visit and, when a leaf was left half-tested, the rest
+// of its primitives [leafNext, leafEnd).
+struct WalkCursor {
+    uint node;
+    uint leafNext;
+    uint leafEnd;
+};
+
+// A crossing that needs the alpha test before the walk may take it; primitive NO_HIT: none.
+struct PendingCrossing {
+    TriangleHit hit;
+    uint primitive;
+};
+
+// Tests primitives [cursor.leafNext, cursor.leafEnd), taking each crossing closer than the
+// best so far, until the range ends or a crossing needs the alpha test (returned, with the
+// cursor just past it).
+PendingCrossing testLeafRange(inout WalkCursor cursor, inout Traversal walk, vec3 origin,
+                              vec3 direction, ShearedRay sheared, float tMin, bool stopAtFirst) {
+    PendingCrossing pending;
+    pending.primitive = NO_HIT;
+    for (; cursor.leafNext < cursor.leafEnd; ++cursor.leafNext) {
+        uint i = cursor.leafNext;
+        ++walk.triangleTests;
+        TriangleHit h = crossPrimitive(i, origin, direction, sheared, tMin, walk.hit.t);
+        if (!h.hit) continue;
+        if (needsAlphaTest(i)) {
+            pending = PendingCrossing(h, i);
+            ++cursor.leafNext;
+            break;
+        }
+        walk.hit = HitRecord(h.t, h.u, h.v, i);
+        if (stopAtFirst) break;
+    }
+    return pending;
+}
+
+// Walks on from `cursor` until the tree ends or a crossing needs the alpha test.
+// The loop runs while node < nodeCount: every node index is below it and BVH_END is not.
 // Mesa 22.3's lavapipe silently leaves loops after 65,535 iterations per SIMD vector
-// (docs/gpu.md); such a walk stops at a real node, so index != BVH_END afterwards reports
-// it. The test is written so that the compiler cannot fold it away: the loop condition
-// proves index >= nodeCount, not index == BVH_END.
+// (docs/gpu.md); such a walk stops at a real node, so node != BVH_END afterwards reports it.
+// The test is written so that the compiler cannot fold it away: the loop condition proves
+// node >= nodeCount, not node == BVH_END.
+PendingCrossing walkOn(inout WalkCursor cursor, inout Traversal walk, vec3 origin,
+                       vec3 direction, vec3 invDirection, ShearedRay sheared, float tMin,
+                       bool stopAtFirst) {
+    PendingCrossing pending =
+        testLeafRange(cursor, walk, origin, direction, sheared, tMin, stopAtFirst);
+    if (pending.primitive != NO_HIT) return pending;
+    if (stopAtFirst && walk.hit.triangle != NO_HIT) cursor.node = BVH_END;
+    uint nodeCount = frame.nodeCount;
+    while (cursor.node < nodeCount) {
+        BvhNode node = bvhNodes[cursor.node];
+        ++walk.nodesVisited;
+        float entry =
+            intersectBox(origin, invDirection, node.boundsMin, node.boundsMax, tMin, walk.hit.t);
+        if (entry == VKPT_FAR || node.leafTriangles == 0u) {
+            cursor.node = entry == VKPT_FAR ? node.missIndex : cursor.node + 1u;
+            continue;
+        }
+        cursor.leafNext = leafFirstTriangle(node.leafTriangles);
+        cursor.leafEnd = cursor.leafNext + leafTriangleCount(node.leafTriangles);
+        cursor.node = node.missIndex;
+        pending = testLeafRange(cursor, walk, origin, direction, sheared, tMin, stopAtFirst);
+        if (pending.primitive != NO_HIT) break;
+        if (stopAtFirst && walk.hit.triangle != NO_HIT) cursor.node = BVH_END;
+    }
+    return pending;
+}
+
+// The stackless skip-link walk. A crossing of an alpha-masked material is not tested inside
+// the walk's loop: the walk stops there, the test runs once outside, and the walk resumes
+// where it stopped, so it takes the same crossings in the same order as an inline test would.
+// On lavapipe, which runs both sides of every branch as masked SIMD code, an inline test
+// would cost a texture lookup per primitive tested, whatever the material.
 Traversal walkBvh(vec3 origin, vec3 direction, float tMin, float tMax, bool stopAtFirst) {
     vec3 invDirection = safeInverseDirection(direction);
     // The watertight test's shear depends on the ray alone: once per walk, not per triangle.
@@ -51,29 +126,17 @@ Traversal walkBvh(vec3 origin, vec3 direction, float tMin, float tMax, bool stop
     walk.hit = HitRecord(tMax, 0.0, 0.0, NO_HIT);
     walk.nodesVisited = 0u;
     walk.triangleTests = 0u;
-    uint nodeCount = frame.nodeCount;
-    uint index = 0u;
-    while (index < nodeCount) {
-        BvhNode node = bvhNodes[index];
-        ++walk.nodesVisited;
-        float entry =
-            intersectBox(origin, invDirection, node.boundsMin, node.boundsMax, tMin, walk.hit.t);
-        if (entry == VKPT_FAR || node.leafTriangles == 0u) {
-            index = entry == VKPT_FAR ? node.missIndex : index + 1u;
-            continue;
+    WalkCursor cursor = WalkCursor(0u, 0u, 0u);
+    PendingCrossing pending;
+    do {
+        pending = walkOn(cursor, walk, origin, direction, invDirection, sheared, tMin, stopAtFirst);
+        if (featureAlphaMask && pending.primitive != NO_HIT &&
+            !isCutOut(pending.primitive, pending.hit, origin, direction)) {
+            walk.hit = HitRecord(pending.hit.t, pending.hit.u, pending.hit.v, pending.primitive);
+            if (stopAtFirst) cursor = WalkCursor(BVH_END, 0u, 0u);
         }
-        uint first = leafFirstTriangle(node.leafTriangles);
-        uint end = first + leafTriangleCount(node.leafTriangles);
-        for (uint i = first; i < end; ++i) {
-            ++walk.triangleTests;
-            TriangleHit h = testPrimitive(i, origin, direction, sheared, tMin, walk.hit.t);
-            if (!h.hit) continue;
-            walk.hit = HitRecord(h.t, h.u, h.v, i);
-            if (stopAtFirst) break;
-        }
-        index = (stopAtFirst && walk.hit.triangle != NO_HIT) ? BVH_END : node.missIndex;
-    }
-    walk.truncated = index != BVH_END;
+    } while (featureAlphaMask && pending.primitive != NO_HIT);
+    walk.truncated = cursor.node != BVH_END;
     return walk;
 }
 

@@ -4,6 +4,7 @@
 // cut short), scenes with spheres and alpha-masked cut-outs (the reference's AlphaMaskFilter)
 // and a shared glTF scene. A last test builds a BVH whose walks must exceed that limit and
 // checks that the kernels report it instead of answering wrongly in silence.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -214,6 +215,56 @@ TEST_F(DeviceTraversal, SpheresAndAlphaCutOutsMatchTheStackWalk) {
         expectClosestMatchesStack(scene, named.name);
         expectAnyHitMatchesStack(scene, named.name);
     }
+}
+
+// Ten alpha-masked screens stacked 2 cm apart in front of the wall, each with its own pattern
+// of holes: a ray crosses several cut-outs before it stops, and the BVH puts screens side by
+// side in one leaf, so the walk must pause for the alpha test in the middle of a leaf and
+// resume there (lib/traverse.glsl), for the closest hit and for any hit.
+Scene stackedCutOutScene() {
+    using namespace feature_scenes;
+    Scene scene = cornerWithMaterials();
+    int holes = addTexture(
+        scene, 8, 8,
+        [](std::uint32_t x, std::uint32_t y) {
+            return glm::uvec4(200, 200, 200, (x / 2 + y / 2) % 2 ? 255 : 0);
+        },
+        true);
+    for (int k = 0; k < 10; ++k) {
+        std::uint32_t screen = addMaterial(scene, {{0.9f, 0.9f, 0.9f}, {}, 0.0f, 1.0f, 0.0f, true});
+        scene.materials[screen].alphaMode = AlphaMode::Mask;
+        scene.materials[screen].baseColorTexture.texture = holes;
+        const float z = 1.0f - 0.02f * float(k);
+        addQuad(scene, {-1.5f, 0.0f, z}, {1.5f, 0.0f, z}, {1.5f, 3.0f, z}, {-1.5f, 3.0f, z}, screen,
+                1.3f + 0.37f * float(k));
+    }
+    return scene;
+}
+
+// The most alpha-masked primitives any leaf of the flattened tree holds.
+std::uint32_t mostMaskedPrimitivesInALeaf(const PreparedScene& scene) {
+    std::uint32_t most = 0;
+    for (const gpu::BvhNode& node : scene.nodes) {
+        if (node.leafTriangles == 0) continue;
+        const std::uint32_t first = gpu::leafFirstTriangle(node.leafTriangles);
+        std::uint32_t masked = 0;
+        for (std::uint32_t i = first; i < first + gpu::leafTriangleCount(node.leafTriangles); ++i)
+            masked += scene.materials[scene.triangles[i].materialIndex].alphaMode ==
+                              ALPHA_MODE_MASK
+                          ? 1
+                          : 0;
+        most = std::max(most, masked);
+    }
+    return most;
+}
+
+TEST_F(DeviceTraversal, WalksResumeAfterCutOutsInsideALeaf) {
+    LoadedTestScene scene = prepareTestScene(stackedCutOutScene());
+    // Three masked triangles in a leaf are two screens' at least: a ray can cross both.
+    ASSERT_GE(mostMaskedPrimitivesInALeaf(scene.prepared), 3u)
+        << "the BVH no longer puts screens together; the test would not resume inside a leaf";
+    expectClosestMatchesStack(scene, "stacked cut-outs");
+    expectAnyHitMatchesStack(scene, "stacked cut-outs");
 }
 
 TEST_F(DeviceTraversal, ClosestAndAnyHitsMatchTheStackWalkInASharedScene) {
