@@ -4,7 +4,7 @@
 # (96×96, up to 2048 spp), writing CSV, Markdown tables and SVG plots into docs/trade/.
 # References are made once and cached outside the repository ($XDG_CACHE_HOME/vkpt, else
 # ~/.cache/vkpt). On the project's 2-core VM with lavapipe: about 20 minutes for the Cornell
-# box and an hour for TransmissionTest, each about 5 more when its references are made.
+# box and 22 for TransmissionTest, each about 5 more when its references are made.
 #
 #   bash ci/trade_study.sh [cornell|transmission|all] [vkpt-study options...]
 #
