@@ -2,6 +2,7 @@
 // CS184's hemisphere and light sampling, and the path tracer limited to one bounce (MIS).
 #include <gtest/gtest.h>
 
+#include "../image/feature_scenes.h"
 #include "../support/reference_render.h"
 #include "../support/render_checks.h"
 #include "image/image_compare.h"
@@ -25,6 +26,46 @@ TEST(DirectLighting, HemisphereAndLightSamplingConvergeToTheSameImage) {
     settings.seed = 1;
     RenderOutput hemisphere = test::renderTestScene(scene, settings);
     test::expectSameImage(light, hemisphere, "light vs hemisphere sampling");
+}
+
+// A 3 × 3 ceiling light over the floor whose emissive texture is lit on its left half only,
+// and a small plain light on the wall: light sampling picks between them by their
+// texture-weighted power (host/prepare/emission_weight.h), hemisphere sampling ignores it.
+Scene halfLitCeilingScene() {
+    namespace fs = test::feature_scenes;
+    Scene scene = fs::cornerWithMaterials();
+    const int halfLit = fs::addTexture(
+        scene, 8, 8,
+        [](std::uint32_t x, std::uint32_t) {
+            return x < 4 ? glm::uvec4(255, 230, 200, 255) : glm::uvec4(0, 0, 0, 255);
+        },
+        true);
+    const std::uint32_t ceiling = fs::addMaterial(scene, {glm::vec3(0.0f), glm::vec3(1.5f)});
+    scene.materials[ceiling].emissiveTexture.texture = halfLit;
+    const std::uint32_t lamp = fs::addMaterial(scene, {glm::vec3(0.0f), glm::vec3(4.0f)});
+    // Faces down, above every wall point the camera sees and half a unit from the wall, so
+    // that hemisphere sampling finds the lit half from every visible point often enough for
+    // the per-pixel variances to be trusted (a grazing view of it leaves pixels with a
+    // handful of hits and an underestimated variance).
+    fs::addQuad(scene, {-1.5f, 3.5f, -1.5f}, {1.5f, 3.5f, -1.5f}, {1.5f, 3.5f, 1.5f},
+                {-1.5f, 3.5f, 1.5f}, ceiling);
+    fs::addQuad(scene, {-1.6f, 0.4f, -1.99f}, {-1.0f, 0.4f, -1.99f}, {-1.0f, 1.0f, -1.99f},
+                {-1.6f, 1.0f, -1.99f}, lamp);
+    return scene;
+}
+
+TEST(DirectLighting, TextureWeightedLightSelectionStaysUnbiased) {
+    test::LoadedTestScene scene = test::feature_scenes::prepareTestScene(halfLitCeilingScene());
+    ASSERT_EQ(scene.prepared.emitters.size(), 4u);
+    RenderSettings settings = test::testSettings(16, 128);
+    settings.integrator = Integrator::Direct;
+    settings.lightSamples = 16;
+    settings.lightSampling = LightSampling::Light;
+    RenderOutput light = test::renderTestScene(scene, settings);
+    settings.lightSampling = LightSampling::Hemisphere;
+    settings.seed = 1;
+    RenderOutput hemisphere = test::renderTestScene(scene, settings);
+    test::expectSameImage(light, hemisphere, "light vs hemisphere sampling, textured emitter");
 }
 
 TEST(DirectLighting, PathTracerAtDepthOneMatchesTheDirectIntegrator) {
