@@ -143,9 +143,8 @@ EmitterList buildEmitters(std::span<gpu::Triangle> primitives,
         const auto [surface, added] = surfaces.try_emplace(surfaceKey(primitive), builder.size());
         primitive.emitterIndex = surface->second;
         if (!added) continue;
-        const double meanRadiance = meanEmittedLuminance(i, material, sources.textures);
         builder.add(surfaceEmitter(EMITTER_TRIANGLE, i, area),
-                    kPi * meanRadiance * double(area) * sides(material));
+                    kPi * radiance * double(area) * sides(material));
     }
     for (const SceneLight& light : sources.lights) {
         const double power = punctualPower(light, sources.sceneRadius);

@@ -5,7 +5,6 @@
 #include <span>
 #include <vector>
 
-#include "prepare/emission_weight.h"
 #include "scene/scene.h"
 #include "shared/host_device.h"
 
@@ -23,13 +22,11 @@ struct EmitterSources {
     std::span<const SceneLight> lights;
     double environmentPower = 0.0; // 0: no environment
     double sceneRadius = 1.0;
-    EmissionTextures textures; // to weigh triangles by their emissive texture (none: factor)
 };
 
 // Builds the list and writes each emitting primitive's emitterIndex (NO_EMITTER elsewhere).
-// Powers (the selection weights): an emitting surface π·L·A per emitting side (triangle, L
-// averaged over its emissive texture: meanEmittedLuminance) or π·L·4πr² (sphere, the
-// factor's L), a point light 4π·I, a spot light 2π(1 − (cos θi + cos θo)/2)·I (pbrt-v3's
+// Powers (the selection weights): an emitting surface π·L·A per emitting side (triangle) or
+// π·L·4πr² (sphere), a point light 4π·I, a spot light 2π(1 − (cos θi + cos θo)/2)·I (pbrt-v3's
 // estimate), a directional light π·R²·E, the environment as given; L, I and E by luminance.
 // Zero-area triangles cannot be hit or sampled, so they are left out; a triangle that repeats
 // an earlier emitting one (same corners in the same order, same material) shares its record.

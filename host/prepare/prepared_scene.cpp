@@ -80,10 +80,8 @@ PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options) {
     const double radius = sceneRadius(scene);
     double environmentPower = 0.0;
     prepareEnvironment(scene, radius, prepared, environmentPower);
-    EmitterList emitters =
-        buildEmitters(prepared.triangles, prepared.materials,
-                      {scene.lights, environmentPower, radius,
-                       {prepared.textures, prepared.texels, prepared.uvs}});
+    EmitterList emitters = buildEmitters(prepared.triangles, prepared.materials,
+                                         {scene.lights, environmentPower, radius});
     prepared.emitters = std::move(emitters.emitters);
     // The loader's count cannot know which emitting triangles repeat one another.
     prepared.usedFeatures.emitterCount = std::uint32_t(prepared.emitters.size());

@@ -28,16 +28,17 @@ TEST(DirectLighting, HemisphereAndLightSamplingConvergeToTheSameImage) {
     test::expectSameImage(light, hemisphere, "light vs hemisphere sampling");
 }
 
-// A 3 × 3 ceiling light over the floor whose emissive texture is lit on its left half only,
-// and a small plain light on the wall: light sampling picks between them by their
-// texture-weighted power (host/prepare/emission_weight.h), hemisphere sampling ignores it.
+// A 3 × 3 ceiling light over the floor whose emissive texture is lit on about half of it, in
+// a pattern that changes along both texture axes, and a small plain light on the wall: light sampling must read the texture at the point it
+// samples on the ceiling exactly as a hemisphere direction that hits it does, and choose
+// between two emitters by the CDF.
 Scene halfLitCeilingScene() {
     namespace fs = test::feature_scenes;
     Scene scene = fs::cornerWithMaterials();
     const int halfLit = fs::addTexture(
         scene, 8, 8,
-        [](std::uint32_t x, std::uint32_t) {
-            return x < 4 ? glm::uvec4(255, 230, 200, 255) : glm::uvec4(0, 0, 0, 255);
+        [](std::uint32_t x, std::uint32_t y) {
+            return (x < 4) != (y < 3) ? glm::uvec4(255, 230, 200, 255) : glm::uvec4(0, 0, 0, 255);
         },
         true);
     const std::uint32_t ceiling = fs::addMaterial(scene, {glm::vec3(0.0f), glm::vec3(1.5f)});
@@ -54,7 +55,7 @@ Scene halfLitCeilingScene() {
     return scene;
 }
 
-TEST(DirectLighting, TextureWeightedLightSelectionStaysUnbiased) {
+TEST(DirectLighting, TexturedEmittersLightAndHemisphereSamplingAgree) {
     test::LoadedTestScene scene = test::feature_scenes::prepareTestScene(halfLitCeilingScene());
     ASSERT_EQ(scene.prepared.emitters.size(), 4u);
     RenderSettings settings = test::testSettings(16, 128);

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "../image/feature_scenes.h"
 #include "../support/chi_square.h"
 #include "prepare/emitters.h"
 #include "prepare/prepared_scene.h"
@@ -209,68 +208,6 @@ TEST(Emitters, SampledPdfEqualsEvaluatedPdf) {
         EXPECT_NEAR(lightPdf(prepared, s, origin), light.pdfSolidAngle,
                     1e-3f * light.pdfSolidAngle);
     }
-}
-
-// Two emitting quads of the same factor and area facing the origin, the first with an 8 × 8
-// nearest-filtered emissive texture whose texel (x, y) is lit(x, y) (white or black), the
-// second untextured.
-template <typename Lit> Scene texturedAndPlainEmitters(Lit lit) {
-    namespace fs = test::feature_scenes;
-    Scene scene;
-    const int texture = fs::addTexture(
-        scene, 8, 8,
-        [&](std::uint32_t x, std::uint32_t y) {
-            return lit(x, y) ? glm::uvec4(255, 255, 255, 255) : glm::uvec4(0, 0, 0, 255);
-        },
-        true);
-    const std::uint32_t textured = fs::addMaterial(scene, {glm::vec3(0.0f), glm::vec3(2.0f)});
-    scene.materials[textured].emissiveTexture.texture = texture;
-    const std::uint32_t plain = fs::addMaterial(scene, {glm::vec3(0.0f), glm::vec3(2.0f)});
-    fs::addQuad(scene, {-1, -1, -2}, {1, -1, -2}, {1, 1, -2}, {-1, 1, -2}, textured);
-    fs::addQuad(scene, {2, -1, -2}, {4, -1, -2}, {4, 1, -2}, {2, 1, -2}, plain);
-    return scene;
-}
-
-// Σ selection probability of the emitters whose primitive has material `material`.
-double probabilityOfMaterial(const PreparedScene& prepared, std::uint32_t material) {
-    double sum = 0.0;
-    for (const gpu::Emitter& e : prepared.emitters)
-        if (prepared.triangles[e.primitive].materialIndex == material) sum += e.selectProbability;
-    return sum;
-}
-
-TEST(Emitters, EmissiveTexturesWeighTrianglesByTheirMeanEmission) {
-    // Lit on its left quarter: a quarter of the plain quad's power. The two triangles hold
-    // 1/16 and 7/16 of their own area lit (the diagonal runs from uv (0,0) to (1,1)); 8 × 8
-    // stratified points see that edge to within one stratum's width, so ±0.02 of the quad.
-    PreparedScene prepared =
-        prepareScene(texturedAndPlainEmitters([](std::uint32_t x, std::uint32_t) { return x < 2; }));
-    ASSERT_EQ(prepared.emitters.size(), 4u);
-    const double textured = probabilityOfMaterial(prepared, 0);
-    const double plain = probabilityOfMaterial(prepared, 1);
-    EXPECT_NEAR(textured / plain, 0.25, 0.02);
-    for (const gpu::Emitter& e : prepared.emitters) {
-        if (prepared.triangles[e.primitive].materialIndex == 0) {
-            EXPECT_GT(e.selectProbability, 0.0f);
-        }
-    }
-}
-
-TEST(Emitters, ABlackEmissiveTextureKeepsTheLeastWeight) {
-    // No lit texel anywhere: the floor, 1/64 of the untextured weight, which keeps any lit
-    // texel the 8 × 8 points might miss within light sampling's reach.
-    PreparedScene prepared =
-        prepareScene(texturedAndPlainEmitters([](std::uint32_t, std::uint32_t) { return false; }));
-    const double ratio = probabilityOfMaterial(prepared, 0) / probabilityOfMaterial(prepared, 1);
-    EXPECT_NEAR(ratio, kMinEmissionTextureWeight, 1e-6);
-}
-
-TEST(Emitters, UntexturedEmittersKeepTheirFactorsPower) {
-    PreparedScene prepared =
-        prepareScene(texturedAndPlainEmitters([](std::uint32_t, std::uint32_t) { return true; }));
-    // A white texture multiplies by 1: both quads weigh the same.
-    EXPECT_NEAR(probabilityOfMaterial(prepared, 0), 0.5, 1e-6);
-    EXPECT_NEAR(probabilityOfMaterial(prepared, 1), 0.5, 1e-6);
 }
 
 } // namespace
