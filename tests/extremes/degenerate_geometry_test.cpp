@@ -167,7 +167,25 @@ Scene litFloor(bool needles) {
     return scene;
 }
 
-class DegenerateRendering : public test::GpuTest {};
+class DegenerateRendering : public test::GpuTest {
+protected:
+    // Renders `scene` on both executors (seed 2) and requires each image finite and the same
+    // within noise as vkpt-ref's render of the plain Cornell box (seed 1).
+    test::BothRenders expectPlainCornellBox(const test::LoadedTestScene& scene) {
+        RenderSettings settings = test::testSettings(24, 64);
+        settings.seed = 2;
+        test::BothRenders r = test::renderBoth(context(), scene, settings);
+        RenderSettings unitSettings = test::testSettings(24, 64);
+        unitSettings.seed = 1;
+        RenderOutput unit =
+            test::renderTestScene(test::prepareTestScene(test::cornellBoxScene()), unitSettings);
+        for (const RenderOutput* out : {&r.cpu, &r.gpu}) {
+            EXPECT_TRUE(test::outputIsFinite(*out));
+            EXPECT_TRUE(test::sameWithinNoise(*out, unit, out == &r.cpu ? "vkpt-ref" : "vkpt"));
+        }
+        return r;
+    }
+};
 
 TEST_F(DegenerateRendering, NeedleFanRendersAsTheFloorItTiles) {
     RenderSettings settings = test::testSettings(24, 64);
@@ -197,17 +215,7 @@ TEST_F(DegenerateRendering, ZeroAreaTrianglesInMemoryChangeNothing) {
     }
     test::LoadedTestScene prepared = test::prepareTestScene(scene);
     EXPECT_EQ(prepared.prepared.emitters.size(), 2u) << "only the Cornell light's two triangles";
-    RenderSettings settings = test::testSettings(24, 64);
-    settings.seed = 2;
-    test::BothRenders r = test::renderBoth(context(), prepared, settings);
-    RenderSettings unitSettings = test::testSettings(24, 64);
-    unitSettings.seed = 1;
-    RenderOutput unit =
-        test::renderTestScene(test::prepareTestScene(test::cornellBoxScene()), unitSettings);
-    for (const RenderOutput* out : {&r.cpu, &r.gpu}) {
-        EXPECT_TRUE(test::outputIsFinite(*out));
-        EXPECT_TRUE(test::sameWithinNoise(*out, unit, out == &r.cpu ? "vkpt-ref" : "vkpt"));
-    }
+    test::BothRenders r = expectPlainCornellBox(prepared);
     EXPECT_EQ(r.cpuStats.nonFiniteSamples + r.gpuStats.nonFiniteSamples, 0u);
 }
 
@@ -229,17 +237,7 @@ TEST_F(DegenerateRendering, DuplicatedTrianglesChangeNothing) {
     }
     test::LoadedTestScene prepared = test::prepareTestScene(scene);
     EXPECT_EQ(prepared.prepared.emitters.size(), 2u);
-    RenderSettings settings = test::testSettings(24, 64);
-    settings.seed = 2;
-    test::BothRenders r = test::renderBoth(context(), prepared, settings);
-    RenderSettings unitSettings = test::testSettings(24, 64);
-    unitSettings.seed = 1;
-    RenderOutput unit =
-        test::renderTestScene(test::prepareTestScene(test::cornellBoxScene()), unitSettings);
-    for (const RenderOutput* out : {&r.cpu, &r.gpu}) {
-        EXPECT_TRUE(test::outputIsFinite(*out));
-        EXPECT_TRUE(test::sameWithinNoise(*out, unit, out == &r.cpu ? "vkpt-ref" : "vkpt"));
-    }
+    test::BothRenders r = expectPlainCornellBox(prepared);
     EXPECT_TRUE(test::devicesAgree(r.gpu, r.cpu));
 }
 

@@ -18,20 +18,15 @@ TEST(DirectLighting, HemisphereAndLightSamplingConvergeToTheSameImage) {
     // with some dozens of hits (with a handful, a low count also shrinks the estimated
     // variance and inflates |z|), so 128 samples × 16 directions give ≥ 25 hits everywhere.
     RenderSettings settings = test::testSettings(16, 128);
-    settings.integrator = Integrator::Direct;
     settings.lightSamples = 16;
-    settings.lightSampling = LightSampling::Light;
-    RenderOutput light = test::renderTestScene(scene, settings);
-    settings.lightSampling = LightSampling::Hemisphere;
-    settings.seed = 1;
-    RenderOutput hemisphere = test::renderTestScene(scene, settings);
-    test::expectSameImage(light, hemisphere, "light vs hemisphere sampling");
+    test::LightAndHemisphere both = test::renderLightAndHemisphere(scene, settings);
+    test::expectSameImage(both.light, both.hemisphere, "light vs hemisphere sampling");
 }
 
 // A 3 × 3 ceiling light over the floor whose emissive texture is lit on about half of it, in
-// a pattern that changes along both texture axes, and a small plain light on the wall: light sampling must read the texture at the point it
-// samples on the ceiling exactly as a hemisphere direction that hits it does, and choose
-// between two emitters by the CDF.
+// a pattern that changes along both texture axes, and a small plain light on the wall: light
+// sampling must read the texture at the point it samples on the ceiling exactly as a
+// hemisphere direction that hits it does, and choose between two emitters by the CDF.
 Scene halfLitCeilingScene() {
     namespace fs = test::feature_scenes;
     Scene scene = fs::cornerWithMaterials();
@@ -59,14 +54,9 @@ TEST(DirectLighting, TexturedEmittersLightAndHemisphereSamplingAgree) {
     test::LoadedTestScene scene = test::feature_scenes::prepareTestScene(halfLitCeilingScene());
     ASSERT_EQ(scene.prepared.emitters.size(), 4u);
     RenderSettings settings = test::testSettings(16, 128);
-    settings.integrator = Integrator::Direct;
     settings.lightSamples = 16;
-    settings.lightSampling = LightSampling::Light;
-    RenderOutput light = test::renderTestScene(scene, settings);
-    settings.lightSampling = LightSampling::Hemisphere;
-    settings.seed = 1;
-    RenderOutput hemisphere = test::renderTestScene(scene, settings);
-    test::expectSameImage(light, hemisphere, "light vs hemisphere sampling, textured emitter");
+    test::LightAndHemisphere both = test::renderLightAndHemisphere(scene, settings);
+    test::expectSameImage(both.light, both.hemisphere, "light vs hemisphere sampling, textured emitter");
 }
 
 TEST(DirectLighting, PathTracerAtDepthOneMatchesTheDirectIntegrator) {

@@ -135,13 +135,10 @@ TEST(Environment, MapImportanceSamplingAgreesWithHemisphereSampling) {
         readEnvironmentMap(test::scenePath("test/features/sky.hdr"), glm::vec3(1.0f));
     scene.prepared = prepareScene(scene.scene, {{}, selectCamera(scene.scene, {}).forward});
     RenderSettings settings = test::testSettings(16, 64);
-    settings.integrator = Integrator::Direct;
     settings.lightSamples = 8;
-    RenderOutput light = test::renderTestScene(scene, settings);
-    settings.lightSampling = LightSampling::Hemisphere;
-    settings.seed = 1;
-    RenderOutput hemisphere = test::renderTestScene(scene, settings);
-    test::expectSameImage(light, hemisphere, "environment map: light vs hemisphere sampling");
+    test::LightAndHemisphere both = test::renderLightAndHemisphere(scene, settings);
+    test::expectSameImage(both.light, both.hemisphere,
+                          "environment map: light vs hemisphere sampling");
 }
 
 // GGX materials: light sampling alone (evaluateBsdf) and the path tracer at depth 1, whose

@@ -61,4 +61,23 @@ inline RenderOutput renderTestScene(const LoadedTestScene& loaded, const RenderS
     return output;
 }
 
+// The direct integrator's two independent estimators of one scene, for tests that their
+// images agree: light sampling at settings.seed and uniform hemisphere directions at seed 1.
+struct LightAndHemisphere {
+    RenderOutput light;
+    RenderOutput hemisphere;
+};
+
+inline LightAndHemisphere renderLightAndHemisphere(const LoadedTestScene& loaded,
+                                                   RenderSettings settings) {
+    settings.integrator = Integrator::Direct;
+    settings.lightSampling = LightSampling::Light;
+    LightAndHemisphere both;
+    both.light = renderTestScene(loaded, settings);
+    settings.lightSampling = LightSampling::Hemisphere;
+    settings.seed = 1;
+    both.hemisphere = renderTestScene(loaded, settings);
+    return both;
+}
+
 } // namespace vkpt::test
