@@ -41,6 +41,9 @@ GpuPrimitives makeGpuPrimitives(const Scene& scene, const BvhTree& tree, bool wi
             for (std::size_t k = 0; k < 3; ++k)
                 result.uvs[3 * i + k] = scene.texcoords[3 * std::size_t(source) + k];
     }
+    for (gpu::Triangle& record : result.records)
+        if (scene.materials[record.materialIndex].alphaMode == AlphaMode::Mask)
+            record.sourceIndex |= PRIMITIVE_ALPHA_MASKED;
     return result;
 }
 

@@ -18,20 +18,13 @@ struct Traversal {
     uint triangleTests;
 };
 
-// The ray's crossing of primitive `index` in (tMin, tMax), cut-outs included.
-TriangleHit crossPrimitive(uint index, vec3 origin, vec3 direction, ShearedRay sheared,
+// The ray's crossing of `primitive` in (tMin, tMax), cut-outs included.
+TriangleHit crossPrimitive(Triangle primitive, vec3 origin, vec3 direction, ShearedRay sheared,
                            float tMin, float tMax) {
-    Triangle primitive = triangles[index];
     if (featureSpheres && isSpherePrimitive(primitive))
         return intersectSphere(origin, direction, primitive.v0, primitive.v1.x, tMin, tMax);
     return intersectTriangleWatertight(origin, sheared, primitive.v0, primitive.v1, primitive.v2,
                                        tMin, tMax);
-}
-
-// Whether a crossing of primitive `index` must pass the alpha test before it counts.
-bool needsAlphaTest(uint index) {
-    return featureAlphaMask &&
-           materials[triangles[index].materialIndex].alphaMode == ALPHA_MODE_MASK;
 }
 
 // Whether crossing `h` of primitive `index` lies in an alpha-masked material's cut-out.
@@ -67,9 +60,11 @@ PendingCrossing testLeafRange(inout WalkCursor cursor, inout Traversal walk, vec
     for (; cursor.leafNext < cursor.leafEnd; ++cursor.leafNext) {
         uint i = cursor.leafNext;
         ++walk.triangleTests;
-        TriangleHit h = crossPrimitive(i, origin, direction, sheared, tMin, walk.hit.t);
+        Triangle primitive = triangles[i];
+        TriangleHit h = crossPrimitive(primitive, origin, direction, sheared, tMin, walk.hit.t);
         if (!h.hit) continue;
-        if (needsAlphaTest(i)) {
+        // Marked at load time (PRIMITIVE_ALPHA_MASKED): no material read per crossing.
+        if (featureAlphaMask && isAlphaMaskedPrimitive(primitive)) {
             pending = PendingCrossing(h, i);
             ++cursor.leafNext;
             break;

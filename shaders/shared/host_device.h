@@ -89,7 +89,10 @@ VKPT_FN uint leafTriangleCount(uint leafTriangles) { return leafTriangles & BVH_
 // both; scenes without spheres compile the sphere test out (FEATURE_SPHERES).
 #define NO_EMITTER 0xffffffffu
 #define PRIMITIVE_SPHERE 0x80000000u
-#define PRIMITIVE_SOURCE_MASK 0x7fffffffu
+// Set in sourceIndex at load time when the primitive's material is alphaMode MASK, so that a
+// BVH walk knows which crossings need the alpha test without reading the material.
+#define PRIMITIVE_ALPHA_MASKED 0x40000000u
+#define PRIMITIVE_SOURCE_MASK 0x3fffffffu
 
 struct Triangle {
     vec3 v0;
@@ -97,11 +100,15 @@ struct Triangle {
     vec3 v1;
     uint emitterIndex; // index into emitters, NO_EMITTER when the material does not emit
     vec3 v2;
-    uint sourceIndex; // index in the loaded scene's triangle (or sphere) list | PRIMITIVE_SPHERE
+    uint sourceIndex; // index in the loaded scene's triangle (or sphere) list | PRIMITIVE_*
 };
 
 VKPT_FN bool isSpherePrimitive(Triangle primitive) {
     return (primitive.sourceIndex & PRIMITIVE_SPHERE) != 0u;
+}
+
+VKPT_FN bool isAlphaMaskedPrimitive(Triangle primitive) {
+    return (primitive.sourceIndex & PRIMITIVE_ALPHA_MASKED) != 0u;
 }
 
 // Shading normals, one record per triangle in the same order (w unused, kept for std430).
