@@ -1,5 +1,5 @@
-// bvh_traverse.cpp — CPU ray queries: the reference's ordered stack walk of the tree, the
-// GPU's stackless skip-link walk of the flattened nodes, and brute force for the tests.
+// bvh_traverse.cpp — CPU ray queries: the reference's ordered stack walk of the tree, and brute
+// force for the tests.
 #include "bvh/bvh_traverse.h"
 
 #include <array>
@@ -120,30 +120,6 @@ bool walkStack(const BvhTree& tree, std::span<const gpu::Triangle> triangles, Wa
     return any;
 }
 
-// The GPU kernels' walk: no stack, children in stored order; a missed
-// box or a finished leaf continues at missIndex, an entered interior node at index + 1.
-bool walkStackless(std::span<const gpu::BvhNode> nodes, std::span<const gpu::Triangle> triangles,
-                   Walk& walk, bool stopAtFirst) {
-    if (nodes.empty()) return false;
-    bool any = false;
-    std::uint32_t index = 0;
-    while (index != BVH_END) {
-        const gpu::BvhNode& n = nodes[index];
-        if (walk.enterBox(n.boundsMin, n.boundsMax) == VKPT_FAR) {
-            index = n.missIndex;
-        } else if (n.leafTriangles != 0) {
-            any = walk.testTriangles(triangles, gpu::leafFirstTriangle(n.leafTriangles),
-                                     gpu::leafTriangleCount(n.leafTriangles), stopAtFirst) ||
-                  any;
-            if (any && stopAtFirst) return true;
-            index = n.missIndex;
-        } else {
-            index = index + 1;
-        }
-    }
-    return any;
-}
-
 } // namespace
 
 ClosestHit closestHitStack(const BvhTree& tree, std::span<const gpu::Triangle> triangles,
@@ -157,20 +133,6 @@ bool anyHitStack(const BvhTree& tree, std::span<const gpu::Triangle> triangles, 
                  TraversalCounters* counters) {
     Walk walk(ray, counters);
     return walkStack(tree, triangles, walk, true);
-}
-
-ClosestHit closestHitStackless(std::span<const gpu::BvhNode> nodes,
-                               std::span<const gpu::Triangle> triangles, const RayQuery& ray,
-                               TraversalCounters* counters) {
-    Walk walk(ray, counters);
-    walkStackless(nodes, triangles, walk, false);
-    return finish(walk);
-}
-
-bool anyHitStackless(std::span<const gpu::BvhNode> nodes, std::span<const gpu::Triangle> triangles,
-                     const RayQuery& ray, TraversalCounters* counters) {
-    Walk walk(ray, counters);
-    return walkStackless(nodes, triangles, walk, true);
 }
 
 ClosestHit closestHitBruteForce(std::span<const gpu::Triangle> triangles, const RayQuery& ray) {

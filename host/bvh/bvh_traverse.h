@@ -1,6 +1,6 @@
 // bvh_traverse.h — closest-hit and any-hit queries on the CPU: the reference's ordered stack
-// walk of the tree, the stackless walk of the flattened nodes (the GPU's algorithm, for
-// tests), and brute force.
+// walk of the binary tree, and brute force (the device's walk of the wide nodes on the CPU is
+// in wide_traverse.h).
 #pragma once
 
 #include <cstdint>
@@ -52,12 +52,6 @@ ClosestHit closestHitStack(const BvhTree& tree, std::span<const gpu::Triangle> t
                            const RayQuery& ray, TraversalCounters* counters = nullptr);
 bool anyHitStack(const BvhTree& tree, std::span<const gpu::Triangle> triangles, const RayQuery& ray,
                  TraversalCounters* counters = nullptr);
-
-ClosestHit closestHitStackless(std::span<const gpu::BvhNode> nodes,
-                               std::span<const gpu::Triangle> triangles, const RayQuery& ray,
-                               TraversalCounters* counters = nullptr);
-bool anyHitStackless(std::span<const gpu::BvhNode> nodes, std::span<const gpu::Triangle> triangles,
-                     const RayQuery& ray, TraversalCounters* counters = nullptr);
 
 ClosestHit closestHitBruteForce(std::span<const gpu::Triangle> triangles, const RayQuery& ray);
 

@@ -1,6 +1,6 @@
-// bvh_traverse_test.cpp — the stackless skip-link walk (the GPU's algorithm), the ordered stack
-// walk (the reference's) and brute force agree on 10^5 random rays per scene, synthetic and
-// loaded from glTF files.
+// bvh_traverse_test.cpp — the stackless walk of the 8-wide compressed BVH (the kernels' code,
+// shared/wide_bvh.h), the ordered stack walk (the reference's) and brute force agree on 10^5
+// random rays per scene, synthetic and loaded from glTF files.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -12,8 +12,9 @@
 
 #include <gtest/gtest.h>
 
-#include "bvh/bvh_flatten.h"
 #include "bvh/bvh_traverse.h"
+#include "bvh/bvh_wide.h"
+#include "bvh/wide_traverse.h"
 #include "bvh/synthetic_scenes.h"
 #include "common/errors.h"
 #include "scene/gltf_loader.h"
@@ -27,16 +28,22 @@ constexpr int kBruteForceRays = 2000; // brute force costs a triangle test per t
 
 const std::string kSharedScenes = VKPT_SCENES_DIR "/../../shared/scenes";
 
-struct BuiltScene {
+// One layout of the scene: the tree (its leaves renumbered by the flattening), the wide nodes
+// and the primitives in the order both walks index.
+struct Layout {
     BvhTree tree;
-    std::vector<gpu::BvhNode> nodes;      // left child first
-    std::vector<gpu::BvhNode> viewNodes;  // near child first along kViewDirection
-    std::vector<gpu::Triangle> triangles; // BVH order
-    Aabb bounds;
+    std::vector<gpu::WideBvhNode> nodes;
+    std::vector<gpu::Triangle> triangles;
 };
 
-// A camera-like direction for the near-first flattening (FlattenOptions).
-const glm::vec3 kViewDirection{0.4f, -0.3f, -0.87f};
+struct BuiltScene {
+    BvhTree tree;
+    std::vector<gpu::WideBvhNode> nodes;  // collapsed opening the largest child first
+    std::vector<gpu::Triangle> triangles; // in the order tree and nodes index
+    Layout tall;                          // collapsed opening the tallest child first
+    std::vector<std::uint32_t> indexOfSource; // input triangle → its index in `triangles`
+    Aabb bounds;
+};
 
 // The triangles in BVH order: triangle i is the input triangle primitiveOrder[i].
 std::vector<gpu::Triangle> bvhOrderedTriangles(const std::vector<glm::vec3>& positions,
@@ -53,11 +60,22 @@ std::vector<gpu::Triangle> bvhOrderedTriangles(const std::vector<glm::vec3>& pos
 BuiltScene buildScene(const std::vector<glm::vec3>& positions) {
     BuiltScene s;
     s.tree = buildBvh(triangleBounds(positions));
-    s.nodes = flattenBvh(s.tree);
-    s.viewNodes = flattenBvh(s.tree, {kViewDirection});
+    s.tall.tree = s.tree;
+    s.nodes = flattenWideBvh(s.tree);
     s.triangles = bvhOrderedTriangles(positions, s.tree);
+    s.tall.nodes = flattenWideBvh(s.tall.tree, CollapseOrder::Tallest);
+    s.tall.triangles = bvhOrderedTriangles(positions, s.tall.tree);
+    s.indexOfSource.resize(s.triangles.size());
+    for (std::uint32_t i = 0; i < s.triangles.size(); ++i)
+        s.indexOfSource[s.triangles[i].sourceIndex] = i;
     s.bounds = s.tree.nodes[0].bounds;
     return s;
+}
+
+// A hit of the tall layout under the main layout's numbering (both keep sourceIndex).
+ClosestHit renumbered(const BuiltScene& s, ClosestHit hit) {
+    if (hit.hit) hit.triangle = s.indexOfSource[s.tall.triangles[hit.triangle].sourceIndex];
+    return hit;
 }
 
 // Random rays of several kinds: from inside the bounds, from outside towards a point inside,
@@ -150,43 +168,45 @@ std::string describe(const RayQuery& ray) {
 
 struct WalkFigures {
     TraversalCounters stack;
-    TraversalCounters stackless;
+    TraversalCounters wide;
     std::uint64_t maxStackNodes = 0;
-    std::uint64_t maxStacklessNodes = 0;
-    std::uint64_t maxStacklessIterations = 0; // nodes + triangle tests: the kernel's loops
+    std::uint64_t maxWideNodes = 0;
+    std::uint64_t maxWideIterations = 0; // nodes + triangle tests: the kernel's loops
     int hits = 0;
 };
 
 // Runs every query on one ray and checks that they agree; returns false after the first
 // disagreement so that one bad scene does not print 10^5 failures.
 bool checkRay(const BuiltScene& s, const RayQuery& ray, bool bruteForce, WalkFigures& f) {
-    TraversalCounters stackCount, stacklessCount;
+    TraversalCounters stackCount, wideCount;
     ClosestHit stack = closestHitStack(s.tree, s.triangles, ray, &stackCount);
-    ClosestHit stackless = closestHitStackless(s.nodes, s.triangles, ray, &stacklessCount);
+    ClosestHit wide = closestHitWide(s.nodes, s.triangles, ray, &wideCount);
     f.stack.nodesVisited += stackCount.nodesVisited;
     f.stack.triangleTests += stackCount.triangleTests;
-    f.stackless.nodesVisited += stacklessCount.nodesVisited;
-    f.stackless.triangleTests += stacklessCount.triangleTests;
+    f.wide.nodesVisited += wideCount.nodesVisited;
+    f.wide.triangleTests += wideCount.triangleTests;
     f.maxStackNodes = std::max(f.maxStackNodes, stackCount.nodesVisited);
-    f.maxStacklessNodes = std::max(f.maxStacklessNodes, stacklessCount.nodesVisited);
-    f.maxStacklessIterations = std::max(f.maxStacklessIterations,
-                                        stacklessCount.nodesVisited + stacklessCount.triangleTests);
+    f.maxWideNodes = std::max(f.maxWideNodes, wideCount.nodesVisited);
+    f.maxWideIterations =
+        std::max(f.maxWideIterations, wideCount.nodesVisited + wideCount.triangleTests);
     f.hits += stack.hit ? 1 : 0;
-    EXPECT_TRUE(sameHit(s, ray, stack, stackless)) << "stack vs stackless, " << describe(ray);
-    EXPECT_TRUE(sameHit(s, ray, stack, closestHitStackless(s.viewNodes, s.triangles, ray)))
-        << "stack vs stackless in view order, " << describe(ray);
+    EXPECT_TRUE(sameHit(s, ray, stack, wide)) << "stack vs wide, " << describe(ray);
+    EXPECT_TRUE(
+        sameHit(s, ray, stack, renumbered(s, closestHitWide(s.tall.nodes, s.tall.triangles, ray))))
+        << "stack vs wide collapsed tallest first, " << describe(ray);
     if (bruteForce) {
         ClosestHit brute = closestHitBruteForce(s.triangles, ray);
         EXPECT_TRUE(sameHit(s, ray, brute, stack)) << "brute force vs stack, " << describe(ray);
     }
     EXPECT_EQ(anyHitStack(s.tree, s.triangles, ray), stack.hit) << describe(ray);
-    EXPECT_EQ(anyHitStackless(s.nodes, s.triangles, ray), stack.hit) << describe(ray);
+    EXPECT_EQ(anyHitWide(s.nodes, s.triangles, ray), stack.hit) << describe(ray);
+    EXPECT_EQ(anyHitWide(s.tall.nodes, s.tall.triangles, ray), stack.hit) << describe(ray);
     if (stack.hit) {
         // Nothing lies strictly nearer than the closest hit (tMax is exclusive).
         RayQuery nearer = ray;
         nearer.tMax = stack.t;
         EXPECT_FALSE(anyHitStack(s.tree, s.triangles, nearer)) << describe(ray);
-        EXPECT_FALSE(anyHitStackless(s.nodes, s.triangles, nearer)) << describe(ray);
+        EXPECT_FALSE(anyHitWide(s.nodes, s.triangles, nearer)) << describe(ray);
     }
     return !::testing::Test::HasFailure();
 }
@@ -197,11 +217,10 @@ void reportFigures(const std::string& name, const BuiltScene& s, const WalkFigur
     line << std::fixed << std::setprecision(1) << name << ": " << s.triangles.size()
          << " triangles, " << s.nodes.size() << " nodes, " << 100.0 * f.hits / rays
          << "% hit; nodes/ray stack " << double(f.stack.nodesVisited) / rays << " (max "
-         << f.maxStackNodes << "), stackless " << double(f.stackless.nodesVisited) / rays
-         << " (max " << f.maxStacklessNodes << ", max nodes + triangle tests "
-         << f.maxStacklessIterations << "); triangle tests/ray stack "
-         << double(f.stack.triangleTests) / rays << ", stackless "
-         << double(f.stackless.triangleTests) / rays;
+         << f.maxStackNodes << "), wide " << double(f.wide.nodesVisited) / rays << " (max "
+         << f.maxWideNodes << ", max nodes + triangle tests " << f.maxWideIterations
+         << "); triangle tests/ray stack " << double(f.stack.triangleTests) / rays << ", wide "
+         << double(f.wide.triangleTests) / rays;
     std::cout << line.str() << "\n";
     ::testing::Test::RecordProperty("figures", line.str());
 }
@@ -282,15 +301,15 @@ TEST(BvhTraverse, RespectsTheRayInterval) {
     BuiltScene s = twoSquares();
     RayQuery ray{glm::vec3(0.25f, 0.5f, 0.0f), glm::vec3(0.0f, 0.0f, 1.0f)};
     EXPECT_EQ(closestHitStack(s.tree, s.triangles, ray).t, 1.0f);
-    EXPECT_EQ(closestHitStackless(s.nodes, s.triangles, ray).t, 1.0f);
+    EXPECT_EQ(closestHitWide(s.nodes, s.triangles, ray).t, 1.0f);
     ray.tMin = 1.0f; // exclusive: the near square is skipped
     EXPECT_EQ(closestHitStack(s.tree, s.triangles, ray).t, 2.0f);
-    EXPECT_EQ(closestHitStackless(s.nodes, s.triangles, ray).t, 2.0f);
+    EXPECT_EQ(closestHitWide(s.nodes, s.triangles, ray).t, 2.0f);
     ray.tMax = 2.0f; // exclusive: nothing left
     EXPECT_FALSE(closestHitStack(s.tree, s.triangles, ray).hit);
-    EXPECT_FALSE(closestHitStackless(s.nodes, s.triangles, ray).hit);
+    EXPECT_FALSE(closestHitWide(s.nodes, s.triangles, ray).hit);
     EXPECT_FALSE(anyHitStack(s.tree, s.triangles, ray));
-    EXPECT_FALSE(anyHitStackless(s.nodes, s.triangles, ray));
+    EXPECT_FALSE(anyHitWide(s.nodes, s.triangles, ray));
 }
 
 TEST(BvhTraverse, ReturnsTheBvhOrderedIndexOfTheInputTriangle) {
@@ -299,7 +318,7 @@ TEST(BvhTraverse, ReturnsTheBvhOrderedIndexOfTheInputTriangle) {
     synthetic::Rng rng(33);
     for (int i = 0; i < 200; ++i) {
         RayQuery ray{rng.inBox(s.bounds.min, s.bounds.max), rng.unitVector()};
-        ClosestHit hit = closestHitStackless(s.nodes, s.triangles, ray);
+        ClosestHit hit = closestHitWide(s.nodes, s.triangles, ray);
         if (!hit.hit) continue;
         std::uint32_t source = s.tree.primitiveOrder[hit.triangle];
         EXPECT_EQ(s.triangles[hit.triangle].sourceIndex, source);
@@ -313,17 +332,17 @@ TEST(BvhTraverse, ReturnsTheBvhOrderedIndexOfTheInputTriangle) {
 TEST(BvhTraverse, CountsBoxAndTriangleTests) {
     BuiltScene s = twoSquares();
     RayQuery ray{glm::vec3(0.25f, 0.5f, 0.0f), glm::vec3(0.0f, 0.0f, 1.0f)};
-    TraversalCounters stack, stackless;
+    TraversalCounters stack, wide;
     closestHitStack(s.tree, s.triangles, ray, &stack);
-    closestHitStackless(s.nodes, s.triangles, ray, &stackless);
+    closestHitWide(s.nodes, s.triangles, ray, &wide);
     EXPECT_GT(stack.nodesVisited, 0u);
     EXPECT_GT(stack.triangleTests, 0u);
-    EXPECT_GE(stackless.nodesVisited, s.nodes.size() > 1 ? 2u : 1u);
-    EXPECT_GT(stackless.triangleTests, 0u);
-    // A ray that misses the root box costs one box test and no triangle test.
+    EXPECT_EQ(wide.nodesVisited, 1u); // four triangles: one node, four leaves
+    EXPECT_GT(wide.triangleTests, 0u);
+    // A ray that misses every child box costs one node and no triangle test.
     TraversalCounters miss;
     RayQuery away{glm::vec3(5.0f), glm::vec3(1.0f, 0.0f, 0.0f)};
-    EXPECT_FALSE(closestHitStackless(s.nodes, s.triangles, away, &miss).hit);
+    EXPECT_FALSE(closestHitWide(s.nodes, s.triangles, away, &miss).hit);
     EXPECT_EQ(miss.nodesVisited, 1u);
     EXPECT_EQ(miss.triangleTests, 0u);
 }
@@ -337,7 +356,7 @@ TEST(BvhTraverse, FindsAVertexHitAlongABoxEdge) {
     ASSERT_TRUE(brute.hit);
     EXPECT_EQ(brute.t, 1.0f);
     EXPECT_EQ(closestHitStack(s.tree, s.triangles, ray).t, 1.0f);
-    EXPECT_EQ(closestHitStackless(s.nodes, s.triangles, ray).t, 1.0f);
+    EXPECT_EQ(closestHitWide(s.nodes, s.triangles, ray).t, 1.0f);
 }
 
 } // namespace
