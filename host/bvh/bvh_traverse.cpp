@@ -34,16 +34,20 @@ struct Walk {
         return gpu::intersectBox(ray.origin, invDirection, boxMin, boxMax, ray.tMin, best.t);
     }
 
-    // Tests one primitive against (tMin, best t); a hit the filter accepts becomes the best.
+    // Tests one primitive against (tMin, best t], before the first hit (tMin, tMax); a hit the
+    // filter accepts becomes the best if it precedes it (intersect.h, crossingPrecedes).
     bool testTriangle(std::span<const gpu::Triangle> triangles, std::uint32_t index) {
         if (counters) ++counters->triangleTests;
         const gpu::Triangle& tri = triangles[index];
+        const float tMax = best.hit ? gpu::nextFloatUp(best.t) : best.t;
         gpu::TriangleHit h =
             gpu::isSpherePrimitive(tri)
-                ? gpu::intersectSphere(ray.origin, ray.direction, tri.v0, tri.v1.x, ray.tMin, best.t)
+                ? gpu::intersectSphere(ray.origin, ray.direction, tri.v0, tri.v1.x, ray.tMin, tMax)
                 : gpu::intersectTriangleWatertight(ray.origin, sheared, tri.v0, tri.v1, tri.v2,
-                                                   ray.tMin, best.t);
+                                                   ray.tMin, tMax);
         if (!h.hit) return false;
+        if (!gpu::crossingPrecedes(h.t, index, best.t, best.hit ? best.triangle : NO_PRIMITIVE))
+            return false;
         if (ray.filter != nullptr && !ray.filter->accepts(index, ray, h)) return false;
         best = {h.t, h.u, h.v, index, true};
         return true;
@@ -64,6 +68,10 @@ struct Walk {
 ClosestHit finish(const Walk& walk) {
     return walk.best.hit ? walk.best : ClosestHit{};
 }
+
+// intersectBox widens a box's exit by this factor (Ize 2013); a box entered up to the best t
+// times it may hold a crossing at that t.
+constexpr float kBoxExitMargin = 1.0000004f;
 
 struct StackEntry {
     std::uint32_t node;
@@ -108,7 +116,9 @@ bool walkStack(const BvhTree& tree, std::span<const gpu::Triangle> triangles, Wa
     bool any = false;
     while (!stack.empty()) {
         StackEntry e = stack.pop();
-        if (e.entry >= walk.best.t) continue; // a nearer hit was found since the push
+        // A nearer hit was found since the push. Boxes entered up to the best t (with intersectBox's
+        // margin) may still hold a crossing that ties with it and precedes it.
+        if (e.entry > walk.best.t * kBoxExitMargin) continue;
         const BvhBuildNode& n = tree.nodes[e.node];
         if (!n.isLeaf()) {
             pushChildren(tree, n, walk, stack);

@@ -104,6 +104,7 @@ struct WideBvhNode {
 // centre v0, radius v1.x (v2 unused). Both kinds share the BVH's leaves, so one walk meets
 // both; scenes without spheres compile the sphere test out (FEATURE_SPHERES).
 #define NO_EMITTER 0xffffffffu
+#define NO_PRIMITIVE 0xffffffffu
 #define PRIMITIVE_SPHERE 0x80000000u
 // Set in sourceIndex at load time when the primitive's material is alphaMode MASK, so that a
 // BVH walk knows which crossings need the alpha test without reading the material.

@@ -156,7 +156,6 @@ VKPT_FN uint popMask(VKPT_INOUT(WideBitStack) stack) {
 
 // A crossing that needs the alpha test before the walk may take it; primitive NO_PRIMITIVE:
 // none.
-#define NO_PRIMITIVE 0xffffffffu
 struct PendingCrossing {
     TriangleHit hit;
     uint primitive;
@@ -301,12 +300,15 @@ VKPT_FN void takeCrossing(VKPT_INOUT(WideWalk) walk, TriangleHit h, uint primiti
     if (walk.stopAtFirst) finishWideWalk(walk);
 }
 
+// The primitive's crossing within (tMin, best t], or within the ray's (tMin, tMax) before the
+// first (crossingPrecedes decides the ties).
 VKPT_FN TriangleHit crossBvhPrimitive(WideWalk walk, Triangle primitive VKPT_BVH_PARAM) {
+    float tMax = walk.primitive == NO_PRIMITIVE ? walk.t : nextFloatUp(walk.t);
     if (bvhHasSpheres(VKPT_BVH_ARG_ONLY) && isSpherePrimitive(primitive))
         return intersectSphere(walk.origin, walk.direction, primitive.v0, primitive.v1.x,
-                               walk.tMin, walk.t);
+                               walk.tMin, tMax);
     return intersectTriangleWatertight(walk.origin, walk.sheared, primitive.v0, primitive.v1,
-                                       primitive.v2, walk.tMin, walk.t);
+                                       primitive.v2, walk.tMin, tMax);
 }
 
 // Tests the current node's remaining leaf primitives; returns a crossing of an alpha-masked
@@ -321,7 +323,7 @@ VKPT_FN PendingCrossing testLeaves(VKPT_INOUT(WideWalk) walk VKPT_BVH_PARAM) {
         ++walk.primitiveTests;
         Triangle primitive = bvhPrimitive(index VKPT_BVH_ARG);
         TriangleHit h = crossBvhPrimitive(walk, primitive VKPT_BVH_ARG);
-        if (!h.hit) continue;
+        if (!h.hit || !crossingPrecedes(h.t, index, walk.t, walk.primitive)) continue;
         // Marked at load time (PRIMITIVE_ALPHA_MASKED): no material read per crossing.
         if (bvhHasAlphaMask(VKPT_BVH_ARG_ONLY) && isAlphaMaskedPrimitive(primitive)) {
             pending.hit = h;
