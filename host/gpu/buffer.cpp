@@ -5,7 +5,6 @@
 #include "gpu/context.h"
 #include "gpu/vk_check.h"
 
-#include <algorithm>
 #include <utility>
 
 namespace vkpt {
@@ -96,9 +95,11 @@ void Buffer::allocateAndBind() {
     }
 }
 
-// A view of the whole buffer in whole texels; a partial texel at the end is not visible.
+// A view of the whole buffer in whole texels; a partial texel at the end is not visible, and
+// a buffer smaller than one texel gets no view (nothing could be fetched from it).
 void Buffer::createTexelView() {
     if ((desc_.usage & VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT) == 0) return;
+    if (desc_.size < kTexelBytes) return;
     VKPT_ASSERT(desc_.texelFormat == VK_FORMAT_R32G32B32A32_UINT ||
                     desc_.texelFormat == VK_FORMAT_R32G32B32A32_SFLOAT,
                 "buffer '" + desc_.name + "': texel format not 16 bytes");
@@ -107,7 +108,7 @@ void Buffer::createTexelView() {
     info.buffer = buffer_;
     info.format = desc_.texelFormat;
     info.offset = 0;
-    info.range = std::max<VkDeviceSize>(desc_.size / kTexelBytes, 1) * kTexelBytes;
+    info.range = desc_.size / kTexelBytes * kTexelBytes;
     VKPT_VK_CHECK(vkCreateBufferView(context_->device(), &info, nullptr, &texelView_));
     context_->setDebugName(texelView_, desc_.name + ".texels");
 }

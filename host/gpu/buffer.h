@@ -51,7 +51,7 @@ public:
     VkDeviceSize allocationSize() const { return allocationSize_; }
     // Upload and Readback buffers stay mapped for their lifetime; null for DeviceLocal.
     std::byte* mapped() const { return mapped_; }
-    // The texel view of a uniform texel buffer, else VK_NULL_HANDLE.
+    // The texel view of a uniform texel buffer of at least one texel, else VK_NULL_HANDLE.
     VkBufferView texelView() const { return texelView_; }
 
 private:

@@ -107,6 +107,9 @@ void DescriptorSet::checkBindings(const std::vector<BufferBinding>& bindings) co
         const Buffer* buffer = binding.buffer;
         VKPT_ASSERT(buffer != nullptr, "kernel '" + kernelName_ + "': binding " +
                                            std::to_string(binding.binding) + " has no buffer");
+        VKPT_ASSERT(kind != DescriptorKind::UniformTexelBuffer ||
+                        buffer->texelView() != VK_NULL_HANDLE,
+                    "buffer '" + buffer->name() + "' is smaller than one texel");
         VKPT_ASSERT((buffer->usage() & usageFor(kind)) != 0,
                     "buffer '" + buffer->name() + "' lacks the usage of binding " +
                         std::to_string(binding.binding) + " of kernel '" + kernelName_ + "'");

@@ -92,7 +92,6 @@ struct SceneBinding {
 constexpr SceneBinding kSceneBindings[] = {
     {BINDING_BVH_NODES, &DeviceScene::bvhNodes},
     {BINDING_TRIANGLES, &DeviceScene::triangles},
-    {BINDING_TRIANGLE_TEXELS, &DeviceScene::triangles},
     {BINDING_TRIANGLE_NORMALS, &DeviceScene::triangleNormals},
     {BINDING_MATERIALS, &DeviceScene::materials},
     {BINDING_EMITTERS, &DeviceScene::emitters},
@@ -117,8 +116,7 @@ std::vector<SceneBufferBytes> DeviceScene::bufferBytes() const {
     std::vector<SceneBufferBytes> result{{absentData.name(), absentData.allocationSize()}};
     for (const SceneBinding& b : kSceneBindings) {
         const std::optional<Buffer>& buffer = this->*b.buffer;
-        if (b.binding != BINDING_TRIANGLE_TEXELS && buffer)
-            result.push_back({buffer->name(), buffer->allocationSize()});
+        if (buffer) result.push_back({buffer->name(), buffer->allocationSize()});
     }
     return result;
 }
@@ -133,19 +131,17 @@ std::uint64_t DeviceScene::totalBytes() const {
 DeviceScene uploadScene(GpuContext& context, const PreparedScene& scene) {
     checkScene(scene);
     DeviceScene d{makeAbsentData(context)};
-    // The BVH walk fetches nodes and primitives as texels (wavefront_kernels.cpp, bindingKind);
-    // shading reads primitives as a storage buffer.
-    d.bvhNodes = uploadArray(context, "bvhNodes", scene.nodes,
-                             VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
-    d.triangles = uploadArray(context, "triangles", scene.triangles,
-                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
-                                  VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
-    d.triangleNormals = uploadArray(context, "triangleNormals", scene.normals);
+    // Records of 16-byte multiples are fetched as texels (lib/records.glsl), the rest read as
+    // storage buffers (wavefront_kernels.cpp, bindingKind).
+    constexpr VkBufferUsageFlags texels = VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
+    d.bvhNodes = uploadArray(context, "bvhNodes", scene.nodes, texels);
+    d.triangles = uploadArray(context, "triangles", scene.triangles, texels);
+    d.triangleNormals = uploadArray(context, "triangleNormals", scene.normals, texels);
     d.triangleUvs = uploadArray(context, "triangleUvs", scene.uvs);
-    d.materials = uploadArray(context, "materials", scene.materials);
-    d.textures = uploadArray(context, "textures", scene.textures);
+    d.materials = uploadArray(context, "materials", scene.materials, texels);
+    d.textures = uploadArray(context, "textures", scene.textures, texels);
     d.textureTexels = uploadArray(context, "textureTexels", scene.texels);
-    d.emitters = uploadArray(context, "emitters", scene.emitters);
+    d.emitters = uploadArray(context, "emitters", scene.emitters, texels);
     d.emitterCdf = uploadArray(context, "emitterCdf", scene.emitterCdf);
     d.environmentTexels = uploadArray(context, "environmentTexels", scene.environmentTexels);
     d.environmentCdf = uploadArray(context, "environmentCdf", scene.environmentCdf);

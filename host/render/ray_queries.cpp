@@ -33,12 +33,8 @@ struct DeviceRayQueries::State {
 
     BufferTable table() const {
         BufferTable t;
-        t.set(BINDING_FRAME_PARAMS, buffers.frameParams);
         deviceScene.bind(t);
-        t.set(BINDING_RAYS, buffers.rays);
-        t.set(BINDING_HITS, buffers.hits);
-        t.set(BINDING_SHADOW_RAYS, buffers.shadowRays);
-        t.set(BINDING_QUEUE_COUNTERS, buffers.queueCounters);
+        buffers.bind(t);
         return t;
     }
 

@@ -96,16 +96,8 @@ gpu::FrameParams makeFrameParams(const RenderSettings& settings, const gpu::Came
 
 BufferTable makeBufferTable(const DeviceScene& scene, const WorkBuffers& work) {
     BufferTable table;
-    table.set(BINDING_FRAME_PARAMS, work.frameParams);
     scene.bind(table);
-    table.set(BINDING_PATH_STATES, work.pathStates);
-    table.set(BINDING_RAYS, work.rays);
-    table.set(BINDING_HITS, work.hits);
-    table.set(BINDING_SHADOW_RAYS, work.shadowRays);
-    table.set(BINDING_PIXEL_STATES, work.pixelStates);
-    table.set(BINDING_ACTIVE_PIXELS, work.activePixels);
-    table.set(BINDING_QUEUE_COUNTERS, work.queueCounters);
-    table.set(BINDING_DISPATCH_ARGS, work.dispatchArgs);
+    work.bind(table);
     return table;
 }
 

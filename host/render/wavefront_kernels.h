@@ -38,7 +38,7 @@ std::span<const std::uint32_t> kernelBindings(WavefrontKernel kernel);
 // How every kernel that declares `binding` sees it (the comments of lib/wavefront.h).
 DescriptorKind bindingKind(std::uint32_t binding);
 
-inline constexpr std::uint32_t kWavefrontBindingCount = 21; // BINDING_COUNT of lib/wavefront.h
+inline constexpr std::uint32_t kWavefrontBindingCount = 24; // BINDING_COUNT of lib/wavefront.h
 
 // Which buffer each binding number refers to; a kernel's descriptor set takes its bindings
 // from here.

@@ -12,11 +12,11 @@ namespace {
 constexpr std::uint32_t kGpuSlots = 1u << 20;
 constexpr std::uint32_t kCpuSlots = 1u << 16;
 
-// Usage of every working buffer: kernels read and write them; transfers fill, upload and
-// download them (tests inspect them too).
-constexpr VkBufferUsageFlags kWorkUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
-                                          VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
-                                          VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+// Usage of every working buffer: kernels read and write them, the records also as texels
+// (lib/records.glsl); transfers fill, upload and download them (tests inspect them too).
+constexpr VkBufferUsageFlags kWorkUsage =
+    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT |
+    VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
 
 std::uint64_t recordsPerSlot(std::uint32_t lightSamples) {
     return std::max<std::uint64_t>(lightSamples, 1);
@@ -78,5 +78,21 @@ WorkBuffers::WorkBuffers(GpuContext& context, std::uint32_t slots, std::uint32_t
                                   VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT)),
       countersReadback(context, {"queueCounters.readback", COUNTER_WORDS * sizeof(std::uint32_t),
                                  VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryLocation::Readback}) {}
+
+void WorkBuffers::bind(BufferTable& table) const {
+    table.set(BINDING_FRAME_PARAMS, frameParams);
+    table.set(BINDING_PATH_STATES, pathStates);
+    table.set(BINDING_PATH_STATE_TEXELS, pathStates);
+    table.set(BINDING_RAYS, rays);
+    table.set(BINDING_RAY_TEXELS, rays);
+    table.set(BINDING_HITS, hits);
+    table.set(BINDING_HIT_TEXELS, hits);
+    table.set(BINDING_SHADOW_RAYS, shadowRays);
+    table.set(BINDING_SHADOW_RAY_TEXELS, shadowRays);
+    table.set(BINDING_PIXEL_STATES, pixelStates);
+    table.set(BINDING_ACTIVE_PIXELS, activePixels);
+    table.set(BINDING_QUEUE_COUNTERS, queueCounters);
+    table.set(BINDING_DISPATCH_ARGS, dispatchArgs);
+}
 
 } // namespace vkpt

@@ -7,6 +7,7 @@
 
 #include "gpu/buffer.h"
 #include "gpu/context.h"
+#include "render/wavefront_kernels.h"
 
 namespace vkpt {
 
@@ -37,6 +38,9 @@ struct WorkBuffers {
     Buffer queueCounters;    // COUNTER_WORDS uints
     Buffer dispatchArgs;     // DISPATCH_WORDS uints: VkDispatchIndirectCommands
     Buffer countersReadback; // host-visible copy of queueCounters, written at the end of a pass
+
+    // Points every work binding of `table` (storage and texel bindings alike) at its buffer.
+    void bind(BufferTable& table) const;
 };
 
 } // namespace vkpt

@@ -9,12 +9,12 @@
 
 layout(local_size_x = WORKGROUP_SIZE) in;
 
-VKPT_READONLY_BUFFER(BINDING_PATH_STATES, PathState, pathStates)
 VKPT_BUFFER(BINDING_PIXEL_STATES, PixelState, pixelStates)
 VKPT_WRITEONLY_BUFFER(BINDING_ACTIVE_PIXELS, uint, activePixels)
 VKPT_BUFFER(BINDING_QUEUE_COUNTERS, uint, queueCounters)
 
 #include "lib/counters.glsl"
+#include "lib/records.glsl"
 #include "shared/adaptive.h"
 #include "shared/sample_guard.h"
 #include "shared/sampling.h"
@@ -52,11 +52,11 @@ bool batchConverged(PixelState pixel) {
 bool accumulatePixel(uint activeIndex, out uint pixelIndex, out uint nonFinite) {
     uint k = passParams.samplesPerPass;
     uint first = activeIndex * k;
-    pixelIndex = pathStates[first].pixel;
+    pixelIndex = fetchPathState(first).pixel;
     PixelState pixel = pixelStates[pixelIndex];
     nonFinite = 0u;
     for (uint j = 0u; j < k; ++j) {
-        PathState path = pathStates[first + j];
+        PathState path = fetchPathState(first + j);
         if (isFiniteSample(path.radiance)) {
             addSample(pixel, clampSample(path.radiance, frame.sampleClamp));
         } else {

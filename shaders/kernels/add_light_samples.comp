@@ -8,10 +8,10 @@
 
 layout(local_size_x = WORKGROUP_SIZE) in;
 
-VKPT_BUFFER(BINDING_PATH_STATES, PathState, pathStates)
-VKPT_READONLY_BUFFER(BINDING_RAYS, RayRecord, rays)
-VKPT_READONLY_BUFFER(BINDING_SHADOW_RAYS, ShadowRay, shadowRays)
+VKPT_WRITEONLY_BUFFER(BINDING_PATH_STATES, PathState, pathStates)
 VKPT_READONLY_BUFFER(BINDING_QUEUE_COUNTERS, uint, queueCounters)
+
+#include "lib/records.glsl"
 
 void main() {
     uint i = flatInvocationIndex();
@@ -21,15 +21,15 @@ void main() {
     vec3 sum = vec3(0.0);
     bool visible = false;
     for (uint k = 0u; k < n; ++k) {
-        ShadowRay record = shadowRays[i * n + k];
+        ShadowRay record = fetchShadowRay(i * n + k);
         if ((record.flags & SHADOW_VISIBLE) == 0u) continue;
         sum += record.contribution;
         visible = true;
     }
     // Adding a zero sum would leave the radiance as it is.
     if (!visible) return;
-    uint slot = rays[queueHalf * frame.slotCount + i].slot;
-    PathState state = pathStates[slot];
+    uint slot = fetchRay(queueHalf * frame.slotCount + i).slot;
+    PathState state = fetchPathState(slot);
     if (frame.integrator == INTEGRATOR_PATH) {
         pathStates[slot].radiance = state.radiance + state.lightScale * sum;
     } else {

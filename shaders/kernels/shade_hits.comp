@@ -8,19 +8,13 @@
 
 layout(local_size_x = WORKGROUP_SIZE) in;
 
-VKPT_READONLY_BUFFER(BINDING_TRIANGLES, Triangle, triangles)
-VKPT_READONLY_BUFFER(BINDING_TRIANGLE_NORMALS, TriangleNormals, triangleNormals)
 VKPT_READONLY_BUFFER(BINDING_TRIANGLE_UVS, vec2, triangleUvs)
-VKPT_READONLY_BUFFER(BINDING_MATERIALS, Material, materials)
-VKPT_READONLY_BUFFER(BINDING_TEXTURES, TextureInfo, textures)
 VKPT_READONLY_BUFFER(BINDING_TEXTURE_TEXELS, uint, textureTexels)
-VKPT_READONLY_BUFFER(BINDING_EMITTERS, Emitter, emitters)
 VKPT_READONLY_BUFFER(BINDING_EMITTER_CDF, float, emitterCdf)
 VKPT_READONLY_BUFFER(BINDING_ENVIRONMENT_TEXELS, vec4, environmentTexels)
 VKPT_READONLY_BUFFER(BINDING_ENVIRONMENT_CDF, float, environmentCdf)
-VKPT_BUFFER(BINDING_PATH_STATES, PathState, pathStates)
-VKPT_BUFFER(BINDING_RAYS, RayRecord, rays)
-VKPT_READONLY_BUFFER(BINDING_HITS, HitRecord, hits)
+VKPT_WRITEONLY_BUFFER(BINDING_PATH_STATES, PathState, pathStates)
+VKPT_WRITEONLY_BUFFER(BINDING_RAYS, RayRecord, rays)
 VKPT_WRITEONLY_BUFFER(BINDING_SHADOW_RAYS, ShadowRay, shadowRays)
 VKPT_BUFFER(BINDING_QUEUE_COUNTERS, uint, queueCounters)
 
@@ -172,7 +166,7 @@ void shadeMiss(RayRecord record) {
     vec3 unit = normalize(record.direction);
     vec3 radiance = environmentRadianceAlong(unit);
     if (radiance == vec3(0.0)) return;
-    PathState state = pathStates[record.slot];
+    PathState state = fetchPathState(record.slot);
     if (frame.integrator == INTEGRATOR_PATH && bounce > 0u) {
         float pdfLight = environmentLightPdf(unit);
         radiance = radiance *
@@ -187,14 +181,14 @@ Shading shadeRay(uint i) {
     shading.lit = false;
     shading.continues = false;
     uint queueHalf = passParams.bounce & 1u;
-    HitRecord hit = hits[i];
-    RayRecord record = rays[queueHalf * frame.slotCount + i];
+    HitRecord hit = fetchHit(i);
+    RayRecord record = fetchRay(queueHalf * frame.slotCount + i);
     if (hit.triangle != NO_HIT) {
         Vertex vertex;
         vertex.ray = i;
         vertex.record = record;
         vertex.surface = makeSurfacePoint(hit, record.origin, record.direction);
-        PathState state = pathStates[record.slot];
+        PathState state = fetchPathState(record.slot);
         if (frame.integrator == INTEGRATOR_NORMALS) {
             state.radiance = 0.5 * vertex.surface.rawShadingNormal + 0.5;
         } else if (frame.integrator == INTEGRATOR_PATH) {

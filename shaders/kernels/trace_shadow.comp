@@ -8,16 +8,11 @@
 
 layout(local_size_x = WORKGROUP_SIZE) in;
 
-VKPT_TEXEL_BUFFER(BINDING_BVH_NODES, bvhNodes)
-VKPT_READONLY_BUFFER(BINDING_TRIANGLES, Triangle, triangles)
-VKPT_TEXEL_BUFFER(BINDING_TRIANGLE_TEXELS, triangleTexels)
 VKPT_READONLY_BUFFER(BINDING_TRIANGLE_UVS, vec2, triangleUvs)
-VKPT_READONLY_BUFFER(BINDING_MATERIALS, Material, materials)
-VKPT_READONLY_BUFFER(BINDING_TEXTURES, TextureInfo, textures)
 VKPT_READONLY_BUFFER(BINDING_TEXTURE_TEXELS, uint, textureTexels)
 VKPT_READONLY_BUFFER(BINDING_ENVIRONMENT_TEXELS, vec4, environmentTexels)
 VKPT_READONLY_BUFFER(BINDING_ENVIRONMENT_CDF, float, environmentCdf)
-VKPT_BUFFER(BINDING_SHADOW_RAYS, ShadowRay, shadowRays)
+VKPT_WRITEONLY_BUFFER(BINDING_SHADOW_RAYS, ShadowRay, shadowRays)
 VKPT_BUFFER(BINDING_QUEUE_COUNTERS, uint, queueCounters)
 
 #include "lib/environment.glsl"
@@ -34,7 +29,7 @@ struct RecordWork {
 
 RecordWork traceRecord(uint index) {
     RecordWork work = RecordWork(noTraversal(), 0u, 0u);
-    ShadowRay record = shadowRays[index];
+    ShadowRay record = fetchShadowRay(index);
     uint kind = record.flags & SHADOW_KIND_MASK;
     if (kind == SHADOW_NONE) return work;
     // One walk for both kinds: lavapipe runs both sides of a branch, so a walk on each side

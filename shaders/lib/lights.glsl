@@ -3,8 +3,8 @@
 // several), then by its kind a uniform point on a triangle, a point in a sphere's visible cone,
 // a punctual light's incidence or a direction from the environment; the shadow ray towards it;
 // and the solid-angle pdfs of reaching an emitter or the environment by a BSDF sample.
-// Needs what lib/surface.glsl needs, and emitters, emitterCdf, environmentTexels and
-// environmentCdf declared.
+// Needs what lib/surface.glsl needs, and emitterCdf, environmentTexels and environmentCdf
+// declared (and binds the emitters texel view).
 #ifndef VKPT_LIGHTS_GLSL
 #define VKPT_LIGHTS_GLSL
 
@@ -19,7 +19,7 @@
 // Solid-angle pdf with which light sampling chooses the environment along a unit direction.
 float environmentLightPdf(vec3 direction) {
     if (!hasEnvironment()) return 0.0;
-    return emitters[frame.environment.emitterIndex].selectProbability *
+    return fetchEmitter(frame.environment.emitterIndex).selectProbability *
            environmentPdf(sceneEnvironment(), direction);
 }
 
@@ -56,7 +56,7 @@ struct LightSample {
 };
 
 void sampleTriangleLight(inout LightSample light, Emitter emitter, vec3 receiver, vec2 u) {
-    Triangle tri = triangles[emitter.primitive];
+    Triangle tri = fetchTriangle(emitter.primitive);
     vec3 b = sampleTriangleBarycentrics(u);
     light.position = b.x * tri.v0 + b.y * tri.v1 + b.z * tri.v2;
     light.coordinateScale = triangleCoordinateScale(tri.v0, tri.v1, tri.v2);
@@ -66,7 +66,7 @@ void sampleTriangleLight(inout LightSample light, Emitter emitter, vec3 receiver
     light.direction = toLight / sqrt(distanceSquared);
     vec3 face = unitFaceNormal(tri.v0, tri.v1, tri.v2);
     float cosAtLight = -dot(face, light.direction);
-    Material material = materials[tri.materialIndex];
+    Material material = fetchMaterial(tri.materialIndex);
     if (emitsOnThisSide(material, cosAtLight > 0.0)) {
         light.radiance = material.emission;
         if (hasTexture(material.emissiveTexture))
@@ -80,7 +80,7 @@ void sampleTriangleLight(inout LightSample light, Emitter emitter, vec3 receiver
 }
 
 void sampleSphereEmitter(inout LightSample light, Emitter emitter, vec3 receiver, vec2 u) {
-    Triangle sphere = triangles[emitter.primitive];
+    Triangle sphere = fetchTriangle(emitter.primitive);
     SphereLightSample point = sampleSphereLight(receiver, sphere.v0, sphere.v1.x, u);
     if (!point.valid) return;
     light.position = point.position;
@@ -90,7 +90,7 @@ void sampleSphereEmitter(inout LightSample light, Emitter emitter, vec3 receiver
     if (!(distance > 0.0)) return;
     light.direction = toLight / distance;
     bool facesReceiver = dot(point.normal, light.direction) < 0.0;
-    Material material = materials[sphere.materialIndex];
+    Material material = fetchMaterial(sphere.materialIndex);
     if (emitsOnThisSide(material, facesReceiver)) {
         light.radiance = material.emission;
         if (hasTexture(material.emissiveTexture))
@@ -133,7 +133,7 @@ LightSample sampleLight(vec3 receiver, vec4 u) {
     LightSample light =
         LightSample(vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), 0.0, 0.0, false, false, false);
     if (frame.emitterCount == 0u) return light;
-    Emitter emitter = emitters[selectEmitter(u.x)];
+    Emitter emitter = fetchEmitter(selectEmitter(u.x));
     vec2 uPoint = vec2(u.y, u.z);
     if (emitter.kind == EMITTER_TRIANGLE) {
         sampleTriangleLight(light, emitter, receiver, uPoint);
@@ -149,9 +149,9 @@ LightSample sampleLight(vec3 receiver, vec4 u) {
 
 // Solid-angle pdf with which sampleLight would have produced the hit `s` from `origin`.
 float lightPdf(SurfacePoint s, vec3 origin) {
-    Triangle primitive = triangles[s.triangle];
+    Triangle primitive = fetchTriangle(s.triangle);
     if (primitive.emitterIndex == NO_EMITTER) return 0.0;
-    Emitter emitter = emitters[primitive.emitterIndex];
+    Emitter emitter = fetchEmitter(primitive.emitterIndex);
     if (featureSpheres && isSpherePrimitive(primitive)) {
         return emitter.selectProbability *
                sphereLightPdf(origin, primitive.v0, primitive.v1.x, s.position);

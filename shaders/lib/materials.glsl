@@ -1,13 +1,14 @@
 // materials.glsl — a material read at a point of a primitive, as host/reference/surface.cpp
 // reads it: TEXCOORD_0 interpolated over the triangle (a sphere's from its normal), each
 // texture at its KHR_texture_transform'd coordinate, the alpha MASK test and the emission a hit
-// sends back along the ray. Needs frame, triangles, triangleUvs, materials, textures and
-// textureTexels declared. Texture coordinates are computed only for a material that has a
+// sends back along the ray. Needs frame, triangleUvs and textureTexels declared (and binds
+// the triangles, materials and textures texel views of lib/records.glsl). Texture coordinates are computed only for a material that has a
 // texture: the factors alone need none, and a scene without textures has no triangleUvs.
 #ifndef VKPT_MATERIALS_GLSL
 #define VKPT_MATERIALS_GLSL
 
 #include "lib/features.glsl"
+#include "lib/records.glsl"
 #include "shared/intersect.h"
 #include "shared/sphere.h"
 #include "shared/texture_sampling.h"
@@ -33,13 +34,13 @@ vec2 primitiveUv(uint index, Triangle primitive, float u, float v, vec3 sphereNo
 // The texel value at uv, or 1 (the factor alone applies) without a texture.
 vec4 sampleSlot(TextureSlot slot, vec2 uv, bool srgb) {
     if (!hasTexture(slot)) return vec4(1.0);
-    return sampleTexture(textures[slot.texture], transformUv(slot, uv), srgb);
+    return sampleTexture(fetchTextureInfo(slot.texture), transformUv(slot, uv), srgb);
 }
 
 // Alpha MASK: whether a ray crossing primitive `index` at (u, v) (a sphere: its outward normal
 // there) passes through, alpha = baseColor.a × baseColorTexture.a below the cutoff.
 bool alphaMasked(uint index, Triangle primitive, float u, float v, vec3 sphereNormal) {
-    Material m = materials[primitive.materialIndex];
+    Material m = fetchMaterial(primitive.materialIndex);
     if (m.alphaMode != ALPHA_MODE_MASK) return false;
     float alpha = m.baseColor.a;
     if (hasTexture(m.baseColorTexture)) {
@@ -63,8 +64,8 @@ vec3 emissionAt(Material m, vec2 uv) {
 // What the hit of a ray from `origin` along `direction` emits back along it (a probe's find):
 // makeSurfacePoint's side test and emission, without the shading normals.
 vec3 emissionTowards(HitRecord hit, vec3 origin, vec3 direction) {
-    Triangle primitive = triangles[hit.triangle];
-    Material m = materials[primitive.materialIndex];
+    Triangle primitive = fetchTriangle(hit.triangle);
+    Material m = fetchMaterial(primitive.materialIndex);
     bool frontFace;
     vec3 sphereNormal = vec3(0.0);
     if (featureSpheres && isSpherePrimitive(primitive)) {

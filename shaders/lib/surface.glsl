@@ -1,7 +1,7 @@
 // surface.glsl — a hit turned into what shading needs, as host/reference/surface.cpp does it:
 // the point (from barycentrics on a triangle, put back on a sphere along its normal), the
 // geometric and shading normals turned towards the incoming ray, the material with its textures
-// applied, and the emission. Needs what lib/materials.glsl needs, and triangleNormals.
+// applied, and the emission. Needs what lib/materials.glsl needs (and binds triangleNormals).
 #ifndef VKPT_SURFACE_GLSL
 #define VKPT_SURFACE_GLSL
 
@@ -27,7 +27,7 @@ struct SurfacePoint {
 };
 
 void fillTriangle(inout SurfacePoint s, Triangle tri, HitRecord hit, vec3 direction) {
-    TriangleNormals normals = triangleNormals[hit.triangle];
+    TriangleNormals normals = fetchTriangleNormals(hit.triangle);
     // Barycentric interpolation keeps the point on the triangle's plane, unlike o + t·d.
     s.position = tri.v0 * (1.0 - hit.u - hit.v) + tri.v1 * hit.u + tri.v2 * hit.v;
     s.coordinateScale = triangleCoordinateScale(tri.v0, tri.v1, tri.v2);
@@ -55,7 +55,7 @@ void fillSphere(inout SurfacePoint s, Triangle sphere, HitRecord hit, vec3 origi
 
 // The material at the point: factors times textures (each read only when present).
 void fillMaterial(inout SurfacePoint s, Triangle primitive, HitRecord hit) {
-    Material m = materials[primitive.materialIndex];
+    Material m = fetchMaterial(primitive.materialIndex);
     vec4 baseColor = m.baseColor;
     float metallic = m.metallic;
     float roughness = m.roughness;
@@ -77,7 +77,7 @@ void fillMaterial(inout SurfacePoint s, Triangle primitive, HitRecord hit) {
 
 // The hit of a ray from `origin` along `direction` (the query that found `hit`).
 SurfacePoint makeSurfacePoint(HitRecord hit, vec3 origin, vec3 direction) {
-    Triangle primitive = triangles[hit.triangle];
+    Triangle primitive = fetchTriangle(hit.triangle);
     SurfacePoint s;
     s.triangle = hit.triangle;
     if (featureSpheres && isSpherePrimitive(primitive)) {

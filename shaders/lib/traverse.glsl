@@ -1,9 +1,9 @@
 // traverse.glsl — the kernels' BVH walk: shared/wide_bvh.h's stackless walk of the 8-wide
-// compressed nodes, reading nodes and primitives as texels (bvhNodes, triangleTexels). A
+// compressed nodes, reading nodes and primitives as texels (lib/records.glsl). A
 // leaf's primitives are triangles or spheres (FEATURE_SPHERES); a crossing of an alpha-masked
 // material's cut-out (FEATURE_ALPHA_MASK) is no hit, for every kind of ray, as the
 // reference's AlphaMaskFilter decides, in the same order of crossings. Needs what
-// lib/materials.glsl needs, bvhNodes and triangleTexels.
+// lib/materials.glsl needs.
 #ifndef VKPT_TRAVERSE_GLSL
 #define VKPT_TRAVERSE_GLSL
 
@@ -13,13 +13,8 @@ uvec4 bvhNodeTexel(uint texel) {
     return texelFetch(bvhNodes, int(texel));
 }
 
-// Primitive `index` in BVH order: three texels of the triangles buffer.
 Triangle bvhPrimitive(uint index) {
-    uvec4 a = texelFetch(triangleTexels, int(3u * index));
-    uvec4 b = texelFetch(triangleTexels, int(3u * index + 1u));
-    uvec4 c = texelFetch(triangleTexels, int(3u * index + 2u));
-    return Triangle(uintBitsToFloat(a.xyz), a.w, uintBitsToFloat(b.xyz), b.w,
-                    uintBitsToFloat(c.xyz), c.w);
+    return fetchTriangle(index);
 }
 
 bool bvhHasSpheres() {
@@ -41,7 +36,7 @@ struct Traversal {
 
 // Whether crossing `h` of primitive `index` lies in an alpha-masked material's cut-out.
 bool isCutOut(uint index, TriangleHit h, vec3 origin, vec3 direction) {
-    Triangle primitive = triangles[index];
+    Triangle primitive = fetchTriangle(index);
     bool sphere = featureSpheres && isSpherePrimitive(primitive);
     vec3 sphereNormal =
         sphere ? sphereNormalAt(origin + h.t * direction, primitive.v0) : vec3(0.0);

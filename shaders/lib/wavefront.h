@@ -17,11 +17,12 @@ namespace vkpt::gpu {
 // declares only the buffers it uses, and its pipeline layout lists exactly those. A scene
 // array a scene does not have (no textures, one emitter, no environment map) is not
 // uploaded: its bindings get a small placeholder buffer that the specialised kernels never
-// read (host/render/device_scene.h). Most bindings are storage buffers; frameParams is a
-// uniform buffer, and what the BVH walk fetches at each ray's own index (nodes, primitives)
-// is a uniform texel buffer (host/render/wavefront_kernels.cpp, bindingKind; docs/gpu.md).
-#define BINDING_FRAME_PARAMS 0        // uniform buffer
-#define BINDING_BVH_NODES 1           // uniform texel buffer
+// read (host/render/device_scene.h). frameParams is a uniform buffer; the read-only records
+// (scene arrays, and the work arrays where a kernel only reads them) are uniform texel buffers
+// fetched as 16-byte texels (lib/records.glsl); the rest are storage buffers
+// (host/render/wavefront_kernels.cpp, bindingKind; docs/gpu.md).
+#define BINDING_FRAME_PARAMS 0     // uniform buffer
+#define BINDING_BVH_NODES 1        // uniform texel buffer, as all scene records up to 5
 #define BINDING_TRIANGLES 2
 #define BINDING_TRIANGLE_NORMALS 3
 #define BINDING_MATERIALS 4
@@ -35,13 +36,17 @@ namespace vkpt::gpu {
 #define BINDING_QUEUE_COUNTERS 12
 #define BINDING_DISPATCH_ARGS 13
 #define BINDING_TRIANGLE_UVS 14       // vec2, three per primitive (TEXCOORD_0)
-#define BINDING_TEXTURES 15           // TextureInfo
+#define BINDING_TEXTURES 15           // TextureInfo, uniform texel buffer
 #define BINDING_TEXTURE_TEXELS 16     // uint, RGBA8 texels of every texture
 #define BINDING_EMITTER_CDF 17        // float, inclusive selection CDF (more than one emitter)
 #define BINDING_ENVIRONMENT_TEXELS 18 // vec4, the environment map
 #define BINDING_ENVIRONMENT_CDF 19    // float, the environment map's sampling CDF
-#define BINDING_TRIANGLE_TEXELS 20    // uniform texel buffer: the triangles buffer as uvec4s
-#define BINDING_COUNT 21
+// The work arrays as uniform texel buffers, for the kernels that read them.
+#define BINDING_RAY_TEXELS 20
+#define BINDING_HIT_TEXELS 21
+#define BINDING_SHADOW_RAY_TEXELS 22
+#define BINDING_PATH_STATE_TEXELS 23
+#define BINDING_COUNT 24
 
 // ---------------------------------------------------------------------------------------------
 // What every kernel needs to know about the render, uploaded once (buffer frameParams).
