@@ -168,9 +168,11 @@ VKPT_FN float nextFloatUp(float t) {
 
 // Closest-hit walks keep the crossing with the smallest t and, among crossings at the same t
 // (rays through a shared edge or vertex, coplanar duplicates), the one with the lowest
-// primitive index: the answer then does not depend on the order in which a walk meets them,
-// so the device's wide walk, the reference's stack walk and brute force agree on every ray.
-// A walk tests each primitive against (tMin, nextFloatUp(best t)) once it has a best crossing.
+// primitive index, whatever order they meet them in; so the device's wide walk, the reference's
+// stack walk and brute force agree on such rays, except where a walk passes over a box whose
+// computed entry rounds above the best t although it holds a crossing at it (box entries and
+// triangle hits round differently). A walk tests each primitive against
+// (tMin, nextFloatUp(best t)) once it has a best crossing.
 VKPT_FN bool crossingPrecedes(float t, uint primitive, float bestT, uint bestPrimitive) {
     return t < bestT || (t == bestT && primitive < bestPrimitive);
 }

@@ -189,13 +189,33 @@ struct WideWalk {
     uint leaves;     // its leaf children still to test after the current one (same order)
     uint next;       // the next primitive of the current leaf
     uint end;        // one past its last
+    // Where the ray enters each child's box of `node`, slots 0–3 and 4–7, while the walk is at
+    // the node it visited last (false once it climbs): children entered beyond a crossing
+    // found since are passed over.
+    vec4 entryLow;
+    vec4 entryHigh;
+    bool entriesCurrent;
     // Work done, for statistics.
     uint nodesVisited;
     uint primitiveTests;
 };
 
-// Moves to the next leaf of `leaves`, or to an empty range when none is left.
+// The slots (in visiting order) whose boxes the ray enters beyond the best crossing so far,
+// with intersectBox's margin (a box entered at that very t may hold a crossing that ties).
+VKPT_FN uint childrenBeyondBest(WideWalk walk) {
+    if (walk.primitive == NO_PRIMITIVE || !walk.entriesCurrent) return 0u;
+    float limit = walk.t * 1.0000004f;
+    uvec4 low = uvec4(greaterThan(walk.entryLow, vec4(limit)));
+    uvec4 high = uvec4(greaterThan(walk.entryHigh, vec4(limit)));
+    uint slots = low.x | (low.y << 1u) | (low.z << 2u) | (low.w << 3u) | (high.x << 4u) |
+                 (high.y << 5u) | (high.z << 6u) | (high.w << 7u);
+    return orderSlotBits(slots, walk.octant);
+}
+
+// Moves to the next leaf of `leaves` that the ray enters before the best crossing, or to an
+// empty range when none is left.
 VKPT_FN void takeNextLeaf(VKPT_INOUT(WideWalk) walk) {
+    walk.leaves &= ~childrenBeyondBest(walk);
     if (walk.leaves == 0u) {
         walk.next = walk.end;
         return;
@@ -206,25 +226,26 @@ VKPT_FN void takeNextLeaf(VKPT_INOUT(WideWalk) walk) {
     walk.end = walk.next + wideLeafCount(walk.leafCounts, slot);
 }
 
-// Whether the ray enters child `slot`'s box within (tMin, best t). An empty slot's bounds are
-// lo = 255, hi = 0 on every axis: no box, whatever the slab test would make of it.
-VKPT_FN bool enterChild(WideWalk walk, vec3 scale, vec3 origin, uvec4 q0, uvec4 q1, uvec4 q2,
-                        uint slot) {
+// Where the ray enters child `slot`'s box within (tMin, best t), VKPT_FAR when it does not.
+// An empty slot's bounds are lo = 255, hi = 0 on every axis: no box, whatever the slab test
+// would make of it.
+VKPT_FN float enterChild(WideWalk walk, vec3 scale, vec3 origin, uvec4 q0, uvec4 q1, uvec4 q2,
+                         uint slot) {
     vec3 lo = vec3(wideQuantisedByte(q0.x, q0.y, slot), wideQuantisedByte(q0.z, q0.w, slot),
                    wideQuantisedByte(q1.x, q1.y, slot));
     vec3 hi = vec3(wideQuantisedByte(q1.z, q1.w, slot), wideQuantisedByte(q2.x, q2.y, slot),
                    wideQuantisedByte(q2.z, q2.w, slot));
     // q·2^e is exact (8 bits times a power of two), so the one rounding is the sum's, which
     // the builder checked gives a box around the child's.
-    return lo.x <= hi.x &&
-           intersectBox(walk.origin, walk.invDirection, origin + lo * scale, origin + hi * scale,
-                        walk.tMin, walk.t) != VKPT_FAR;
+    if (lo.x > hi.x) return VKPT_FAR;
+    return intersectBox(walk.origin, walk.invDirection, origin + lo * scale, origin + hi * scale,
+                        walk.tMin, walk.t);
 }
 
-// Bit `slot` set when the ray enters the child's box.
-VKPT_FN uint childHitBit(WideWalk walk, vec3 scale, vec3 origin, uvec4 q0, uvec4 q1, uvec4 q2,
-                         uint slot) {
-    return enterChild(walk, scale, origin, q0, q1, q2, slot) ? 1u << slot : 0u;
+// The slots among 0–3 (or 4–7, with `first` 4) whose boxes the ray enters.
+VKPT_FN uint enteredSlots(vec4 entries, uint first) {
+    uvec4 entered = uvec4(lessThan(entries, vec4(VKPT_FAR)));
+    return (entered.x | (entered.y << 1u) | (entered.z << 2u) | (entered.w << 3u)) << first;
 }
 
 // Fetches node `index` and tests its children: hit internal children become `pending`, hit
@@ -239,14 +260,16 @@ VKPT_FN void visitNode(VKPT_INOUT(WideWalk) walk, uint index VKPT_BVH_PARAM) {
     vec3 scale = wideGridScale(header);
     vec3 origin = uintBitsToFloat(uvec3(frame.x, frame.y, frame.z));
     // Written out: eight box tests in straight-line code, no loop for lavapipe to mask.
-    uint hits = childHitBit(walk, scale, origin, q0, q1, q2, 0u) |
-                childHitBit(walk, scale, origin, q0, q1, q2, 1u) |
-                childHitBit(walk, scale, origin, q0, q1, q2, 2u) |
-                childHitBit(walk, scale, origin, q0, q1, q2, 3u) |
-                childHitBit(walk, scale, origin, q0, q1, q2, 4u) |
-                childHitBit(walk, scale, origin, q0, q1, q2, 5u) |
-                childHitBit(walk, scale, origin, q0, q1, q2, 6u) |
-                childHitBit(walk, scale, origin, q0, q1, q2, 7u);
+    walk.entryLow = vec4(enterChild(walk, scale, origin, q0, q1, q2, 0u),
+                         enterChild(walk, scale, origin, q0, q1, q2, 1u),
+                         enterChild(walk, scale, origin, q0, q1, q2, 2u),
+                         enterChild(walk, scale, origin, q0, q1, q2, 3u));
+    walk.entryHigh = vec4(enterChild(walk, scale, origin, q0, q1, q2, 4u),
+                          enterChild(walk, scale, origin, q0, q1, q2, 5u),
+                          enterChild(walk, scale, origin, q0, q1, q2, 6u),
+                          enterChild(walk, scale, origin, q0, q1, q2, 7u));
+    walk.entriesCurrent = true;
+    uint hits = enteredSlots(walk.entryLow, 0u) | enteredSlots(walk.entryHigh, 4u);
     uint internal = wideInternalSlots(header);
     walk.node = index;
     walk.header = header;
@@ -277,6 +300,7 @@ VKPT_FN WideWalk beginWideWalk(vec3 origin, vec3 direction, float tMin, float tM
     walk.depth = 0u;
     walk.next = 0u;
     walk.end = 0u;
+    walk.entriesCurrent = false;
     walk.nodesVisited = 0u;
     walk.primitiveTests = 0u;
     visitNode(walk, 0u VKPT_BVH_ARG);
@@ -338,7 +362,10 @@ VKPT_FN PendingCrossing testLeaves(VKPT_INOUT(WideWalk) walk VKPT_BVH_PARAM) {
 // Climbs from a node whose children are all done to the first ancestor with children left,
 // or to the root.
 VKPT_FN void climbToPendingAncestor(VKPT_INOUT(WideWalk) walk VKPT_BVH_PARAM) {
+    // Children entered beyond a crossing found in this node's leaves need no visit.
+    walk.pending &= ~childrenBeyondBest(walk);
     while (walk.pending == 0u && walk.depth > 0u) {
+        walk.entriesCurrent = false;
         walk.node = WIDE_HEADER_PARENT(walk.header);
         walk.header = bvhNodeTexel(WIDE_BVH_TEXELS * walk.node VKPT_BVH_ARG);
         walk.pending = popMask(walk.stack);

@@ -143,28 +143,24 @@ std::string describe(const RayQuery& ray) {
     return s.str();
 }
 
-// Equal hits: both miss, or both hit the same primitive at exactly the same t with the same
-// barycentrics (ties at one t go to the lowest index in every walk, intersect.h).
-::testing::AssertionResult sameHit(const BuiltScene&, const RayQuery&, const ClosestHit& a,
+// Equal hits: both miss, or both hit at exactly the same t, on the same primitive with the same
+// barycentrics or on two that really tie there. Walks prefer the lowest index among the
+// crossings they find at one t (intersect.h), but each may pass over a box that holds another
+// such crossing: box entries and the triangle test's t round differently (the latter's error
+// grows with the triangle's size, not with t), so a box entered "just after" the best t can
+// hold a crossing at that very t.
+::testing::AssertionResult sameHit(const BuiltScene& s, const RayQuery& ray, const ClosestHit& a,
                                    const ClosestHit& b) {
     if (a.hit != b.hit) return ::testing::AssertionFailure() << "hit " << a.hit << " vs " << b.hit;
     if (!a.hit) return ::testing::AssertionSuccess();
-    if (a.t != b.t || a.triangle != b.triangle)
+    if (a.t != b.t)
         return ::testing::AssertionFailure()
                << std::setprecision(9) << "t " << a.t << " vs " << b.t << " (triangles "
                << a.triangle << ", " << b.triangle << ")";
-    if (a.u == b.u && a.v == b.v) return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << "same triangle, different barycentrics";
-}
-
-// The same crossing under another layout's numbering, where ties at one t may go to another
-// primitive (the lowest index of that layout): both miss, or both hit at exactly the same t,
-// on the same primitive or on two that really tie there.
-::testing::AssertionResult sameCrossing(const BuiltScene& s, const RayQuery& ray,
-                                        const ClosestHit& a, const ClosestHit& b) {
-    if (a.hit != b.hit) return ::testing::AssertionFailure() << "hit " << a.hit << " vs " << b.hit;
-    if (!a.hit || a.triangle == b.triangle) return sameHit(s, ray, a, b);
-    if (a.t != b.t) return ::testing::AssertionFailure() << "t " << a.t << " vs " << b.t;
+    if (a.triangle == b.triangle) {
+        if (a.u == b.u && a.v == b.v) return ::testing::AssertionSuccess();
+        return ::testing::AssertionFailure() << "same triangle, different barycentrics";
+    }
     const float tMax = gpu::nextFloatUp(a.t);
     for (std::uint32_t index : {a.triangle, b.triangle}) {
         const gpu::Triangle& tri = s.triangles[index];
@@ -201,8 +197,8 @@ bool checkRay(const BuiltScene& s, const RayQuery& ray, bool bruteForce, WalkFig
         std::max(f.maxWideIterations, wideCount.nodesVisited + wideCount.triangleTests);
     f.hits += stack.hit ? 1 : 0;
     EXPECT_TRUE(sameHit(s, ray, stack, wide)) << "stack vs wide, " << describe(ray);
-    EXPECT_TRUE(sameCrossing(s, ray, stack,
-                             renumbered(s, closestHitWide(s.tall.nodes, s.tall.triangles, ray))))
+    EXPECT_TRUE(sameHit(s, ray, stack,
+                        renumbered(s, closestHitWide(s.tall.nodes, s.tall.triangles, ray))))
         << "stack vs wide collapsed tallest first, " << describe(ray);
     if (bruteForce) {
         ClosestHit brute = closestHitBruteForce(s.triangles, ray);
