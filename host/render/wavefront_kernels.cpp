@@ -2,6 +2,7 @@
 #include "render/wavefront_kernels.h"
 
 #include <chrono>
+#include <cstdio>
 #include <string>
 
 #include "common/errors.h"
@@ -112,7 +113,7 @@ Kernel makeWavefrontKernel(const GpuContext& context, WavefrontKernel kernel,
         desc.bindings.push_back({binding, bindingKind(binding)});
     desc.pushConstantSize = sizeof(gpu::PassParams);
     if (isSpecialised(kernel)) desc.specializationConstants = featureConstants(features);
-    return Kernel(context, std::move(desc));
+    Kernel k(context, std::move(desc)); std::fprintf(stderr, "DBG %s %.3f\n", k.name().c_str(), std::chrono::duration<double>(k.creationTime()).count()); return k;
 }
 
 DescriptorSet bindWavefrontKernel(const Kernel& kernel, WavefrontKernel id,
