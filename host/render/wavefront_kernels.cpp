@@ -2,7 +2,6 @@
 #include "render/wavefront_kernels.h"
 
 #include <chrono>
-#include <cstdio>
 #include <string>
 
 #include "common/errors.h"
@@ -113,7 +112,7 @@ Kernel makeWavefrontKernel(const GpuContext& context, WavefrontKernel kernel,
         desc.bindings.push_back({binding, bindingKind(binding)});
     desc.pushConstantSize = sizeof(gpu::PassParams);
     if (isSpecialised(kernel)) desc.specializationConstants = featureConstants(features);
-    Kernel k(context, std::move(desc)); std::fprintf(stderr, "DBG %s %.3f\n", k.name().c_str(), std::chrono::duration<double>(k.creationTime()).count()); return k;
+    return Kernel(context, std::move(desc));
 }
 
 DescriptorSet bindWavefrontKernel(const Kernel& kernel, WavefrontKernel id,
