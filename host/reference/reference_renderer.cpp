@@ -14,6 +14,7 @@
 #include "common/progress.h"
 #include "reference/integrators.h"
 #include "reference/pixel_accumulator.h"
+#include "reference/stack_intersector.h"
 #include "shared/adaptive.h"
 #include "shared/camera.h"
 #include "shared/rng.h"
@@ -36,6 +37,7 @@ struct RenderJob {
     const PreparedScene& scene;
     const gpu::Camera& camera;
     const RenderSettings& settings;
+    const IntersectorFactory& intersectors;
     RenderOutput& output;
     ProgressBar& progress;
     float darkFloor;
@@ -103,7 +105,7 @@ void renderTile(RenderJob& job, IntegratorContext& context, std::uint32_t tile,
 }
 
 void renderWorker(RenderJob& job) {
-    SceneTracer tracer(job.scene);
+    SceneTracer tracer(job.scene, job.intersectors);
     IntegratorContext context{job.settings, tracer};
     ThreadCounters counters;
     for (std::uint32_t tile = job.nextTile++; tile < job.tiles.count(); tile = job.nextTile++)
@@ -137,6 +139,13 @@ float adaptiveDarkFloor(float exposure) { return ADAPTIVE_DARK_FLOOR * std::exp2
 
 RenderOutput renderReference(const PreparedScene& scene, const gpu::Camera& camera,
                              const RenderSettings& settings, RenderStats& stats) {
+    StackIntersectors intersectors(scene);
+    return renderReference(scene, camera, settings, stats, intersectors);
+}
+
+RenderOutput renderReference(const PreparedScene& scene, const gpu::Camera& camera,
+                             const RenderSettings& settings, RenderStats& stats,
+                             const IntersectorFactory& intersectors) {
     auto start = std::chrono::steady_clock::now();
     RenderOutput output = makeOutput(camera.width, camera.height);
     stats = RenderStats{};
@@ -145,8 +154,8 @@ RenderOutput renderReference(const PreparedScene& scene, const gpu::Camera& came
         makeProgressBar("vkpt-ref", std::uint64_t(camera.width) * camera.height, settings.quiet);
     TileGrid tiles{(camera.width + kTileSize - 1) / kTileSize,
                    (camera.height + kTileSize - 1) / kTileSize};
-    RenderJob job{scene, camera, settings, output, *progress, adaptiveDarkFloor(settings.exposure),
-                  tiles, {}, {}, stats};
+    RenderJob job{scene,     camera, settings, intersectors, output, *progress,
+                  adaptiveDarkFloor(settings.exposure), tiles, {}, {}, stats};
     std::vector<std::thread> workers;
     std::uint32_t count = std::min(threadCount(settings), tiles.count());
     for (std::uint32_t i = 0; i < count; ++i) workers.emplace_back(renderWorker, std::ref(job));

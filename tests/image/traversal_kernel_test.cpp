@@ -13,7 +13,7 @@
 #include "bvh/bvh_traverse.h"
 #include "bvh/synthetic_scenes.h"
 #include "feature_scenes.h"
-#include "reference/scene_tracer.h"
+#include "reference/alpha_mask_filter.h"
 #include "render/ray_queries.h"
 #include "shared/camera.h"
 #include "shared/intersect.h"
