@@ -29,6 +29,7 @@ public:
     }
 
     const PreparedScene& scene() const { return scene_; }
+    SceneIntersector& intersector() { return *intersector_; }
     const RayCounts& rays() const { return rays_; }
     TraversalCounters traversal() const { return intersector_->traversal(); }
 
