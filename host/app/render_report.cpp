@@ -40,6 +40,7 @@ void writeStats(JsonWriter& json, const RenderReport& r) {
     const RenderStats& st = r.stats;
     json.key("render").beginObject();
     json.field("seconds", st.seconds).field("loadSeconds", r.loadSeconds);
+    json.field("cpuSeconds", st.cpuSeconds);
     json.key("rays").beginObject();
     json.field("camera", st.rays.camera).field("extension", st.rays.extension);
     json.field("shadow", st.rays.shadow).field("total", st.rays.total());

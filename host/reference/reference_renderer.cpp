@@ -11,6 +11,8 @@
 #include <mutex>
 #include <thread>
 
+#include <time.h>
+
 #include "common/progress.h"
 #include "reference/integrators.h"
 #include "reference/pixel_accumulator.h"
@@ -104,7 +106,14 @@ void renderTile(RenderJob& job, IntegratorContext& context, std::uint32_t tile,
     job.progress.advance(std::uint64_t(x1 - x0) * (y1 - y0));
 }
 
+double threadCpuSeconds() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
 void renderWorker(RenderJob& job) {
+    const double cpuStart = threadCpuSeconds();
     SceneTracer tracer(job.scene, job.intersectors);
     IntegratorContext context{job.settings, tracer};
     ThreadCounters counters;
@@ -116,6 +125,7 @@ void renderWorker(RenderJob& job) {
     job.stats.triangleTests += tracer.traversal().triangleTests;
     job.stats.samplesTaken += counters.samples;
     job.stats.nonFiniteSamples += counters.nonFinite;
+    job.stats.cpuSeconds += threadCpuSeconds() - cpuStart;
 }
 
 RenderOutput makeOutput(std::uint32_t width, std::uint32_t height) {

@@ -7,23 +7,24 @@ namespace {
 
 class StackIntersector final : public SceneIntersector {
 public:
-    StackIntersector(const PreparedScene& scene, const HitFilter* filter)
-        : scene_(scene), filter_(filter) {}
+    StackIntersector(const PreparedScene& scene, const StackBvh& bvh, const HitFilter* filter)
+        : scene_(scene), bvh_(bvh), filter_(filter) {}
 
     ClosestHit closestHit(const glm::vec3& origin, const glm::vec3& direction) override {
         RayQuery query{origin, direction, 0.0f, VKPT_FAR, filter_};
-        return closestHitStack(scene_.tree, scene_.triangles, query, &counters_);
+        return closestHitStack(bvh_, query, &counters_);
     }
 
     bool occluded(const glm::vec3& origin, const glm::vec3& direction, float tMax) override {
         RayQuery query{origin, direction, 0.0f, tMax, filter_};
-        return anyHitStack(scene_.tree, scene_.triangles, query, &counters_);
+        return anyHitStack(bvh_, query, &counters_);
     }
 
     TraversalCounters traversal() const override { return counters_; }
 
 private:
     const PreparedScene& scene_;
+    const StackBvh& bvh_;
     const HitFilter* filter_;
     TraversalCounters counters_;
 };
@@ -31,11 +32,11 @@ private:
 } // namespace
 
 StackIntersectors::StackIntersectors(const PreparedScene& scene)
-    : scene_(scene), alphaMask_(scene),
+    : scene_(scene), bvh_(makeStackBvh(scene.tree, scene.triangles)), alphaMask_(scene),
       filter_(scene.features.alphaMask ? &alphaMask_ : nullptr) {}
 
 std::unique_ptr<SceneIntersector> StackIntersectors::makeIntersector() const {
-    return std::make_unique<StackIntersector>(scene_, filter_);
+    return std::make_unique<StackIntersector>(scene_, bvh_, filter_);
 }
 
 } // namespace vkpt

@@ -7,13 +7,17 @@
 
 namespace vkpt {
 
+// Lays the tree out for the walk once (makeStackBvh); each thread's intersector shares it.
 class StackIntersectors final : public IntersectorFactory {
 public:
     explicit StackIntersectors(const PreparedScene& scene);
     std::unique_ptr<SceneIntersector> makeIntersector() const override;
 
+    const StackBvh& bvh() const { return bvh_; }
+
 private:
     const PreparedScene& scene_;
+    StackBvh bvh_;
     AlphaMaskFilter alphaMask_;
     const HitFilter* filter_; // the alpha test, only when the scene has cut-outs
 };

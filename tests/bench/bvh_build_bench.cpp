@@ -133,6 +133,7 @@ void printWalk(const char* label, const WalkResult& r) {
 
 struct BuiltScene {
     BvhTree tree;
+    StackBvh stackBvh;               // the tree laid out for the ordered stack walk
     std::vector<gpu::BvhNode> nodes; // left child first
     std::vector<gpu::Triangle> triangles;
 };
@@ -146,6 +147,7 @@ BuiltScene buildScene(const std::vector<glm::vec3>& positions) {
         const glm::vec3* p = &positions[3 * std::size_t(source)];
         s.triangles.push_back({p[0], 0u, p[1], NO_EMITTER, p[2], source});
     }
+    s.stackBvh = makeStackBvh(s.tree, s.triangles);
     return s;
 }
 
@@ -233,7 +235,7 @@ void benchTraversal(const BuiltScene& s, const char* label, const std::vector<Ra
     std::printf("    %-26s %9s %9s %9s %9s %9s\n", "walk", "nodes/ray", "tris/ray", "max nodes",
                 "max iter.", "Mrays/s");
     printWalk("stack (ordered)", measureWalk(rays, [&](const RayQuery& r, TraversalCounters* c) {
-                  return closestHitStack(s.tree, s.triangles, r, c);
+                  return closestHitStack(s.stackBvh, r, c);
               }));
     printWalk("stackless, left first",
               measureWalk(rays, [&](const RayQuery& r, TraversalCounters* c) {

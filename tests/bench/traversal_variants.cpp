@@ -19,10 +19,11 @@ namespace vkpt::bench {
 
 namespace {
 
-// Bytes per node visit and per primitive test of each layout: the one place that says so.
-// The stack walk reads the tree's nodes, the skip-link walk (device and its CPU transcription)
-// the flattened gpu::BvhNode; both read gpu::Triangle records.
-constexpr WalkLayout kStackWalkLayout{sizeof(BvhBuildNode), sizeof(gpu::Triangle)};
+// Bytes per node visit (box test) and per primitive test of each layout: the one place that
+// says so. The stack walk tests both boxes of a StackBvhPair (half a pair per box), the
+// skip-link walk (device and its CPU transcription) one gpu::BvhNode per box; both read
+// gpu::Triangle records.
+constexpr WalkLayout kStackWalkLayout{sizeof(StackBvhPair) / 2, sizeof(gpu::Triangle)};
 constexpr WalkLayout kSkipLinkLayout{sizeof(gpu::BvhNode), sizeof(gpu::Triangle)};
 
 constexpr std::uint32_t kChunk = 256; // rays a thread takes at a time
@@ -91,16 +92,18 @@ std::unique_ptr<TraversalVariant> makeCpuWalk(VariantInfo info, const PreparedSc
                                                           closest, any);
 }
 
+// The walks share the tree laid out for them, which the variant's lambdas own.
 std::unique_ptr<TraversalVariant> stackWalk(const PreparedScene& scene, std::uint32_t threads) {
     VariantInfo info{"vkpt-ref ordered stack walk, " + std::to_string(threads) + " threads",
                      kStackWalkLayout, false, true};
+    auto bvh = std::make_shared<const StackBvh>(makeStackBvh(scene.tree, scene.triangles));
     return makeCpuWalk(
         std::move(info), scene, threads,
-        [&scene](const RayQuery& r, TraversalCounters& c) {
-            return closestHitStack(scene.tree, scene.triangles, r, &c);
+        [&scene, bvh](const RayQuery& r, TraversalCounters& c) {
+            return closestHitStack(*bvh, r, &c);
         },
-        [&scene](const RayQuery& r, TraversalCounters& c) {
-            return anyHitStack(scene.tree, scene.triangles, r, &c);
+        [&scene, bvh](const RayQuery& r, TraversalCounters& c) {
+            return anyHitStack(*bvh, r, &c);
         });
 }
 

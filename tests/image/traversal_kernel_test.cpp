@@ -140,11 +140,11 @@ protected:
         DeviceRayQueries queries(context(), scene.prepared);
         std::vector<gpu::HitRecord> hits = queries.closest(rays);
         ReferenceFilter filter(scene.prepared);
+        const StackBvh stackBvh = makeStackBvh(scene.prepared.tree, scene.prepared.triangles);
         int disagreements = 0, hitCount = 0;
         for (std::size_t i = 0; i < rays.size(); ++i) {
             ClosestHit cpu =
-                closestHitStack(scene.prepared.tree, scene.prepared.triangles,
-                                {rays[i].origin, rays[i].direction, 0.0f, VKPT_FAR, filter.get()});
+                closestHitStack(stackBvh, {rays[i].origin, rays[i].direction, 0.0f, VKPT_FAR, filter.get()});
             hitCount += cpu.hit ? 1 : 0;
             if (sameClosestHit(scene.prepared, rays[i], hits[i], cpu)) continue;
             if (++disagreements <= 5)
@@ -171,11 +171,11 @@ protected:
         DeviceRayQueries queries(context(), scene.prepared);
         std::vector<bool> occluded = queries.occluded(rays);
         ReferenceFilter filter(scene.prepared);
+        const StackBvh stackBvh = makeStackBvh(scene.prepared.tree, scene.prepared.triangles);
         int disagreements = 0, blocked = 0;
         for (std::size_t i = 0; i < rays.size(); ++i) {
             bool cpu =
-                anyHitStack(scene.prepared.tree, scene.prepared.triangles,
-                            {rays[i].origin, rays[i].direction, 0.0f, rays[i].tMax, filter.get()});
+                anyHitStack(stackBvh, {rays[i].origin, rays[i].direction, 0.0f, rays[i].tMax, filter.get()});
             blocked += cpu ? 1 : 0;
             if (occluded[i] == cpu) continue;
             if (++disagreements <= 5)

@@ -16,6 +16,7 @@ namespace {
 
 struct BuiltScene {
     BvhTree tree;
+    StackBvh stackBvh; // the tree laid out for the ordered stack walk
     std::vector<gpu::BvhNode> nodes;
     std::vector<gpu::Triangle> triangles; // BVH order
 };
@@ -37,6 +38,7 @@ BuiltScene buildScene(const std::vector<glm::vec3>& positions, BvhBuildOptions o
     s.tree = buildBvh(triangleBounds(positions), options);
     s.nodes = flattenBvh(s.tree, flatten);
     s.triangles = bvhOrderedTriangles(positions, s.tree);
+    s.stackBvh = makeStackBvh(s.tree, s.triangles);
     return s;
 }
 
@@ -231,8 +233,9 @@ TEST(BvhFlatten, EmptyTreeIsOneEmptyLeafThatNoRayHits) {
     RayQuery ray{glm::vec3(0.0f, 0.0f, 1.0f), glm::vec3(0.0f, 0.0f, -1.0f)};
     EXPECT_FALSE(closestHitStackless(nodes, {}, ray).hit);
     EXPECT_FALSE(anyHitStackless(nodes, {}, ray));
-    EXPECT_FALSE(closestHitStack(tree, {}, ray).hit);
-    EXPECT_FALSE(anyHitStack(tree, {}, ray));
+    StackBvh stackBvh = makeStackBvh(tree, {});
+    EXPECT_FALSE(closestHitStack(stackBvh, ray).hit);
+    EXPECT_FALSE(anyHitStack(stackBvh, ray));
 }
 
 TEST(BvhFlatten, StacklessMatchesRecursive) {
@@ -242,7 +245,7 @@ TEST(BvhFlatten, StacklessMatchesRecursive) {
         glm::vec3 margin = 0.5f * (bounds.max - bounds.min);
         for (int i = 0; i < 2500; ++i) {
             RayQuery ray{rng.inBox(bounds.min - margin, bounds.max + margin), rng.unitVector()};
-            ClosestHit stack = closestHitStack(s.tree, s.triangles, ray);
+            ClosestHit stack = closestHitStack(s.stackBvh, ray);
             ClosestHit stackless = closestHitStackless(s.nodes, s.triangles, ray);
             ASSERT_EQ(stack.hit, stackless.hit) << i;
             if (!stack.hit) continue;

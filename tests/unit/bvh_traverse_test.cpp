@@ -29,6 +29,7 @@ const std::string kSharedScenes = VKPT_SCENES_DIR "/../../shared/scenes";
 
 struct BuiltScene {
     BvhTree tree;
+    StackBvh stackBvh;                    // the tree laid out for the ordered stack walk
     std::vector<gpu::BvhNode> nodes;      // left child first
     std::vector<gpu::BvhNode> viewNodes;  // near child first along kViewDirection
     std::vector<gpu::Triangle> triangles; // BVH order
@@ -56,6 +57,7 @@ BuiltScene buildScene(const std::vector<glm::vec3>& positions) {
     s.nodes = flattenBvh(s.tree);
     s.viewNodes = flattenBvh(s.tree, {kViewDirection});
     s.triangles = bvhOrderedTriangles(positions, s.tree);
+    s.stackBvh = makeStackBvh(s.tree, s.triangles);
     s.bounds = s.tree.nodes[0].bounds;
     return s;
 }
@@ -161,7 +163,7 @@ struct WalkFigures {
 // disagreement so that one bad scene does not print 10^5 failures.
 bool checkRay(const BuiltScene& s, const RayQuery& ray, bool bruteForce, WalkFigures& f) {
     TraversalCounters stackCount, stacklessCount;
-    ClosestHit stack = closestHitStack(s.tree, s.triangles, ray, &stackCount);
+    ClosestHit stack = closestHitStack(s.stackBvh, ray, &stackCount);
     ClosestHit stackless = closestHitStackless(s.nodes, s.triangles, ray, &stacklessCount);
     f.stack.nodesVisited += stackCount.nodesVisited;
     f.stack.triangleTests += stackCount.triangleTests;
@@ -179,13 +181,13 @@ bool checkRay(const BuiltScene& s, const RayQuery& ray, bool bruteForce, WalkFig
         ClosestHit brute = closestHitBruteForce(s.triangles, ray);
         EXPECT_TRUE(sameHit(s, ray, brute, stack)) << "brute force vs stack, " << describe(ray);
     }
-    EXPECT_EQ(anyHitStack(s.tree, s.triangles, ray), stack.hit) << describe(ray);
+    EXPECT_EQ(anyHitStack(s.stackBvh, ray), stack.hit) << describe(ray);
     EXPECT_EQ(anyHitStackless(s.nodes, s.triangles, ray), stack.hit) << describe(ray);
     if (stack.hit) {
         // Nothing lies strictly nearer than the closest hit (tMax is exclusive).
         RayQuery nearer = ray;
         nearer.tMax = stack.t;
-        EXPECT_FALSE(anyHitStack(s.tree, s.triangles, nearer)) << describe(ray);
+        EXPECT_FALSE(anyHitStack(s.stackBvh, nearer)) << describe(ray);
         EXPECT_FALSE(anyHitStackless(s.nodes, s.triangles, nearer)) << describe(ray);
     }
     return !::testing::Test::HasFailure();
@@ -281,15 +283,15 @@ BuiltScene twoSquares() {
 TEST(BvhTraverse, RespectsTheRayInterval) {
     BuiltScene s = twoSquares();
     RayQuery ray{glm::vec3(0.25f, 0.5f, 0.0f), glm::vec3(0.0f, 0.0f, 1.0f)};
-    EXPECT_EQ(closestHitStack(s.tree, s.triangles, ray).t, 1.0f);
+    EXPECT_EQ(closestHitStack(s.stackBvh, ray).t, 1.0f);
     EXPECT_EQ(closestHitStackless(s.nodes, s.triangles, ray).t, 1.0f);
     ray.tMin = 1.0f; // exclusive: the near square is skipped
-    EXPECT_EQ(closestHitStack(s.tree, s.triangles, ray).t, 2.0f);
+    EXPECT_EQ(closestHitStack(s.stackBvh, ray).t, 2.0f);
     EXPECT_EQ(closestHitStackless(s.nodes, s.triangles, ray).t, 2.0f);
     ray.tMax = 2.0f; // exclusive: nothing left
-    EXPECT_FALSE(closestHitStack(s.tree, s.triangles, ray).hit);
+    EXPECT_FALSE(closestHitStack(s.stackBvh, ray).hit);
     EXPECT_FALSE(closestHitStackless(s.nodes, s.triangles, ray).hit);
-    EXPECT_FALSE(anyHitStack(s.tree, s.triangles, ray));
+    EXPECT_FALSE(anyHitStack(s.stackBvh, ray));
     EXPECT_FALSE(anyHitStackless(s.nodes, s.triangles, ray));
 }
 
@@ -314,7 +316,7 @@ TEST(BvhTraverse, CountsBoxAndTriangleTests) {
     BuiltScene s = twoSquares();
     RayQuery ray{glm::vec3(0.25f, 0.5f, 0.0f), glm::vec3(0.0f, 0.0f, 1.0f)};
     TraversalCounters stack, stackless;
-    closestHitStack(s.tree, s.triangles, ray, &stack);
+    closestHitStack(s.stackBvh, ray, &stack);
     closestHitStackless(s.nodes, s.triangles, ray, &stackless);
     EXPECT_GT(stack.nodesVisited, 0u);
     EXPECT_GT(stack.triangleTests, 0u);
@@ -336,7 +338,7 @@ TEST(BvhTraverse, FindsAVertexHitAlongABoxEdge) {
     ClosestHit brute = closestHitBruteForce(s.triangles, ray);
     ASSERT_TRUE(brute.hit);
     EXPECT_EQ(brute.t, 1.0f);
-    EXPECT_EQ(closestHitStack(s.tree, s.triangles, ray).t, 1.0f);
+    EXPECT_EQ(closestHitStack(s.stackBvh, ray).t, 1.0f);
     EXPECT_EQ(closestHitStackless(s.nodes, s.triangles, ray).t, 1.0f);
 }
 
