@@ -2,7 +2,9 @@
 // vkpt-ref's ordered stack walk, the device walk on the CPU and the device kernels (lavapipe
 // without a GPU). Per ray set and variant: Mrays/s (median of --runs), nodes visited and
 // primitive tests per ray, bytes fetched per ray, the ratio to Embree's Mrays/s, and how many
-// answers disagree with the stack walk's. A benchmark: it prints, never asserts.
+// answers disagree with the stack walk's. Beside wall-clock Mrays/s it prints Mrays per CPU
+// second of the process (user + system time, lavapipe's threads included), which other tenants
+// of a shared machine inflate far less. A benchmark: it prints, never asserts.
 //
 //   traversal_bench [--quick] [--runs N] [--res W H] [--threads N] [--triangles N]
 //                   [--max-depth N] [--no-device] [scene.gltf ...]
@@ -15,6 +17,8 @@
 #include <filesystem>
 #include <string>
 #include <vector>
+
+#include <sys/resource.h>
 
 #include "../support/room_scene.h"
 #include "app/command_line.h"
@@ -88,17 +92,28 @@ Scene loadBenchScene(const std::string& path, const BenchOptions& o) {
 
 struct Timed {
     std::vector<double> seconds;
+    std::vector<double> cpuSeconds;
     std::vector<TraceOutcome> outcomes; // of the last run
     TraceWork work;                     // of the last run
 };
 
+// User + system time of the whole process so far.
+double processCpuSeconds() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    auto seconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
+    return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
 Timed timeVariant(TraversalVariant& variant, const RaySet& set, int runs) {
     Timed timed;
     for (int run = 0; run < runs; ++run) {
+        const double cpuStart = processCpuSeconds();
         auto start = std::chrono::steady_clock::now();
         timed.work = variant.trace(set, timed.outcomes);
         timed.seconds.push_back(
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        timed.cpuSeconds.push_back(processCpuSeconds() - cpuStart);
     }
     return timed;
 }
@@ -142,16 +157,29 @@ std::string bytesPerRay(const TraceWork& work, const WalkLayout& layout, std::si
     return text;
 }
 
-void printRow(const VariantInfo& info, const Timed& timed, std::size_t rays, double baseMrays,
+// Mrays per second of wall-clock time and per CPU second.
+struct Speed {
+    double wall = 0.0;
+    double cpu = 0.0;
+};
+
+Speed speedOf(const Timed& timed, std::size_t rays) {
+    return {double(rays) / median(timed.seconds) * 1e-6,
+            double(rays) / median(timed.cpuSeconds) * 1e-6};
+}
+
+std::string ratio(double value, double base) {
+    if (base <= 0.0) return "-";
+    char text[16];
+    std::snprintf(text, sizeof text, "%.2f", value / base);
+    return text;
+}
+
+void printRow(const VariantInfo& info, const Timed& timed, std::size_t rays, Speed base,
               const std::string& disagreement) {
-    double mrays = double(rays) / median(timed.seconds) * 1e-6;
-    std::string ratio = "-";
-    if (baseMrays > 0.0) {
-        char text[16];
-        std::snprintf(text, sizeof text, "%.2f", mrays / baseMrays);
-        ratio = text;
-    }
-    std::printf("    %-52s %8.2f %6s %8s %8s %10s  %s\n", info.name.c_str(), mrays, ratio.c_str(),
+    Speed speed = speedOf(timed, rays);
+    std::printf("    %-50s %7.2f %5s %8.2f %5s %6s %6s %7s  %s\n", info.name.c_str(), speed.wall,
+                ratio(speed.wall, base.wall).c_str(), speed.cpu, ratio(speed.cpu, base.cpu).c_str(),
                 perRay(timed.work.nodes, rays).c_str(),
                 perRay(timed.work.primitiveTests, rays).c_str(),
                 bytesPerRay(timed.work, info.layout, rays).c_str(), disagreement.c_str());
@@ -159,18 +187,17 @@ void printRow(const VariantInfo& info, const Timed& timed, std::size_t rays, dou
 
 void benchRaySet(const RaySet& set, std::vector<std::unique_ptr<TraversalVariant>>& variants,
                  int runs) {
-    std::printf("  %s: %zu rays\n    %-52s %8s %6s %8s %8s %10s  %s\n", set.name.c_str(),
-                set.rays.size(), "variant", "Mrays/s", "ratio", "nodes", "tests", "bytes",
-                "disagree (hit/miss, t)");
+    std::printf("  %s: %zu rays\n    %-50s %7s %5s %8s %5s %6s %6s %7s  %s\n",
+                set.name.c_str(), set.rays.size(), "variant", "Mrays/s", "ratio", "Mr/cpu-s",
+                "ratio", "nodes", "tests", "bytes", "disagree (hit/miss, t)");
     if (set.rays.empty()) return;
     std::vector<Timed> timed;
     for (auto& variant : variants) timed.push_back(timeVariant(*variant, set, runs));
     const Timed* reference = nullptr;
-    double baseMrays = 0.0;
+    Speed base;
     for (std::size_t v = 0; v < variants.size(); ++v) {
         if (variants[v]->info().checkReference) reference = &timed[v];
-        if (variants[v]->info().ratioBase)
-            baseMrays = double(set.rays.size()) / median(timed[v].seconds) * 1e-6;
+        if (variants[v]->info().ratioBase) base = speedOf(timed[v], set.rays.size());
     }
     for (std::size_t v = 0; v < variants.size(); ++v) {
         std::string disagreement = "(reference)";
@@ -178,7 +205,7 @@ void benchRaySet(const RaySet& set, std::vector<std::unique_ptr<TraversalVariant
             Disagreement d = compare(reference->outcomes, timed[v].outcomes, set.anyHit);
             disagreement = std::to_string(d.hitOrMiss) + ", " + std::to_string(d.distance);
         }
-        printRow(variants[v]->info(), timed[v], set.rays.size(), baseMrays, disagreement);
+        printRow(variants[v]->info(), timed[v], set.rays.size(), base, disagreement);
     }
 }
 
