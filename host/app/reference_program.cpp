@@ -31,7 +31,8 @@ Invocation parseArguments(const std::string& program, int argc, char** argv) {
     CommandLine commandLine(program);
     addRenderOptions(commandLine, invocation.settings);
     addConvergenceOptions(commandLine, invocation.convergence, ConvergenceOptionSet::ReferenceOnly);
-    commandLine.add({"help", {'h'}, "", "show this help", [&](auto) { invocation.showHelp = true; }});
+    commandLine.add(
+        {"help", {'h'}, "", "show this help", [&](auto) { invocation.showHelp = true; }});
     std::vector<std::string> arguments(argv + 1, argv + argc);
     std::vector<std::string> positional = commandLine.parse(arguments);
     if (invocation.showHelp) {

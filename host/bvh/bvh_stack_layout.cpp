@@ -50,7 +50,8 @@ public:
         std::vector<Pending> level{top};
         for (std::uint32_t depth = 0; depth < kStackBvhBlockLevels && !level.empty(); ++depth) {
             std::vector<Pending> below;
-            for (const Pending& p : level) addPair(p, below);
+            for (const Pending& p : level)
+                addPair(p, below);
             level = std::move(below);
         }
         top.child->word = (static_cast<std::uint32_t>(bvh_.pairs.size()) - start)

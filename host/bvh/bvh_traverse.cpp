@@ -29,8 +29,7 @@ struct Walk {
     TraversalCounters* counters;
 
     Walk(const RayQuery& r, TraversalCounters* c)
-        : ray(r), boxTest(r.origin, r.direction), triangleTest(r.origin, r.direction),
-          counters(c) {
+        : ray(r), boxTest(r.origin, r.direction), triangleTest(r.origin, r.direction), counters(c) {
         best.t = r.tMax;
     }
     ~Walk() {
@@ -52,10 +51,10 @@ struct Walk {
     bool testTriangle(std::span<const gpu::Triangle> triangles, std::uint32_t index) {
         ++primitiveTests;
         const gpu::Triangle& tri = triangles[index];
-        gpu::TriangleHit h =
-            gpu::isSpherePrimitive(tri)
-                ? gpu::intersectSphere(ray.origin, ray.direction, tri.v0, tri.v1.x, ray.tMin, best.t)
-                : triangleTest.intersect(tri.v0, tri.v1, tri.v2, ray.tMin, best.t);
+        gpu::TriangleHit h = gpu::isSpherePrimitive(tri)
+                                 ? gpu::intersectSphere(ray.origin, ray.direction, tri.v0, tri.v1.x,
+                                                        ray.tMin, best.t)
+                                 : triangleTest.intersect(tri.v0, tri.v1, tri.v2, ray.tMin, best.t);
         if (!h.hit) return false;
         if (ray.filter != nullptr && gpu::isAlphaMaskedPrimitive(tri) &&
             !ray.filter->accepts(index, ray, h))
@@ -112,13 +111,15 @@ struct NodeStack {
 // asks for its primitives before the walk comes back to it.
 void prefetchBlock(const StackBvh& bvh, StackBvhChild node) {
     const StackBvhPair* first = &bvh.pairs[node.first];
-    for (std::uint32_t i = 0; i < node.blockPairs(); ++i) __builtin_prefetch(first + i);
+    for (std::uint32_t i = 0; i < node.blockPairs(); ++i)
+        __builtin_prefetch(first + i);
 }
 
 void prefetchLeaf(const StackBvh& bvh, StackBvhChild leaf) {
     const char* begin = reinterpret_cast<const char*>(&bvh.primitives[leaf.first]);
     const char* end = begin + leaf.primitiveCount() * sizeof(gpu::Triangle);
-    for (const char* line = begin; line < end; line += 64) __builtin_prefetch(line);
+    for (const char* line = begin; line < end; line += 64)
+        __builtin_prefetch(line);
 }
 
 // The ordered walk; with stopAtFirst it becomes the any-hit query. At an interior node both
@@ -221,11 +222,11 @@ ClosestHit closestHitBruteForce(std::span<const gpu::Triangle> triangles, const 
     best.t = ray.tMax;
     for (std::uint32_t i = 0; i < triangles.size(); ++i) {
         const gpu::Triangle& tri = triangles[i];
-        gpu::TriangleHit h =
-            gpu::isSpherePrimitive(tri)
-                ? gpu::intersectSphere(ray.origin, ray.direction, tri.v0, tri.v1.x, ray.tMin, best.t)
-                : gpu::intersectTriangle(ray.origin, ray.direction, tri.v0, tri.v1, tri.v2,
-                                         ray.tMin, best.t);
+        gpu::TriangleHit h = gpu::isSpherePrimitive(tri)
+                                 ? gpu::intersectSphere(ray.origin, ray.direction, tri.v0, tri.v1.x,
+                                                        ray.tMin, best.t)
+                                 : gpu::intersectTriangle(ray.origin, ray.direction, tri.v0, tri.v1,
+                                                          tri.v2, ray.tMin, best.t);
         if (!h.hit) continue;
         if (ray.filter != nullptr && gpu::isAlphaMaskedPrimitive(tri) &&
             !ray.filter->accepts(i, ray, h))

@@ -48,8 +48,8 @@ public:
         }
         const Float4 enter = max(max(nearX, nearY), max(nearZ, splat(tMin)));
         const Float4 exit = min(min(farX, farY), min(farZ, splat(tMax))) * 1.0000004f;
-        return {{enter[0] <= exit[0] ? enter[0] : VKPT_FAR,
-                 enter[1] <= exit[1] ? enter[1] : VKPT_FAR}};
+        return {
+            {enter[0] <= exit[0] ? enter[0] : VKPT_FAR, enter[1] <= exit[1] ? enter[1] : VKPT_FAR}};
     }
 
 private:

@@ -43,12 +43,18 @@ public:
             ::operator delete(p, alignOf());
     }
 
-    template <typename U> bool operator==(const HugePageAllocator<U>&) const { return true; }
+    template <typename U> bool operator==(const HugePageAllocator<U>&) const {
+        return true;
+    }
 
 private:
     // Below a few huge pages the TLB is no concern and rounding up would waste memory.
-    static bool useHugePages(std::size_t bytes) { return bytes >= 4 * kHugePageBytes; }
-    static std::align_val_t alignOf() { return std::align_val_t(alignof(T)); }
+    static bool useHugePages(std::size_t bytes) {
+        return bytes >= 4 * kHugePageBytes;
+    }
+    static std::align_val_t alignOf() {
+        return std::align_val_t(alignof(T));
+    }
 };
 
 } // namespace vkpt

@@ -164,8 +164,17 @@ RenderOutput renderReference(const PreparedScene& scene, const gpu::Camera& came
         makeProgressBar("vkpt-ref", std::uint64_t(camera.width) * camera.height, settings.quiet);
     TileGrid tiles{(camera.width + kTileSize - 1) / kTileSize,
                    (camera.height + kTileSize - 1) / kTileSize};
-    RenderJob job{scene,     camera, settings, intersectors, output, *progress,
-                  adaptiveDarkFloor(settings.exposure), tiles, {}, {}, stats};
+    RenderJob job{scene,
+                  camera,
+                  settings,
+                  intersectors,
+                  output,
+                  *progress,
+                  adaptiveDarkFloor(settings.exposure),
+                  tiles,
+                  {},
+                  {},
+                  stats};
     std::vector<std::thread> workers;
     std::uint32_t count = std::min(threadCount(settings), tiles.count());
     for (std::uint32_t i = 0; i < count; ++i) workers.emplace_back(renderWorker, std::ref(job));

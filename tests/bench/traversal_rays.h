@@ -14,8 +14,8 @@ namespace vkpt::bench {
 
 struct RaySet {
     std::string name;
-    bool anyHit = false;          // shadow rays: is anything in (tMin, tMax)?
-    std::vector<RayQuery> rays;   // tMin 0; tMax VKPT_FAR for closest hits, finite for shadow rays
+    bool anyHit = false;        // shadow rays: is anything in (tMin, tMax)?
+    std::vector<RayQuery> rays; // tMin 0; tMax VKPT_FAR for closest hits, finite for shadow rays
 };
 
 // Renders one sample per pixel of `camera` (settings: depth, seed, light samples) with the

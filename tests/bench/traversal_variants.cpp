@@ -49,17 +49,20 @@ TraversalCounters traceInParallel(const RaySet& set, std::vector<TraceOutcome>& 
         total.triangleTests += counters.triangleTests;
     };
     std::vector<std::thread> pool;
-    for (std::uint32_t t = 0; t < threads; ++t) pool.emplace_back(worker);
-    for (std::thread& thread : pool) thread.join();
+    for (std::uint32_t t = 0; t < threads; ++t)
+        pool.emplace_back(worker);
+    for (std::thread& thread : pool)
+        thread.join();
     return total;
 }
 
-TraceOutcome outcomeOf(const ClosestHit& hit) { return {hit.t, hit.hit}; }
+TraceOutcome outcomeOf(const ClosestHit& hit) {
+    return {hit.t, hit.hit};
+}
 
 // A CPU walk of vkpt's own (closest and any-hit function pair over its layout), with the
 // reference's alpha test where the scene has cut-outs.
-template <typename Closest, typename Any>
-class CpuWalkVariant final : public TraversalVariant {
+template <typename Closest, typename Any> class CpuWalkVariant final : public TraversalVariant {
 public:
     CpuWalkVariant(VariantInfo info, const PreparedScene& scene, std::uint32_t threads,
                    Closest closest, Any any)
@@ -88,8 +91,8 @@ private:
 template <typename Closest, typename Any>
 std::unique_ptr<TraversalVariant> makeCpuWalk(VariantInfo info, const PreparedScene& scene,
                                               std::uint32_t threads, Closest closest, Any any) {
-    return std::make_unique<CpuWalkVariant<Closest, Any>>(std::move(info), scene, threads,
-                                                          closest, any);
+    return std::make_unique<CpuWalkVariant<Closest, Any>>(std::move(info), scene, threads, closest,
+                                                          any);
 }
 
 // The walks share the tree laid out for them, which the variant's lambdas own.
@@ -107,10 +110,8 @@ std::unique_ptr<TraversalVariant> stackWalk(const PreparedScene& scene, std::uin
         });
 }
 
-std::unique_ptr<TraversalVariant> stacklessWalk(const PreparedScene& scene,
-                                                std::uint32_t threads) {
-    VariantInfo info{"device walk on the CPU (skip links), " + std::to_string(threads) +
-                         " threads",
+std::unique_ptr<TraversalVariant> stacklessWalk(const PreparedScene& scene, std::uint32_t threads) {
+    VariantInfo info{"device walk on the CPU (skip links), " + std::to_string(threads) + " threads",
                      kSkipLinkLayout};
     return makeCpuWalk(
         std::move(info), scene, threads,
@@ -134,12 +135,14 @@ public:
     TraceWork trace(const RaySet& set, std::vector<TraceOutcome>& outcomes) override {
         std::vector<DeviceRay> rays;
         rays.reserve(set.rays.size());
-        for (const RayQuery& r : set.rays) rays.push_back({r.origin, r.direction, r.tMax});
+        for (const RayQuery& r : set.rays)
+            rays.push_back({r.origin, r.direction, r.tMax});
         std::uint64_t nodesBefore = queries_.nodesVisited();
         outcomes.assign(set.rays.size(), {});
         if (set.anyHit) {
             std::vector<bool> blocked = queries_.occluded(rays);
-            for (std::size_t i = 0; i < rays.size(); ++i) outcomes[i].hit = blocked[i];
+            for (std::size_t i = 0; i < rays.size(); ++i)
+                outcomes[i].hit = blocked[i];
         } else {
             std::vector<gpu::HitRecord> hits = queries_.closest(rays);
             for (std::size_t i = 0; i < rays.size(); ++i)
@@ -171,7 +174,9 @@ public:
     EmbreeVariant(const PreparedScene& scene, std::uint32_t threads)
         : TraversalVariant({"Embree " + EmbreeIntersectors::version() + " (BVH high), " +
                                 std::to_string(threads) + " threads",
-                            {}, true, false}),
+                            {},
+                            true,
+                            false}),
           embree_(scene, threads), threads_(threads) {}
 
     TraceWork trace(const RaySet& set, std::vector<TraceOutcome>& outcomes) override {
@@ -193,8 +198,8 @@ private:
 
 } // namespace
 
-std::vector<std::unique_ptr<TraversalVariant>> makeTraversalVariants(const PreparedScene& scene,
-                                                                     const VariantOptions& options) {
+std::vector<std::unique_ptr<TraversalVariant>>
+makeTraversalVariants(const PreparedScene& scene, const VariantOptions& options) {
     std::vector<std::unique_ptr<TraversalVariant>> variants;
 #ifdef VKPT_HAVE_EMBREE
     auto embree = std::make_unique<EmbreeVariant>(scene, options.threads);

@@ -19,8 +19,9 @@ int writeScene(int argc, char** argv) {
     std::uint32_t triangles = 1000000;
     bool help = false;
     vkpt::CommandLine commandLine(kProgram);
-    commandLine.add({"triangles", {'n'}, "N", "about N triangles (default 1000000)",
-                     [&](auto v) { triangles = vkpt::parseUnsigned("triangles", v[0], 8); }});
+    commandLine.add({"triangles", {'n'}, "N", "about N triangles (default 1000000)", [&](auto v) {
+                         triangles = vkpt::parseUnsigned("triangles", v[0], 8);
+                     }});
     commandLine.add({"help", {'h'}, "", "show this help", [&](auto) { help = true; }});
     std::vector<std::string> positional =
         commandLine.parse(std::vector<std::string>(argv + 1, argv + argc));

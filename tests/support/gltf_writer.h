@@ -41,8 +41,8 @@ public:
         m.pbrMetallicRoughness.metallicFactor = 0.0;
         // The core emissiveFactor stays in [0, 1]; brighter emitters carry the rest in
         // KHR_materials_emissive_strength, as the specification asks.
-        const double strength = std::max({1.0, double(emission.x), double(emission.y),
-                                          double(emission.z)});
+        const double strength =
+            std::max({1.0, double(emission.x), double(emission.y), double(emission.z)});
         m.emissiveFactor = {emission.x / strength, emission.y / strength, emission.z / strength};
         if (strength > 1.0) {
             tinygltf::Value::Object emissive;

@@ -59,8 +59,9 @@ void addLight(RoomScene& room, std::uint32_t material) {
 } // namespace
 
 std::size_t RoomScene::triangleCount() const {
-    return std::accumulate(meshes.begin(), meshes.end(), std::size_t(0),
-                           [](std::size_t n, const RoomMesh& m) { return n + m.positions.size() / 3; });
+    return std::accumulate(
+        meshes.begin(), meshes.end(), std::size_t(0),
+        [](std::size_t n, const RoomMesh& m) { return n + m.positions.size() / 3; });
 }
 
 RoomScene makeRoomScene(std::uint32_t triangleCount) {
@@ -105,7 +106,8 @@ Scene toScene(const RoomScene& room) {
 
 void writeRoomSceneGltf(const RoomScene& room, const std::string& path) {
     GltfWriter writer;
-    for (const RoomMaterial& m : room.materials) writer.addMaterial(m.albedo, m.emission);
+    for (const RoomMaterial& m : room.materials)
+        writer.addMaterial(m.albedo, m.emission);
     for (const RoomMesh& mesh : room.meshes) {
         MeshData data;
         data.positions = mesh.positions;

@@ -90,7 +90,8 @@ TEST(StackBvhLayout, IsTheTreeWithEachPairReachedOnce) {
         EXPECT_EQ(b.bvh.rootBounds.max, b.tree.nodes[0].bounds.max);
         LayoutChecker checker(b);
         checker.check(0, b.bvh.root);
-        for (int v : checker.visits()) EXPECT_EQ(v, 1);
+        for (int v : checker.visits())
+            EXPECT_EQ(v, 1);
     }
 }
 
@@ -105,7 +106,8 @@ TEST(StackBvhLayout, BlocksPartitionThePairsIntoThreeLevelRuns) {
             pending.pop_back();
             if (c.isLeaf()) continue;
             if (c.blockPairs() > 0) blocks.push_back({c.first, c.blockPairs()});
-            for (const StackBvhChild& next : b.bvh.pairs[c.first].child) pending.push_back(next);
+            for (const StackBvhChild& next : b.bvh.pairs[c.first].child)
+                pending.push_back(next);
         }
         std::sort(blocks.begin(), blocks.end());
         std::uint32_t expected = 0;

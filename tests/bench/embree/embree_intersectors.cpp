@@ -50,7 +50,8 @@ void alphaMaskFilterFunction(const RTCFilterFunctionNArguments* args) {
 
 std::size_t countSpheres(const PreparedScene& scene) {
     std::size_t spheres = 0;
-    for (const gpu::Triangle& t : scene.triangles) spheres += gpu::isSpherePrimitive(t) ? 1 : 0;
+    for (const gpu::Triangle& t : scene.triangles)
+        spheres += gpu::isSpherePrimitive(t) ? 1 : 0;
     return spheres;
 }
 
@@ -71,14 +72,16 @@ struct EmbreeIntersectors::State {
     }
 
     void check(const char* what) const {
-        if (!firstError.empty()) throw std::runtime_error(std::string("Embree: ") + what + ": " + firstError);
+        if (!firstError.empty())
+            throw std::runtime_error(std::string("Embree: ") + what + ": " + firstError);
     }
 
     void createDevice(std::uint32_t threads) {
         std::string config = threads > 0 ? "threads=" + std::to_string(threads) : "";
         device = rtcNewDevice(config.c_str());
-        if (!device) throw std::runtime_error("Embree: cannot create a device (error " +
-                                              std::to_string(int(rtcGetDeviceError(nullptr))) + ")");
+        if (!device)
+            throw std::runtime_error("Embree: cannot create a device (error " +
+                                     std::to_string(int(rtcGetDeviceError(nullptr))) + ")");
         rtcSetDeviceErrorFunction(device, recordError, &firstError);
     }
 
@@ -96,7 +99,8 @@ struct EmbreeIntersectors::State {
             vertices[3 * i] = t.v0;
             vertices[3 * i + 1] = t.v1;
             vertices[3 * i + 2] = t.v2;
-            for (std::uint32_t k = 0; k < 3; ++k) indices[3 * i + k] = std::uint32_t(3 * i + k);
+            for (std::uint32_t k = 0; k < 3; ++k)
+                indices[3 * i + k] = std::uint32_t(3 * i + k);
         }
         rtcSetGeometryBuildQuality(g, RTC_BUILD_QUALITY_HIGH);
         geometries.push_back(std::move(info)); // reserved: the address below stays valid
@@ -120,8 +124,8 @@ struct EmbreeIntersectors::State {
         GeometryInfo opaque, masked;
         masked.alphaMask = &alphaMask;
         for (std::uint32_t i = 0; i < prepared.triangles.size(); ++i) {
-            bool cutOut = prepared.features.alphaMask &&
-                          gpu::isAlphaMaskedPrimitive(prepared.triangles[i]);
+            bool cutOut =
+                prepared.features.alphaMask && gpu::isAlphaMaskedPrimitive(prepared.triangles[i]);
             (cutOut ? masked : opaque).primitives.push_back(i);
         }
         geometries.reserve(2); // Embree keeps pointers to the entries
@@ -135,8 +139,9 @@ struct EmbreeIntersectors::State {
 EmbreeIntersectors::EmbreeIntersectors(const PreparedScene& scene, std::uint32_t threads)
     : state_(std::make_unique<State>(scene)) {
     if (std::size_t spheres = countSpheres(scene))
-        throw InputError(std::to_string(spheres) +
-                         " spheres (KHR_implicit_shapes): the Embree baseline traces triangles only");
+        throw InputError(
+            std::to_string(spheres) +
+            " spheres (KHR_implicit_shapes): the Embree baseline traces triangles only");
     state_->createDevice(threads);
     auto start = std::chrono::steady_clock::now();
     state_->build(scene);
@@ -149,9 +154,18 @@ ClosestHit EmbreeIntersectors::closestHit(const RayQuery& query) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRayHit r{};
-    r.ray = {query.origin.x, query.origin.y, query.origin.z, query.tMin,
-             query.direction.x, query.direction.y, query.direction.z, 0.0f,
-             query.tMax, ~0u, 0u, 0u};
+    r.ray = {query.origin.x,
+             query.origin.y,
+             query.origin.z,
+             query.tMin,
+             query.direction.x,
+             query.direction.y,
+             query.direction.z,
+             0.0f,
+             query.tMax,
+             ~0u,
+             0u,
+             0u};
     r.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     r.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(state_->scene, &context, &r);
@@ -163,9 +177,18 @@ ClosestHit EmbreeIntersectors::closestHit(const RayQuery& query) const {
 bool EmbreeIntersectors::anyHit(const RayQuery& query) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    RTCRay r{query.origin.x, query.origin.y, query.origin.z, query.tMin,
-             query.direction.x, query.direction.y, query.direction.z, 0.0f,
-             query.tMax, ~0u, 0u, 0u};
+    RTCRay r{query.origin.x,
+             query.origin.y,
+             query.origin.z,
+             query.tMin,
+             query.direction.x,
+             query.direction.y,
+             query.direction.z,
+             0.0f,
+             query.tMax,
+             ~0u,
+             0u,
+             0u};
     rtcOccluded1(state_->scene, &context, &r);
     return r.tfar < 0.0f; // Embree sets tfar to −∞ when something is found
 }
@@ -193,6 +216,8 @@ std::unique_ptr<SceneIntersector> EmbreeIntersectors::makeIntersector() const {
     return std::make_unique<EmbreeIntersector>(*this);
 }
 
-std::string EmbreeIntersectors::version() { return RTC_VERSION_STRING; }
+std::string EmbreeIntersectors::version() {
+    return RTC_VERSION_STRING;
+}
 
 } // namespace vkpt::bench
