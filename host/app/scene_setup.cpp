@@ -35,7 +35,7 @@ SceneSetup setUpScene(const RenderSettings& settings, const std::string& program
     float aspect = float(settings.width) / float(settings.height);
     SceneCamera camera = selectCamera(scene, settings.cameraIndex, aspect);
     setup.camera = makeGpuCamera(camera, settings.width, settings.height);
-    setup.prepared = prepareScene(scene, {{}, camera.forward, settings.general});
+    setup.prepared = prepareScene(scene, {{}, settings.general});
     const BvhStats& bvh = setup.prepared.bvhStats;
     std::fprintf(stderr,
                  "%s: %s: %zu triangles, %zu spheres, %zu emitters; BVH %u nodes, depth %u, "

@@ -293,7 +293,7 @@ std::uint32_t SubtreeBuilder::medianSplit(Range range, const Aabb& centroids) {
 void checkOptions(const BvhBuildOptions& options, std::size_t primitiveCount) {
     VKPT_ASSERT(options.binCount >= 2, "binned SAH needs at least two bins");
     VKPT_ASSERT(options.maxLeafSize >= 1 && options.maxLeafSize <= BVH_MAX_LEAF_TRIANGLES,
-                "a leaf holds 1 to 15 triangles (the packed leaf word)");
+                "a leaf holds 1 to 15 triangles (4 bits of a wide node's leafCounts)");
     if (primitiveCount >= BVH_MAX_TRIANGLES)
         throw InputError("scene has " + std::to_string(primitiveCount) +
                          " triangles; the BVH holds at most " +

@@ -90,7 +90,7 @@ struct BvhStats {
 
 // Builds over the given primitive bounds; an empty input gives a tree with one empty leaf.
 // Nodes come in depth-first order (leftChild == index + 1). Throws InputError for more than
-// BVH_MAX_TRIANGLES - 1 primitives (the packed leaf word's limit).
+// BVH_MAX_TRIANGLES - 1 primitives (the device walk's limit, host_device.h).
 BvhTree buildBvh(std::span<const Aabb> primitiveBounds, const BvhBuildOptions& options = {});
 
 // Triangle bounds for buildBvh: positions holds three vertices per triangle.

@@ -1,12 +1,11 @@
-// bvh_traverse.cpp — CPU ray queries: the reference's ordered stack walk of the tree, the
-// GPU's stackless skip-link walk of the flattened nodes, and brute force for the tests.
+// bvh_traverse.cpp — CPU ray queries: the reference's ordered stack walk of the tree, and brute
+// force for the tests.
 #include "bvh/bvh_traverse.h"
 
 #include <array>
 #include <utility>
 
 #include "bvh/pair_box_test.h"
-#include "bvh/ray_box_test.h"
 #include "bvh/ray_triangle_test.h"
 #include "common/errors.h"
 #include "shared/intersect.h"
@@ -16,12 +15,12 @@ namespace vkpt {
 
 namespace {
 
-// What every walk carries: the ray with its per-ray box and triangle test data, the best hit
+// What every walk carries: the ray with its inverse direction and triangle test data, the best hit
 // so far (whose t is the walk's current tMax) and its work, counted in locals and added to the
 // caller's counters once, at the end.
 struct Walk {
     const RayQuery& ray;
-    RayBoxTest boxTest;
+    glm::vec3 invDirection;
     RayTriangleTest triangleTest;
     ClosestHit best;
     std::uint64_t boxTests = 0;
@@ -29,7 +28,8 @@ struct Walk {
     TraversalCounters* counters;
 
     Walk(const RayQuery& r, TraversalCounters* c)
-        : ray(r), boxTest(r.origin, r.direction), triangleTest(r.origin, r.direction), counters(c) {
+        : ray(r), invDirection(gpu::safeInverseDirection(r.direction)),
+          triangleTest(r.origin, r.direction), counters(c) {
         best.t = r.tMax;
     }
     ~Walk() {
@@ -43,19 +43,23 @@ struct Walk {
     // Box entry distance, or VKPT_FAR when the box is missed or lies beyond the best hit.
     float enterBox(const glm::vec3& boxMin, const glm::vec3& boxMax) {
         ++boxTests;
-        return boxTest.enter(boxMin, boxMax, ray.tMin, best.t);
+        return gpu::intersectBox(ray.origin, invDirection, boxMin, boxMax, ray.tMin, best.t);
     }
 
-    // Tests one primitive against (tMin, best t); a hit becomes the best unless the primitive
-    // is alpha-masked and the filter rejects it.
+    // Tests one primitive against (tMin, best t], before the first hit (tMin, tMax); a hit
+    // becomes the best if it precedes it (intersect.h, crossingPrecedes) and unless the
+    // primitive is alpha-masked and the filter rejects it.
     bool testTriangle(std::span<const gpu::Triangle> triangles, std::uint32_t index) {
         ++primitiveTests;
         const gpu::Triangle& tri = triangles[index];
+        const float tMax = best.hit ? gpu::nextFloatUp(best.t) : best.t;
         gpu::TriangleHit h = gpu::isSpherePrimitive(tri)
                                  ? gpu::intersectSphere(ray.origin, ray.direction, tri.v0, tri.v1.x,
-                                                        ray.tMin, best.t)
-                                 : triangleTest.intersect(tri.v0, tri.v1, tri.v2, ray.tMin, best.t);
+                                                        ray.tMin, tMax)
+                                 : triangleTest.intersect(tri.v0, tri.v1, tri.v2, ray.tMin, tMax);
         if (!h.hit) return false;
+        if (!gpu::crossingPrecedes(h.t, index, best.t, best.hit ? best.triangle : NO_PRIMITIVE))
+            return false;
         if (ray.filter != nullptr && gpu::isAlphaMaskedPrimitive(tri) &&
             !ray.filter->accepts(index, ray, h))
             return false;
@@ -79,6 +83,16 @@ ClosestHit finish(const Walk& walk) {
     return walk.best.hit ? walk.best : ClosestHit{};
 }
 
+// intersectBox widens a box's exit by this factor (Ize 2013); a box entered up to the best t
+// times it may hold a crossing at that t.
+constexpr float kBoxExitMargin = 1.0000004f;
+
+// Whether a box entered at `entry` may still hold the best crossing: it may tie with the best
+// t and precede it by primitive index (crossingPrecedes).
+bool mayHoldBest(float entry, const Walk& walk) {
+    return entry != VKPT_FAR && !(entry > walk.best.t * kBoxExitMargin);
+}
+
 // A far child waiting on the stack, with its box entry distance when it was pushed.
 struct StackEntry {
     StackBvhChild node;
@@ -95,12 +109,12 @@ struct NodeStack {
         VKPT_ASSERT(size < entries.size(), "tree deeper than kBvhMaxDepth");
         entries[size++] = entry;
     }
-    // The next entry whose box still begins before the best hit; false when none is left
-    // (an entry whose box now lies behind a nearer hit found since the push is dropped).
-    bool popNearerThan(float t, StackEntry& next) {
+    // The next entry whose box may still hold the best crossing; false when none is left (an
+    // entry whose box now lies behind a nearer hit found since the push is dropped).
+    bool popUseful(const Walk& walk, StackEntry& next) {
         while (size > 0) {
             next = entries[--size];
-            if (next.entry < t) return true;
+            if (mayHoldBest(next.entry, walk)) return true;
         }
         return false;
     }
@@ -125,12 +139,13 @@ void prefetchLeaf(const StackBvh& bvh, StackBvhChild leaf) {
 // The ordered walk; with stopAtFirst it becomes the any-hit query. At an interior node both
 // children's boxes are tested (one cache line, one vector test); the walk goes on into the
 // nearer and pushes the farther with its entry distance, which is checked against the best hit
-// again when it is popped. The nearer is the one with the smaller entry, the left one on a tie.
+// again when it is popped (mayHoldBest). The nearer is the one with the smaller entry, the left
+// one on a tie.
 // This is pbrt-v4's front-to-back BVHAggregate::Intersect, ordered by entry distance where pbrt
 // uses the ray's direction sign on the split axis.
 bool walkStack(const StackBvh& bvh, Walk& walk, bool stopAtFirst) {
     if (bvh.empty) return false;
-    if (walk.enterBox(bvh.rootBounds.min, bvh.rootBounds.max) >= walk.best.t) return false;
+    if (!mayHoldBest(walk.enterBox(bvh.rootBounds.min, bvh.rootBounds.max), walk)) return false;
     const std::span<const gpu::Triangle> triangles(bvh.primitives);
     const PairBoxTest pairTest(walk.ray.origin, walk.ray.direction);
     NodeStack stack;
@@ -153,39 +168,15 @@ bool walkStack(const StackBvh& bvh, Walk& walk, bool stopAtFirst) {
                 if (far.node.isLeaf()) prefetchLeaf(bvh, far.node);
                 stack.push(far);
             }
-            if (near.entry < walk.best.t) {
+            if (mayHoldBest(near.entry, walk)) {
                 node = near.node;
                 continue;
             }
         }
         StackEntry next;
-        if (!stack.popNearerThan(walk.best.t, next)) return any;
+        if (!stack.popUseful(walk, next)) return any;
         node = next.node;
     }
-}
-
-// The GPU kernels' walk: no stack, children in stored order; a missed
-// box or a finished leaf continues at missIndex, an entered interior node at index + 1.
-bool walkStackless(std::span<const gpu::BvhNode> nodes, std::span<const gpu::Triangle> triangles,
-                   Walk& walk, bool stopAtFirst) {
-    if (nodes.empty()) return false;
-    bool any = false;
-    std::uint32_t index = 0;
-    while (index != BVH_END) {
-        const gpu::BvhNode& n = nodes[index];
-        if (walk.enterBox(n.boundsMin, n.boundsMax) == VKPT_FAR) {
-            index = n.missIndex;
-        } else if (n.leafTriangles != 0) {
-            any = walk.testTriangles(triangles, gpu::leafFirstTriangle(n.leafTriangles),
-                                     gpu::leafTriangleCount(n.leafTriangles), stopAtFirst) ||
-                  any;
-            if (any && stopAtFirst) return true;
-            index = n.missIndex;
-        } else {
-            index = index + 1;
-        }
-    }
-    return any;
 }
 
 } // namespace
@@ -201,22 +192,10 @@ bool anyHitStack(const StackBvh& bvh, const RayQuery& ray, TraversalCounters* co
     return walkStack(bvh, walk, true);
 }
 
-ClosestHit closestHitStackless(std::span<const gpu::BvhNode> nodes,
-                               std::span<const gpu::Triangle> triangles, const RayQuery& ray,
-                               TraversalCounters* counters) {
-    Walk walk(ray, counters);
-    walkStackless(nodes, triangles, walk, false);
-    return finish(walk);
-}
-
-bool anyHitStackless(std::span<const gpu::BvhNode> nodes, std::span<const gpu::Triangle> triangles,
-                     const RayQuery& ray, TraversalCounters* counters) {
-    Walk walk(ray, counters);
-    return walkStackless(nodes, triangles, walk, true);
-}
-
-// With intersect.h's own tests rather than the walks' per-ray transcriptions (ray_*_test.h),
-// so that comparing a walk with brute force also checks those against the shared functions.
+// With intersect.h's own tests rather than the walk's per-ray versions (pair_box_test.h,
+// ray_triangle_test.h), so that comparing the walk with brute force also checks those against
+// the shared functions. In index order, with t exclusive, the first crossing found at a t is
+// the one of lowest index, as crossingPrecedes asks.
 ClosestHit closestHitBruteForce(std::span<const gpu::Triangle> triangles, const RayQuery& ray) {
     ClosestHit best;
     best.t = ray.tMax;

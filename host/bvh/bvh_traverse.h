@@ -1,6 +1,6 @@
 // bvh_traverse.h — closest-hit and any-hit queries on the CPU: the reference's ordered stack
-// walk of the tree, the stackless walk of the flattened nodes (the GPU's algorithm, for
-// tests), and brute force.
+// walk of the binary tree, and brute force (the device's walk of the wide nodes on the CPU is
+// in wide_traverse.h).
 #pragma once
 
 #include <cstdint>
@@ -55,12 +55,6 @@ ClosestHit closestHitStack(const StackBvh& bvh, const RayQuery& ray,
 bool anyHitStack(const StackBvh& bvh, const RayQuery& ray, TraversalCounters* counters = nullptr);
 
 // Below, triangles are in BVH order (gpu::Triangle built from primitiveOrder).
-
-ClosestHit closestHitStackless(std::span<const gpu::BvhNode> nodes,
-                               std::span<const gpu::Triangle> triangles, const RayQuery& ray,
-                               TraversalCounters* counters = nullptr);
-bool anyHitStackless(std::span<const gpu::BvhNode> nodes, std::span<const gpu::Triangle> triangles,
-                     const RayQuery& ray, TraversalCounters* counters = nullptr);
 
 ClosestHit closestHitBruteForce(std::span<const gpu::Triangle> triangles, const RayQuery& ray);
 

@@ -5,6 +5,7 @@
 #include "gpu/context.h"
 #include "gpu/vk_check.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace vkpt {
@@ -31,6 +32,7 @@ Buffer::Buffer(GpuContext& context, BufferDesc desc) : context_(&context), desc_
     VKPT_VK_CHECK(vkCreateBuffer(context.device(), &info, nullptr, &buffer_));
     try {
         allocateAndBind();
+        createTexelView();
         context.setDebugName(buffer_, desc_.name);
         context.setDebugName(memory_, desc_.name + ".memory");
     } catch (...) {
@@ -47,6 +49,16 @@ void Buffer::checkLimits() const {
         desc_.size > limits.maxStorageBufferRange) {
         throwTooLarge(desc_.name, desc_.size, "maxStorageBufferRange",
                       limits.maxStorageBufferRange);
+    }
+    if ((desc_.usage & VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT) != 0 &&
+        desc_.size > limits.maxUniformBufferRange) {
+        throwTooLarge(desc_.name, desc_.size, "maxUniformBufferRange",
+                      limits.maxUniformBufferRange);
+    }
+    if ((desc_.usage & VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT) != 0 &&
+        desc_.size / kTexelBytes > limits.maxTexelBufferElements) {
+        throwTooLarge(desc_.name, desc_.size, "maxTexelBufferElements",
+                      VkDeviceSize(limits.maxTexelBufferElements) * kTexelBytes);
     }
     if (desc_.size > limits.maxMemoryAllocationSize) {
         throwTooLarge(desc_.name, desc_.size, "maxMemoryAllocationSize",
@@ -84,9 +96,27 @@ void Buffer::allocateAndBind() {
     }
 }
 
+// A view of the whole buffer in whole texels; a partial texel at the end is not visible.
+void Buffer::createTexelView() {
+    if ((desc_.usage & VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT) == 0) return;
+    VKPT_ASSERT(desc_.texelFormat == VK_FORMAT_R32G32B32A32_UINT ||
+                    desc_.texelFormat == VK_FORMAT_R32G32B32A32_SFLOAT,
+                "buffer '" + desc_.name + "': texel format not 16 bytes");
+    VkBufferViewCreateInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO;
+    info.buffer = buffer_;
+    info.format = desc_.texelFormat;
+    info.offset = 0;
+    info.range = std::max<VkDeviceSize>(desc_.size / kTexelBytes, 1) * kTexelBytes;
+    VKPT_VK_CHECK(vkCreateBufferView(context_->device(), &info, nullptr, &texelView_));
+    context_->setDebugName(texelView_, desc_.name + ".texels");
+}
+
 void Buffer::release() noexcept {
     if (context_ == nullptr) return;
     const VkDevice device = context_->device();
+    if (texelView_ != VK_NULL_HANDLE) vkDestroyBufferView(device, texelView_, nullptr);
+    texelView_ = VK_NULL_HANDLE;
     if (buffer_ != VK_NULL_HANDLE) vkDestroyBuffer(device, buffer_, nullptr);
     if (memory_ != VK_NULL_HANDLE) {
         // vkFreeMemory unmaps implicitly.
@@ -108,7 +138,8 @@ Buffer::Buffer(Buffer&& other) noexcept
       buffer_(std::exchange(other.buffer_, VK_NULL_HANDLE)),
       memory_(std::exchange(other.memory_, VK_NULL_HANDLE)),
       allocationSize_(std::exchange(other.allocationSize_, 0)),
-      mapped_(std::exchange(other.mapped_, nullptr)) {}
+      mapped_(std::exchange(other.mapped_, nullptr)),
+      texelView_(std::exchange(other.texelView_, VK_NULL_HANDLE)) {}
 
 Buffer& Buffer::operator=(Buffer&& other) noexcept {
     if (this != &other) {
@@ -119,6 +150,7 @@ Buffer& Buffer::operator=(Buffer&& other) noexcept {
         memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
         allocationSize_ = std::exchange(other.allocationSize_, 0);
         mapped_ = std::exchange(other.mapped_, nullptr);
+        texelView_ = std::exchange(other.texelView_, VK_NULL_HANDLE);
     }
     return *this;
 }

@@ -1,6 +1,7 @@
 // buffer.h — Buffer: one VkBuffer with its own memory, named like the data it holds
 // ("bvhNodes"), counted in the context's memory statistics, and refused with a clear message
-// when the device cannot hold it.
+// when the device cannot hold it. A buffer with VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT also
+// owns the view through which kernels fetch it as texels ("<name>.texels").
 #pragma once
 
 #include "gpu/memory.h"
@@ -19,13 +20,20 @@ struct BufferDesc {
     VkDeviceSize size = 0; // bytes, > 0 (Vulkan has no empty buffers)
     VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     MemoryLocation location = MemoryLocation::DeviceLocal;
+    // With VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT: the view's format, one of the 16-byte
+    // four-channel 32-bit formats (kernels read it as a `usamplerBuffer` or `samplerBuffer`).
+    VkFormat texelFormat = VK_FORMAT_R32G32B32A32_UINT;
 };
+
+// Bytes per texel of the texel views buffers make.
+inline constexpr VkDeviceSize kTexelBytes = 16;
 
 class Buffer {
 public:
     // Throws VulkanError naming the buffer, its size and the limit when a storage buffer is
-    // larger than maxStorageBufferRange or the memory larger than maxMemoryAllocationSize
-    // (splitting big buffers is the caller's decision, not this layer's).
+    // larger than maxStorageBufferRange, a uniform buffer than maxUniformBufferRange, a texel
+    // buffer holds more than maxTexelBufferElements texels or the memory is larger than
+    // maxMemoryAllocationSize (splitting big buffers is the caller's decision, not this layer's).
     Buffer(GpuContext& context, BufferDesc desc);
     ~Buffer();
     Buffer(Buffer&& other) noexcept;
@@ -33,6 +41,7 @@ public:
     Buffer(const Buffer&) = delete;
     Buffer& operator=(const Buffer&) = delete;
 
+    GpuContext& context() const { return *context_; }
     VkBuffer handle() const { return buffer_; }
     VkDeviceSize size() const { return desc_.size; }
     const std::string& name() const { return desc_.name; }
@@ -42,10 +51,13 @@ public:
     VkDeviceSize allocationSize() const { return allocationSize_; }
     // Upload and Readback buffers stay mapped for their lifetime; null for DeviceLocal.
     std::byte* mapped() const { return mapped_; }
+    // The texel view of a uniform texel buffer, else VK_NULL_HANDLE.
+    VkBufferView texelView() const { return texelView_; }
 
 private:
     void checkLimits() const;
     void allocateAndBind();
+    void createTexelView();
     void release() noexcept;
 
     GpuContext* context_ = nullptr;
@@ -54,6 +66,7 @@ private:
     VkDeviceMemory memory_ = VK_NULL_HANDLE;
     VkDeviceSize allocationSize_ = 0;
     std::byte* mapped_ = nullptr;
+    VkBufferView texelView_ = VK_NULL_HANDLE;
 };
 
 } // namespace vkpt

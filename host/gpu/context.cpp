@@ -29,6 +29,10 @@ DeviceLimits readLimits(const DeviceInfo& device) {
     result.minStorageBufferOffsetAlignment = limits.minStorageBufferOffsetAlignment;
     result.maxPushConstantsSize = limits.maxPushConstantsSize;
     result.maxPerStageDescriptorStorageBuffers = limits.maxPerStageDescriptorStorageBuffers;
+    result.maxUniformBufferRange = limits.maxUniformBufferRange;
+    result.maxPerStageDescriptorUniformBuffers = limits.maxPerStageDescriptorUniformBuffers;
+    result.maxTexelBufferElements = limits.maxTexelBufferElements;
+    result.maxPerStageDescriptorSampledImages = limits.maxPerStageDescriptorSampledImages;
     result.maxComputeWorkGroupInvocations = limits.maxComputeWorkGroupInvocations;
     std::copy_n(limits.maxComputeWorkGroupCount, 3, result.maxComputeWorkGroupCount.begin());
     std::copy_n(limits.maxComputeWorkGroupSize, 3, result.maxComputeWorkGroupSize.begin());

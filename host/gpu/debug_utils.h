@@ -14,6 +14,9 @@ namespace vkpt {
 constexpr VkObjectType objectTypeOf(VkBuffer) {
     return VK_OBJECT_TYPE_BUFFER;
 }
+constexpr VkObjectType objectTypeOf(VkBufferView) {
+    return VK_OBJECT_TYPE_BUFFER_VIEW;
+}
 constexpr VkObjectType objectTypeOf(VkDeviceMemory) {
     return VK_OBJECT_TYPE_DEVICE_MEMORY;
 }

@@ -1,4 +1,4 @@
-// descriptor_set.cpp — allocation and updates of a kernel's storage-buffer descriptor set.
+// descriptor_set.cpp — allocation and updates of a kernel's descriptor set.
 #include "gpu/descriptor_set.h"
 
 #include "common/errors.h"
@@ -14,25 +14,50 @@ namespace vkpt {
 
 namespace {
 
-VkDescriptorPool createPool(const GpuContext& context, std::uint32_t bufferCount) {
-    const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, std::max(bufferCount, 1u)};
+// One pool size per descriptor kind the kernel uses.
+VkDescriptorPool createPool(const GpuContext& context, const std::vector<KernelBinding>& bindings) {
+    std::vector<VkDescriptorPoolSize> sizes;
+    for (const KernelBinding& binding : bindings) {
+        const VkDescriptorType type = descriptorTypeOf(binding.kind);
+        auto same = std::find_if(sizes.begin(), sizes.end(),
+                                 [type](const VkDescriptorPoolSize& s) { return s.type == type; });
+        if (same == sizes.end()) {
+            sizes.push_back({type, 1});
+        } else {
+            ++same->descriptorCount;
+        }
+    }
+    if (sizes.empty()) sizes.push_back({VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1});
     VkDescriptorPoolCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
     info.maxSets = 1;
-    info.poolSizeCount = 1;
-    info.pPoolSizes = &size;
+    info.poolSizeCount = static_cast<std::uint32_t>(sizes.size());
+    info.pPoolSizes = sizes.data();
     VkDescriptorPool pool = VK_NULL_HANDLE;
     VKPT_VK_CHECK(vkCreateDescriptorPool(context.device(), &info, nullptr, &pool));
     return pool;
+}
+
+// The buffer usage a descriptor kind reads through.
+VkBufferUsageFlags usageFor(DescriptorKind kind) {
+    switch (kind) {
+    case DescriptorKind::StorageBuffer:
+        return VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    case DescriptorKind::UniformBuffer:
+        return VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT;
+    case DescriptorKind::UniformTexelBuffer:
+        return VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
+    }
+    return 0;
 }
 
 } // namespace
 
 DescriptorSet::DescriptorSet(const Kernel& kernel, const std::vector<BufferBinding>& bindings)
     : context_(&kernel.context()), kernelName_(kernel.name()),
-      kernelBindings_(kernel.storageBufferBindings()) {
+      kernelBindings_(kernel.bindings()) {
     checkBindings(bindings);
-    pool_ = createPool(*context_, static_cast<std::uint32_t>(bindings.size()));
+    pool_ = createPool(*context_, kernelBindings_);
     context_->setDebugName(pool_, kernel.name() + ".pool");
     try {
         const VkDescriptorSetLayout layout = kernel.setLayout();
@@ -61,18 +86,30 @@ DescriptorSet::DescriptorSet(DescriptorSet&& other) noexcept
       pool_(std::exchange(other.pool_, VK_NULL_HANDLE)),
       set_(std::exchange(other.set_, VK_NULL_HANDLE)) {}
 
+DescriptorKind DescriptorSet::kindOf(std::uint32_t binding) const {
+    for (const KernelBinding& declared : kernelBindings_)
+        if (declared.binding == binding) return declared.kind;
+    VKPT_ASSERT(false, "kernel '" + kernelName_ + "' has no binding " + std::to_string(binding));
+    return DescriptorKind::StorageBuffer;
+}
+
 void DescriptorSet::checkBindings(const std::vector<BufferBinding>& bindings) const {
-    const std::vector<std::uint32_t>& expected = kernelBindings_;
-    VKPT_ASSERT(bindings.size() == expected.size(),
-                "kernel '" + kernelName_ + "' has " + std::to_string(expected.size()) +
-                    " storage buffers, " + std::to_string(bindings.size()) + " given");
+    VKPT_ASSERT(bindings.size() == kernelBindings_.size(),
+                "kernel '" + kernelName_ + "' has " + std::to_string(kernelBindings_.size()) +
+                    " bindings, " + std::to_string(bindings.size()) + " given");
     for (const BufferBinding& binding : bindings) {
-        VKPT_ASSERT(binding.buffer != nullptr, "kernel '" + kernelName_ + "': null buffer");
-        VKPT_ASSERT(std::count(expected.begin(), expected.end(), binding.binding) == 1,
-                    "kernel '" + kernelName_ + "' has no binding " +
-                        std::to_string(binding.binding));
-        VKPT_ASSERT((binding.buffer->usage() & VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) != 0,
-                    "buffer '" + binding.buffer->name() + "' is not a storage buffer");
+        const auto named = std::count_if(
+            bindings.begin(), bindings.end(),
+            [&binding](const BufferBinding& other) { return other.binding == binding.binding; });
+        VKPT_ASSERT(named == 1, "kernel '" + kernelName_ + "': binding " +
+                                    std::to_string(binding.binding) + " given more than once");
+        const DescriptorKind kind = kindOf(binding.binding);
+        const Buffer* buffer = binding.buffer;
+        VKPT_ASSERT(buffer != nullptr, "kernel '" + kernelName_ + "': binding " +
+                                           std::to_string(binding.binding) + " has no buffer");
+        VKPT_ASSERT((buffer->usage() & usageFor(kind)) != 0,
+                    "buffer '" + buffer->name() + "' lacks the usage of binding " +
+                        std::to_string(binding.binding) + " of kernel '" + kernelName_ + "'");
     }
 }
 
@@ -80,16 +117,24 @@ void DescriptorSet::update(const std::vector<BufferBinding>& bindings) {
     checkBindings(bindings);
     std::vector<VkDescriptorBufferInfo> infos;
     infos.reserve(bindings.size()); // writes point into it
+    std::vector<VkBufferView> views;
+    views.reserve(bindings.size());
     std::vector<VkWriteDescriptorSet> writes;
     for (const BufferBinding& binding : bindings) {
-        infos.push_back({binding.buffer->handle(), 0, VK_WHOLE_SIZE});
+        const DescriptorKind kind = kindOf(binding.binding);
         VkWriteDescriptorSet write{};
         write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
         write.dstSet = set_;
         write.dstBinding = binding.binding;
         write.descriptorCount = 1;
-        write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-        write.pBufferInfo = &infos.back();
+        write.descriptorType = descriptorTypeOf(kind);
+        if (kind == DescriptorKind::UniformTexelBuffer) {
+            views.push_back(binding.buffer->texelView());
+            write.pTexelBufferView = &views.back();
+        } else {
+            infos.push_back({binding.buffer->handle(), 0, VK_WHOLE_SIZE});
+            write.pBufferInfo = &infos.back();
+        }
         writes.push_back(write);
     }
     vkUpdateDescriptorSets(context_->device(), static_cast<std::uint32_t>(writes.size()),

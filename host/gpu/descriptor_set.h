@@ -1,6 +1,6 @@
-// descriptor_set.h — DescriptorSet: which buffer each storage-buffer binding of a kernel reads
-// and writes. One small pool per set: vkpt has a handful of kernels, each with a set or two
-// (e.g. ping-pong ray queues), so pooling across kernels would buy nothing.
+// descriptor_set.h — DescriptorSet: which buffer each binding of a kernel reads and writes.
+// One small pool per set: vkpt has a handful of kernels, each with a set or two (e.g.
+// ping-pong ray queues), so pooling across kernels would buy nothing.
 #pragma once
 
 #include <volk.h>
@@ -9,21 +9,25 @@
 #include <string>
 #include <vector>
 
+#include "gpu/kernel.h"
+
 namespace vkpt {
 
 class Buffer;
 class GpuContext;
-class Kernel;
 
+// A buffer bound whole (offset 0, VK_WHOLE_SIZE), or through its texel view where the
+// kernel's binding is a uniform texel buffer.
 struct BufferBinding {
     std::uint32_t binding = 0;
-    const Buffer* buffer = nullptr; // bound whole (offset 0, VK_WHOLE_SIZE)
+    const Buffer* buffer = nullptr;
 };
 
 class DescriptorSet {
 public:
-    // `bindings` must name each of the kernel's storage-buffer bindings exactly once. The set
-    // copies what it needs from `kernel`; the buffers must outlive every use of the set.
+    // `bindings` must name each of the kernel's bindings exactly once, each with a buffer that
+    // has the usage its kind needs. The set copies what it needs from `kernel`; the buffers
+    // must outlive every use of the set.
     DescriptorSet(const Kernel& kernel, const std::vector<BufferBinding>& bindings);
     ~DescriptorSet();
     DescriptorSet(DescriptorSet&& other) noexcept;
@@ -38,10 +42,11 @@ public:
 
 private:
     void checkBindings(const std::vector<BufferBinding>& bindings) const;
+    DescriptorKind kindOf(std::uint32_t binding) const;
 
     const GpuContext* context_;
-    std::string kernelName_;                    // for messages
-    std::vector<std::uint32_t> kernelBindings_; // what update() must be given
+    std::string kernelName_;                   // for messages
+    std::vector<KernelBinding> kernelBindings_; // what update() must be given
     VkDescriptorPool pool_ = VK_NULL_HANDLE;
     VkDescriptorSet set_ = VK_NULL_HANDLE;
 };

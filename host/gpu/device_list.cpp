@@ -43,11 +43,31 @@ void readDriverProperties(VkPhysicalDevice device, DeviceInfo& info) {
     info.driverInfo = driver.driverInfo;
 }
 
+// The subgroup operations every kernel uses to count and append once per subgroup
+// (shaders/lib/counters.glsl); Vulkan 1.1 guarantees only the basic ones.
+constexpr VkSubgroupFeatureFlags kRequiredSubgroupOperations =
+    VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_BALLOT_BIT |
+    VK_SUBGROUP_FEATURE_ARITHMETIC_BIT;
+
+bool hasComputeSubgroupOperations(VkPhysicalDevice device) {
+    VkPhysicalDeviceSubgroupProperties subgroup{};
+    subgroup.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES;
+    VkPhysicalDeviceProperties2 properties{};
+    properties.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2;
+    properties.pNext = &subgroup;
+    vkGetPhysicalDeviceProperties2(device, &properties);
+    return (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) != 0 &&
+           (subgroup.supportedOperations & kRequiredSubgroupOperations) ==
+               kRequiredSubgroupOperations;
+}
+
 std::string rejectionReason(const DeviceInfo& info) {
     if (info.apiVersion < VK_API_VERSION_1_2) {
         return "Vulkan " + formatVulkanVersion(info.apiVersion) + " < 1.2";
     }
     if (!info.computeQueueFamily) return "no compute queue";
+    if (!hasComputeSubgroupOperations(info.handle))
+        return "no subgroup ballot and arithmetic in compute shaders";
     return {};
 }
 

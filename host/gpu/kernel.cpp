@@ -5,6 +5,7 @@
 #include "gpu/context.h"
 #include "gpu/vk_check.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace vkpt {
@@ -46,6 +47,18 @@ private:
 
 } // namespace
 
+VkDescriptorType descriptorTypeOf(DescriptorKind kind) {
+    switch (kind) {
+    case DescriptorKind::StorageBuffer:
+        return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    case DescriptorKind::UniformBuffer:
+        return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    case DescriptorKind::UniformTexelBuffer:
+        return VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+    }
+    return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+}
+
 Kernel::Kernel(const GpuContext& context, KernelDesc desc)
     : context_(&context), desc_(std::move(desc)) {
     VKPT_ASSERT(!desc_.spirv.empty(), "kernel '" + desc_.name + "' has no SPIR-V");
@@ -70,21 +83,33 @@ void Kernel::checkLimits() const {
                               std::to_string(limits.maxPushConstantsSize),
                           VK_ERROR_FEATURE_NOT_PRESENT);
     }
-    if (desc_.storageBufferBindings.size() > limits.maxPerStageDescriptorStorageBuffers) {
-        throw VulkanError("kernel '" + desc_.name + "' binds " +
-                              std::to_string(desc_.storageBufferBindings.size()) +
-                              " storage buffers; this device's "
-                              "maxPerStageDescriptorStorageBuffers is " +
-                              std::to_string(limits.maxPerStageDescriptorStorageBuffers),
-                          VK_ERROR_FEATURE_NOT_PRESENT);
-    }
+    checkDescriptorCount(DescriptorKind::StorageBuffer, "storage buffers",
+                         "maxPerStageDescriptorStorageBuffers",
+                         limits.maxPerStageDescriptorStorageBuffers);
+    checkDescriptorCount(DescriptorKind::UniformBuffer, "uniform buffers",
+                         "maxPerStageDescriptorUniformBuffers",
+                         limits.maxPerStageDescriptorUniformBuffers);
+    checkDescriptorCount(DescriptorKind::UniformTexelBuffer, "uniform texel buffers",
+                         "maxPerStageDescriptorSampledImages",
+                         limits.maxPerStageDescriptorSampledImages);
+}
+
+void Kernel::checkDescriptorCount(DescriptorKind kind, const char* what, const char* limitName,
+                                  std::uint32_t limit) const {
+    const auto count = static_cast<std::uint32_t>(std::count_if(
+        desc_.bindings.begin(), desc_.bindings.end(),
+        [kind](const KernelBinding& binding) { return binding.kind == kind; }));
+    if (count <= limit) return;
+    throw VulkanError("kernel '" + desc_.name + "' binds " + std::to_string(count) + " " + what +
+                          "; this device's " + limitName + " is " + std::to_string(limit),
+                      VK_ERROR_FEATURE_NOT_PRESENT);
 }
 
 void Kernel::createLayouts() {
     std::vector<VkDescriptorSetLayoutBinding> bindings;
-    for (const std::uint32_t binding : desc_.storageBufferBindings) {
-        bindings.push_back(
-            {binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
+    for (const KernelBinding& binding : desc_.bindings) {
+        bindings.push_back({binding.binding, descriptorTypeOf(binding.kind), 1,
+                            VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
     }
     VkDescriptorSetLayoutCreateInfo setInfo{};
     setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;

@@ -1,6 +1,6 @@
 // kernel.h — Kernel: one compute pipeline made from embedded SPIR-V, with its descriptor set
-// layout (storage buffers in set 0), push-constant range and specialisation constants. The
-// pipeline's debug name is the kernel's name, as are its dispatch labels.
+// layout (buffers in set 0), push-constant range and specialisation constants. The pipeline's
+// debug name is the kernel's name, as are its dispatch labels.
 #pragma once
 
 #include <volk.h>
@@ -28,10 +28,22 @@ inline SpecializationConstant specializeBool(std::uint32_t id, bool value) {
     return {id, value ? VK_TRUE : VK_FALSE};
 }
 
+// How a kernel sees a buffer: GLSL `buffer` blocks (read and write), `uniform` blocks (small,
+// read-only data every invocation reads alike) or `usamplerBuffer`s (read-only arrays fetched
+// at each invocation's own index, see texel_view.h).
+enum class DescriptorKind : std::uint32_t { StorageBuffer, UniformBuffer, UniformTexelBuffer };
+
+struct KernelBinding {
+    std::uint32_t binding = 0; // in set 0
+    DescriptorKind kind = DescriptorKind::StorageBuffer;
+};
+
+VkDescriptorType descriptorTypeOf(DescriptorKind kind);
+
 struct KernelDesc {
-    std::string name;                                 // "trace_closest", the .comp file's stem
-    std::span<const std::uint32_t> spirv;             // from the embedded kernel library
-    std::vector<std::uint32_t> storageBufferBindings; // binding numbers in set 0
+    std::string name;                     // "trace_closest", the .comp file's stem
+    std::span<const std::uint32_t> spirv; // from the embedded kernel library
+    std::vector<KernelBinding> bindings;
     std::uint32_t pushConstantSize = 0;               // bytes, a multiple of 4; 0 for none
     std::vector<SpecializationConstant> specializationConstants;
 };
@@ -39,7 +51,7 @@ struct KernelDesc {
 class Kernel {
 public:
     // Throws VulkanError when the device cannot take the push constants or the number of
-    // storage buffers, or when the driver rejects the SPIR-V.
+    // descriptors of a kind, or when the driver rejects the SPIR-V.
     Kernel(const GpuContext& context, KernelDesc desc);
     ~Kernel();
     Kernel(Kernel&& other) noexcept;
@@ -49,9 +61,7 @@ public:
 
     const GpuContext& context() const { return *context_; }
     const std::string& name() const { return desc_.name; }
-    const std::vector<std::uint32_t>& storageBufferBindings() const {
-        return desc_.storageBufferBindings;
-    }
+    const std::vector<KernelBinding>& bindings() const { return desc_.bindings; }
     std::uint32_t pushConstantSize() const { return desc_.pushConstantSize; }
     VkPipeline pipeline() const { return pipeline_; }
     VkPipelineLayout pipelineLayout() const { return pipelineLayout_; }
@@ -61,6 +71,8 @@ public:
 
 private:
     void checkLimits() const;
+    void checkDescriptorCount(DescriptorKind kind, const char* what, const char* limitName,
+                              std::uint32_t limit) const;
     void createLayouts();
     void createPipeline();
     void destroy() noexcept;

@@ -4,7 +4,7 @@
 
 #include <chrono>
 
-#include "bvh/bvh_flatten.h"
+#include "bvh/bvh_wide.h"
 #include "common/errors.h"
 #include "prepare/emitters.h"
 #include "prepare/environment_map.h"
@@ -63,7 +63,9 @@ PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options) {
     std::chrono::duration<double> buildTime = std::chrono::steady_clock::now() - start;
     prepared.bvhStats = computeBvhStats(prepared.tree, options.bvh);
     prepared.bvhStats.buildSeconds = buildTime.count();
-    prepared.nodes = flattenBvh(prepared.tree, {options.nearFirstDirection});
+    // Renumbers the tree's leaves so that each wide node's primitives are contiguous; the
+    // primitive arrays below follow that order.
+    prepared.nodes = flattenWideBvh(prepared.tree);
 
     GpuPrimitives primitives =
         makeGpuPrimitives(scene, prepared.tree, features.textureCoordinates());

@@ -18,7 +18,7 @@ namespace vkpt {
 struct PreparedScene {
     BvhTree tree;        // for the reference's stack traversal
     BvhStats bvhStats;   // with the build time
-    std::vector<gpu::BvhNode> nodes;
+    std::vector<gpu::WideBvhNode> nodes; // the device's 8-wide nodes (flattenWideBvh)
     std::vector<gpu::Triangle> triangles; // triangles and spheres (PRIMITIVE_SPHERE)
     std::vector<gpu::TriangleNormals> normals;
     std::vector<glm::vec2> uvs; // 3 per primitive; empty unless features.textureCoordinates()
@@ -37,9 +37,6 @@ struct PreparedScene {
 
 struct PrepareOptions {
     BvhBuildOptions bvh;
-    // Flatten so that the skip-link walk meets nearer children first along this direction:
-    // the camera's forward direction makes camera rays walk near-first (docs/bvh.md).
-    std::optional<glm::vec3> nearFirstDirection;
     // --general: every array present and every feature on, as if the scene used everything.
     bool general = false;
 };

@@ -17,15 +17,17 @@ constexpr VkDeviceSize kAbsentDataBytes = 16;
 
 template <typename T>
 std::optional<Buffer> uploadArray(GpuContext& context, std::string name,
-                                  const std::vector<T>& values) {
+                                  const std::vector<T>& values,
+                                  VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {
     if (values.empty()) return std::nullopt;
-    return createBufferWithData(context, std::move(name), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                std::span<const T>(values));
+    return createBufferWithData(context, std::move(name), usage, std::span<const T>(values));
 }
 
 Buffer makeAbsentData(GpuContext& context) {
     Buffer buffer(context, {"absentData", kAbsentDataBytes,
-                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT |
+                                VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                             MemoryLocation::DeviceLocal});
     fillBuffer(context, buffer, 0); // defined contents, though nothing reads them
     return buffer;
@@ -90,6 +92,7 @@ struct SceneBinding {
 constexpr SceneBinding kSceneBindings[] = {
     {BINDING_BVH_NODES, &DeviceScene::bvhNodes},
     {BINDING_TRIANGLES, &DeviceScene::triangles},
+    {BINDING_TRIANGLE_TEXELS, &DeviceScene::triangles},
     {BINDING_TRIANGLE_NORMALS, &DeviceScene::triangleNormals},
     {BINDING_MATERIALS, &DeviceScene::materials},
     {BINDING_EMITTERS, &DeviceScene::emitters},
@@ -114,7 +117,8 @@ std::vector<SceneBufferBytes> DeviceScene::bufferBytes() const {
     std::vector<SceneBufferBytes> result{{absentData.name(), absentData.allocationSize()}};
     for (const SceneBinding& b : kSceneBindings) {
         const std::optional<Buffer>& buffer = this->*b.buffer;
-        if (buffer) result.push_back({buffer->name(), buffer->allocationSize()});
+        if (b.binding != BINDING_TRIANGLE_TEXELS && buffer)
+            result.push_back({buffer->name(), buffer->allocationSize()});
     }
     return result;
 }
@@ -129,8 +133,13 @@ std::uint64_t DeviceScene::totalBytes() const {
 DeviceScene uploadScene(GpuContext& context, const PreparedScene& scene) {
     checkScene(scene);
     DeviceScene d{makeAbsentData(context)};
-    d.bvhNodes = uploadArray(context, "bvhNodes", scene.nodes);
-    d.triangles = uploadArray(context, "triangles", scene.triangles);
+    // The BVH walk fetches nodes and primitives as texels (wavefront_kernels.cpp, bindingKind);
+    // shading reads primitives as a storage buffer.
+    d.bvhNodes = uploadArray(context, "bvhNodes", scene.nodes,
+                             VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
+    d.triangles = uploadArray(context, "triangles", scene.triangles,
+                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                  VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
     d.triangleNormals = uploadArray(context, "triangleNormals", scene.normals);
     d.triangleUvs = uploadArray(context, "triangleUvs", scene.uvs);
     d.materials = uploadArray(context, "materials", scene.materials);
@@ -140,7 +149,6 @@ DeviceScene uploadScene(GpuContext& context, const PreparedScene& scene) {
     d.emitterCdf = uploadArray(context, "emitterCdf", scene.emitterCdf);
     d.environmentTexels = uploadArray(context, "environmentTexels", scene.environmentTexels);
     d.environmentCdf = uploadArray(context, "environmentCdf", scene.environmentCdf);
-    d.nodeCount = static_cast<std::uint32_t>(scene.nodes.size());
     d.emitterCount = static_cast<std::uint32_t>(scene.emitters.size());
     d.environment = scene.environment;
     return d;

@@ -33,7 +33,6 @@ struct DeviceScene {
     std::optional<Buffer> emitterCdf{};
     std::optional<Buffer> environmentTexels{};
     std::optional<Buffer> environmentCdf{};
-    std::uint32_t nodeCount = 0;
     std::uint32_t emitterCount = 0;
     gpu::EnvironmentParams environment{}; // for FrameParams::environment
 

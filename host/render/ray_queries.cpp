@@ -25,7 +25,6 @@ struct DeviceRayQueries::State {
         frame.lightSamples = 1;
         frame.slotCount = batch;
         frame.pixelCount = 1;
-        frame.nodeCount = deviceScene.nodeCount;
         frame.emitterCount = deviceScene.emitterCount;
         frame.environment = deviceScene.environment;
         upload(context, buffers.frameParams, std::span<const gpu::FrameParams>(&frame, 1));

@@ -89,7 +89,6 @@ gpu::FrameParams makeFrameParams(const RenderSettings& settings, const gpu::Came
     f.adaptiveDarkFloor = darkFloor(settings.exposure);
     f.slotCount = slotCount;
     f.pixelCount = camera.width * camera.height;
-    f.nodeCount = scene.nodeCount;
     f.sampleClamp = settings.clamp;
     f.environment = scene.environment;
     return f;

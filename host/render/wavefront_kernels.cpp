@@ -29,7 +29,8 @@ const std::array<KernelInfo, kWavefrontKernelCount>& kernelTable() {
         {kernels::kPrepareDispatchesName,
          {BINDING_FRAME_PARAMS, BINDING_QUEUE_COUNTERS, BINDING_DISPATCH_ARGS}},
         {kernels::kTraceClosestName,
-         {BINDING_FRAME_PARAMS, BINDING_BVH_NODES, BINDING_TRIANGLES, BINDING_TRIANGLE_UVS,
+         {BINDING_FRAME_PARAMS, BINDING_BVH_NODES, BINDING_TRIANGLES, BINDING_TRIANGLE_TEXELS,
+          BINDING_TRIANGLE_UVS,
           BINDING_MATERIALS, BINDING_TEXTURES, BINDING_TEXTURE_TEXELS, BINDING_RAYS, BINDING_HITS,
           BINDING_QUEUE_COUNTERS},
          true},
@@ -41,7 +42,8 @@ const std::array<KernelInfo, kWavefrontKernelCount>& kernelTable() {
           BINDING_QUEUE_COUNTERS},
          true},
         {kernels::kTraceShadowName,
-         {BINDING_FRAME_PARAMS, BINDING_BVH_NODES, BINDING_TRIANGLES, BINDING_TRIANGLE_UVS,
+         {BINDING_FRAME_PARAMS, BINDING_BVH_NODES, BINDING_TRIANGLES, BINDING_TRIANGLE_TEXELS,
+          BINDING_TRIANGLE_UVS,
           BINDING_MATERIALS, BINDING_TEXTURES, BINDING_TEXTURE_TEXELS, BINDING_ENVIRONMENT_TEXELS,
           BINDING_ENVIRONMENT_CDF, BINDING_SHADOW_RAYS, BINDING_QUEUE_COUNTERS},
          true},
@@ -69,6 +71,18 @@ std::span<const std::uint32_t> kernelBindings(WavefrontKernel kernel) {
     return info(kernel).bindings;
 }
 
+DescriptorKind bindingKind(std::uint32_t binding) {
+    switch (binding) {
+    case BINDING_FRAME_PARAMS:
+        return DescriptorKind::UniformBuffer;
+    case BINDING_BVH_NODES:
+    case BINDING_TRIANGLE_TEXELS:
+        return DescriptorKind::UniformTexelBuffer;
+    default:
+        return DescriptorKind::StorageBuffer;
+    }
+}
+
 std::vector<SpecializationConstant> featureConstants(const SceneFeatures& features) {
     const std::array<bool, FEATURE_COUNT> values = features.kernelFeatures();
     std::vector<SpecializationConstant> constants;
@@ -87,7 +101,8 @@ Kernel makeWavefrontKernel(const GpuContext& context, WavefrontKernel kernel,
     KernelDesc desc;
     desc.name = std::string(embedded.name);
     desc.spirv = embedded.spirv;
-    desc.storageBufferBindings = info(kernel).bindings;
+    for (std::uint32_t binding : info(kernel).bindings)
+        desc.bindings.push_back({binding, bindingKind(binding)});
     desc.pushConstantSize = sizeof(gpu::PassParams);
     if (isSpecialised(kernel)) desc.specializationConstants = featureConstants(features);
     return Kernel(context, std::move(desc));

@@ -32,10 +32,13 @@ inline constexpr std::size_t kWavefrontKernelCount = 7;
 
 std::string_view kernelName(WavefrontKernel kernel);
 
-// The storage-buffer bindings (BINDING_* of lib/wavefront.h) the kernel declares.
+// The bindings (BINDING_* of lib/wavefront.h) the kernel declares.
 std::span<const std::uint32_t> kernelBindings(WavefrontKernel kernel);
 
-inline constexpr std::uint32_t kWavefrontBindingCount = 20; // BINDING_COUNT of lib/wavefront.h
+// How every kernel that declares `binding` sees it (the comments of lib/wavefront.h).
+DescriptorKind bindingKind(std::uint32_t binding);
+
+inline constexpr std::uint32_t kWavefrontBindingCount = 21; // BINDING_COUNT of lib/wavefront.h
 
 // Which buffer each binding number refers to; a kernel's descriptor set takes its bindings
 // from here.

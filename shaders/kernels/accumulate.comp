@@ -47,14 +47,14 @@ bool batchConverged(PixelState pixel) {
                             frame.adaptiveDarkFloor);
 }
 
-void main() {
-    uint activeIndex = flatInvocationIndex();
-    if (activeIndex >= passParams.chunkPixels) return;
+// Adds the pixel's samples of this pass; returns whether it goes on sampling, and how many of
+// its samples were not finite.
+bool accumulatePixel(uint activeIndex, out uint pixelIndex, out uint nonFinite) {
     uint k = passParams.samplesPerPass;
     uint first = activeIndex * k;
-    uint pixelIndex = pathStates[first].pixel;
+    pixelIndex = pathStates[first].pixel;
     PixelState pixel = pixelStates[pixelIndex];
-    uint nonFinite = 0u;
+    nonFinite = 0u;
     for (uint j = 0u; j < k; ++j) {
         PathState path = pathStates[first + j];
         if (isFiniteSample(path.radiance)) {
@@ -70,8 +70,16 @@ void main() {
         }
     }
     pixelStates[pixelIndex] = pixel;
-    addToCounter64(COUNTER_NON_FINITE, nonFinite);
-    if (pixel.converged != 0u) return;
-    uint next = atomicAdd(queueCounters[COUNTER_ACTIVE_NEXT], 1u);
-    activePixels[(passParams.activeParity ^ 1u) * frame.pixelCount + next] = pixelIndex;
+    return pixel.converged == 0u;
+}
+
+void main() {
+    uint activeIndex = flatInvocationIndex();
+    uint pixelIndex = 0u;
+    uint nonFinite = 0u;
+    bool goesOn = activeIndex < passParams.chunkPixels &&
+                  accumulatePixel(activeIndex, pixelIndex, nonFinite);
+    addToCounter64InSubgroup(COUNTER_NON_FINITE, nonFinite);
+    uint next = appendToQueue(COUNTER_ACTIVE_NEXT, goesOn);
+    if (goesOn) activePixels[(passParams.activeParity ^ 1u) * frame.pixelCount + next] = pixelIndex;
 }

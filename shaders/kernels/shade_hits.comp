@@ -24,6 +24,7 @@ VKPT_READONLY_BUFFER(BINDING_HITS, HitRecord, hits)
 VKPT_WRITEONLY_BUFFER(BINDING_SHADOW_RAYS, ShadowRay, shadowRays)
 VKPT_BUFFER(BINDING_QUEUE_COUNTERS, uint, queueCounters)
 
+#include "lib/counters.glsl"
 #include "lib/lights.glsl"
 #include "shared/rng.h"
 
@@ -62,10 +63,18 @@ void writePathLightSamples(Vertex vertex, PathState state) {
     }
 }
 
+// What shading one ray decided: whether light-sample records were written, and the ray its
+// path continues with (continues false when the path ends).
+struct Shading {
+    bool lit;
+    bool continues;
+    RayRecord next;
+};
+
 // The BSDF sample (DIM_BSDF: u.xy the direction, u.z the roulette, u.w the lobe) and Russian
-// roulette; a surviving path appends its next ray to the other half of the queue (its position
-// there does not matter: nothing depends on it).
-void continuePath(Vertex vertex, inout PathState state) {
+// roulette; a surviving path's next ray goes to the other half of the queue (main appends it;
+// its position there does not matter: nothing depends on it).
+void continuePath(Vertex vertex, inout PathState state, inout Shading shading) {
     vec4 u = random4(state, DIM_BSDF);
     SurfacePoint s = vertex.surface;
     Basis basis = makeBasis(s.shadingNormal);
@@ -78,15 +87,14 @@ void continuePath(Vertex vertex, inout PathState state) {
     if (u.z >= survival) return;
     state.throughput /= survival;
     state.previousBsdfPdf = bsdf.pdf;
-    uint nextHalf = (passParams.bounce & 1u) ^ 1u;
-    uint next = atomicAdd(queueCounters[COUNTER_RAYS + nextHalf], 1u);
     vec3 origin = offsetFromSurface(vertex.surface.position, vertex.surface.geometricNormal,
                                     vertex.surface.coordinateScale);
-    rays[nextHalf * frame.slotCount + next] = RayRecord(origin, vertex.record.slot, direction, 0u);
+    shading.continues = true;
+    shading.next = RayRecord(origin, vertex.record.slot, direction, 0u);
 }
 
-// Returns whether light-sample records were written for this vertex.
-bool shadePathVertex(Vertex vertex, inout PathState state) {
+// Sets shading.lit when light-sample records were written for this vertex.
+void shadePathVertex(Vertex vertex, inout PathState state, inout Shading shading) {
     uint bounce = passParams.bounce;
     vec3 emitted = emittedRadiance(vertex.surface);
     if (emitted != vec3(0.0) && pathFilterKeeps(frame.pathFilter, bounce)) {
@@ -98,14 +106,13 @@ bool shadePathVertex(Vertex vertex, inout PathState state) {
         }
         state.radiance += state.throughput * emitted * weight;
     }
-    if (bounce >= frame.maxDepth) return false;
-    bool lit = pathFilterKeeps(frame.pathFilter, bounce + 1u);
-    if (lit) {
+    if (bounce >= frame.maxDepth) return;
+    shading.lit = pathFilterKeeps(frame.pathFilter, bounce + 1u);
+    if (shading.lit) {
         writePathLightSamples(vertex, state);
         state.lightScale = state.throughput;
     }
-    continuePath(vertex, state);
-    return lit;
+    continuePath(vertex, state, shading);
 }
 
 // CS184's hemisphere estimator: N uniform directions, each a probe that counts the emission it
@@ -174,13 +181,14 @@ void shadeMiss(RayRecord record) {
     pathStates[record.slot].radiance = state.radiance + state.throughput * radiance;
 }
 
-void main() {
-    uint i = flatInvocationIndex();
+// Shades ray i of the current queue.
+Shading shadeRay(uint i) {
+    Shading shading;
+    shading.lit = false;
+    shading.continues = false;
     uint queueHalf = passParams.bounce & 1u;
-    if (i >= queueCounters[COUNTER_RAYS + queueHalf]) return;
     HitRecord hit = hits[i];
     RayRecord record = rays[queueHalf * frame.slotCount + i];
-    bool lit = false;
     if (hit.triangle != NO_HIT) {
         Vertex vertex;
         vertex.ray = i;
@@ -190,13 +198,29 @@ void main() {
         if (frame.integrator == INTEGRATOR_NORMALS) {
             state.radiance = 0.5 * vertex.surface.rawShadingNormal + 0.5;
         } else if (frame.integrator == INTEGRATOR_PATH) {
-            lit = shadePathVertex(vertex, state);
+            shadePathVertex(vertex, state, shading);
         } else {
-            lit = shadeDirect(vertex, state);
+            shading.lit = shadeDirect(vertex, state);
         }
         pathStates[record.slot] = state;
     } else {
         shadeMiss(record);
     }
-    if (!lit) clearLightSamples(i);
+    if (!shading.lit) clearLightSamples(i);
+    return shading;
+}
+
+void main() {
+    uint i = flatInvocationIndex();
+    uint queueHalf = passParams.bounce & 1u;
+    bool continues = false;
+    RayRecord next;
+    if (i < queueCounters[COUNTER_RAYS + queueHalf]) {
+        Shading shading = shadeRay(i);
+        continues = shading.continues;
+        next = shading.next;
+    }
+    uint nextHalf = queueHalf ^ 1u;
+    uint slot = appendToQueue(COUNTER_RAYS + nextHalf, continues);
+    if (continues) rays[nextHalf * frame.slotCount + slot] = next;
 }

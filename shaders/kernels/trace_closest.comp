@@ -6,8 +6,9 @@
 
 layout(local_size_x = WORKGROUP_SIZE) in;
 
-VKPT_READONLY_BUFFER(BINDING_BVH_NODES, BvhNode, bvhNodes)
+VKPT_TEXEL_BUFFER(BINDING_BVH_NODES, bvhNodes)
 VKPT_READONLY_BUFFER(BINDING_TRIANGLES, Triangle, triangles)
+VKPT_TEXEL_BUFFER(BINDING_TRIANGLE_TEXELS, triangleTexels)
 VKPT_READONLY_BUFFER(BINDING_TRIANGLE_UVS, vec2, triangleUvs)
 VKPT_READONLY_BUFFER(BINDING_MATERIALS, Material, materials)
 VKPT_READONLY_BUFFER(BINDING_TEXTURES, TextureInfo, textures)
@@ -19,17 +20,16 @@ VKPT_BUFFER(BINDING_QUEUE_COUNTERS, uint, queueCounters)
 #include "lib/traversal_stats.glsl"
 #include "lib/traverse.glsl"
 
-void traceRay(uint i) {
+Traversal traceRay(uint i) {
     uint queueHalf = passParams.bounce & 1u;
     RayRecord ray = rays[queueHalf * frame.slotCount + i];
     Traversal walk = traceClosest(ray.origin, ray.direction, 0.0, VKPT_FAR);
     hits[i] = walk.hit;
-    countTraversal(walk);
+    return walk;
 }
 
 void main() {
-    beginTraversalStats();
     uint i = flatInvocationIndex();
-    if (i < queueCounters[COUNTER_RAYS + (passParams.bounce & 1u)]) traceRay(i);
-    endTraversalStats();
+    bool inQueue = i < queueCounters[COUNTER_RAYS + (passParams.bounce & 1u)];
+    countTraversal(inQueue ? traceRay(i) : noTraversal());
 }

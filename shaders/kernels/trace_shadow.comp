@@ -8,8 +8,9 @@
 
 layout(local_size_x = WORKGROUP_SIZE) in;
 
-VKPT_READONLY_BUFFER(BINDING_BVH_NODES, BvhNode, bvhNodes)
+VKPT_TEXEL_BUFFER(BINDING_BVH_NODES, bvhNodes)
 VKPT_READONLY_BUFFER(BINDING_TRIANGLES, Triangle, triangles)
+VKPT_TEXEL_BUFFER(BINDING_TRIANGLE_TEXELS, triangleTexels)
 VKPT_READONLY_BUFFER(BINDING_TRIANGLE_UVS, vec2, triangleUvs)
 VKPT_READONLY_BUFFER(BINDING_MATERIALS, Material, materials)
 VKPT_READONLY_BUFFER(BINDING_TEXTURES, TextureInfo, textures)
@@ -24,47 +25,45 @@ VKPT_BUFFER(BINDING_QUEUE_COUNTERS, uint, queueCounters)
 #include "lib/traversal_stats.glsl"
 #include "lib/traverse.glsl"
 
-// Rays by kind within the workgroup, added to the 64-bit totals once per workgroup.
-shared uint groupShadowRays;
-shared uint groupProbeRays;
+// What one record took: its walk, and whether it was a shadow segment or a probe.
+struct RecordWork {
+    Traversal walk;
+    uint segments;
+    uint probes;
+};
 
-void traceRecord(uint index) {
+RecordWork traceRecord(uint index) {
+    RecordWork work = RecordWork(noTraversal(), 0u, 0u);
     ShadowRay record = shadowRays[index];
     uint kind = record.flags & SHADOW_KIND_MASK;
-    if (kind == SHADOW_NONE) return;
+    if (kind == SHADOW_NONE) return work;
     // One walk for both kinds: lavapipe runs both sides of a branch, so a walk on each side
     // would cost every record two walks' code.
     bool segment = kind == SHADOW_SEGMENT;
-    Traversal walk = walkBvh(record.origin, record.direction, 0.0, record.tMax, segment);
+    work.walk = walkBvh(record.origin, record.direction, 0.0, record.tMax, segment);
     if (segment) {
-        if (walk.hit.triangle == NO_HIT) shadowRays[index].flags = record.flags | SHADOW_VISIBLE;
-        atomicAdd(groupShadowRays, 1u);
+        if (work.walk.hit.triangle == NO_HIT)
+            shadowRays[index].flags = record.flags | SHADOW_VISIBLE;
+        work.segments = 1u;
     } else {
         // The emission reached, or the environment when the probe leaves the scene.
-        bool hit = walk.hit.triangle != NO_HIT;
+        bool hit = work.walk.hit.triangle != NO_HIT;
         if (hit || hasEnvironment()) {
-            vec3 found = hit ? emissionTowards(walk.hit, record.origin, record.direction)
+            vec3 found = hit ? emissionTowards(work.walk.hit, record.origin, record.direction)
                              : environmentRadianceAlong(record.direction);
             shadowRays[index].contribution = record.contribution * found * record.factor;
             shadowRays[index].flags = record.flags | SHADOW_VISIBLE;
         }
-        atomicAdd(groupProbeRays, 1u);
+        work.probes = 1u;
     }
-    countTraversal(walk);
+    return work;
 }
 
 void main() {
-    if (gl_LocalInvocationIndex == 0u) {
-        groupShadowRays = 0u;
-        groupProbeRays = 0u;
-    }
-    beginTraversalStats();
     uint index = flatInvocationIndex();
     uint records = queueCounters[COUNTER_RAYS + (passParams.bounce & 1u)] * frame.lightSamples;
-    if (index < records) traceRecord(index);
-    endTraversalStats();
-    if (gl_LocalInvocationIndex == 0u) {
-        addToCounter64(COUNTER_SHADOW_RAYS, groupShadowRays);
-        addToCounter64(COUNTER_EXTENSION_RAYS, groupProbeRays);
-    }
+    RecordWork work = index < records ? traceRecord(index) : RecordWork(noTraversal(), 0u, 0u);
+    countTraversal(work.walk);
+    addToCounter64InSubgroup(COUNTER_SHADOW_RAYS, work.segments);
+    addToCounter64InSubgroup(COUNTER_EXTENSION_RAYS, work.probes);
 }

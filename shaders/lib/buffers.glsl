@@ -19,4 +19,10 @@
         Type name[];                                                                               \
     };
 
+// A uniform texel buffer of 16-byte texels read with texelFetch(name, index): for arrays that
+// every invocation reads at its own index, which lavapipe gathers for 8 invocations at once
+// instead of loading word by word (docs/gpu.md).
+#define VKPT_TEXEL_BUFFER(bindingIndex, name)                                                      \
+    layout(set = 0, binding = bindingIndex) uniform usamplerBuffer name;
+
 #endif // VKPT_BUFFERS_GLSL

@@ -3,10 +3,20 @@
 #ifndef VKPT_FRAME_GLSL
 #define VKPT_FRAME_GLSL
 
+// Subgroup operations (Vulkan 1.1 basic, ballot and arithmetic; device_list.cpp requires them
+// of a device) let a subgroup add to a counter with one atomic instead of one per invocation
+// (lib/counters.glsl).
+#extension GL_KHR_shader_subgroup_basic : require
+#extension GL_KHR_shader_subgroup_ballot : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
+
 #include "lib/buffers.glsl"
 #include "lib/wavefront.h"
 
-layout(std430, set = 0, binding = BINDING_FRAME_PARAMS) readonly buffer frameParamsBuffer {
+// A uniform block: every invocation reads the same words, which lavapipe then loads once per
+// 8 invocations instead of once per invocation. FrameParams has the same offsets under std140
+// as under std430 (no arrays, every struct a multiple of 16 bytes).
+layout(std140, set = 0, binding = BINDING_FRAME_PARAMS) uniform frameParamsBlock {
     FrameParams frame;
 };
 

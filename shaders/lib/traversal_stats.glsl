@@ -1,39 +1,28 @@
-// traversal_stats.glsl — a workgroup's traversal work (BVH nodes and triangles tested, walks
-// cut short), summed in shared memory and added to queueCounters once per workgroup, so the
-// statistics cost one global atomic per 64 rays. Kernels call beginTraversalStats() and
-// endTraversalStats() from every invocation (they contain barriers). Needs queueCounters
-// and what traverse.glsl needs.
+// traversal_stats.glsl — the traversal work of a dispatch (BVH nodes visited, primitives
+// tested, walks cut short), added to queueCounters once per subgroup rather than per ray
+// (lib/counters.glsl). Kernels call countTraversal() from every invocation still running, with
+// a zero Traversal where there was no walk. Needs queueCounters and what traverse.glsl needs.
 #ifndef VKPT_TRAVERSAL_STATS_GLSL
 #define VKPT_TRAVERSAL_STATS_GLSL
 
 #include "lib/counters.glsl"
 #include "lib/traverse.glsl"
 
-shared uint groupNodesVisited;
-shared uint groupTriangleTests;
-shared uint groupTruncated;
-
-void beginTraversalStats() {
-    if (gl_LocalInvocationIndex == 0u) {
-        groupNodesVisited = 0u;
-        groupTriangleTests = 0u;
-        groupTruncated = 0u;
-    }
-    barrier();
+// The statistics of no walk, for invocations without a ray.
+Traversal noTraversal() {
+    Traversal none;
+    none.hit = HitRecord(VKPT_FAR, 0.0, 0.0, NO_HIT);
+    none.truncated = false;
+    none.nodesVisited = 0u;
+    none.triangleTests = 0u;
+    return none;
 }
 
 void countTraversal(Traversal walk) {
-    atomicAdd(groupNodesVisited, walk.nodesVisited);
-    atomicAdd(groupTriangleTests, walk.triangleTests);
-    if (walk.truncated) atomicAdd(groupTruncated, 1u);
-}
-
-void endTraversalStats() {
-    barrier();
-    if (gl_LocalInvocationIndex != 0u) return;
-    addToCounter64(COUNTER_NODES_VISITED, groupNodesVisited);
-    addToCounter64(COUNTER_TRIANGLE_TESTS, groupTriangleTests);
-    if (groupTruncated != 0u) atomicAdd(queueCounters[COUNTER_TRUNCATED], groupTruncated);
+    addToCounter64InSubgroup(COUNTER_NODES_VISITED, walk.nodesVisited);
+    addToCounter64InSubgroup(COUNTER_TRIANGLE_TESTS, walk.triangleTests);
+    uint truncated = subgroupAdd(walk.truncated ? 1u : 0u);
+    if (subgroupElect() && truncated != 0u) atomicAdd(queueCounters[COUNTER_TRUNCATED], truncated);
 }
 
 #endif // VKPT_TRAVERSAL_STATS_GLSL

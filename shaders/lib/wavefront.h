@@ -17,9 +17,11 @@ namespace vkpt::gpu {
 // declares only the buffers it uses, and its pipeline layout lists exactly those. A scene
 // array a scene does not have (no textures, one emitter, no environment map) is not
 // uploaded: its bindings get a small placeholder buffer that the specialised kernels never
-// read (host/render/device_scene.h).
-#define BINDING_FRAME_PARAMS 0
-#define BINDING_BVH_NODES 1
+// read (host/render/device_scene.h). Most bindings are storage buffers; frameParams is a
+// uniform buffer, and what the BVH walk fetches at each ray's own index (nodes, primitives)
+// is a uniform texel buffer (host/render/wavefront_kernels.cpp, bindingKind; docs/gpu.md).
+#define BINDING_FRAME_PARAMS 0        // uniform buffer
+#define BINDING_BVH_NODES 1           // uniform texel buffer
 #define BINDING_TRIANGLES 2
 #define BINDING_TRIANGLE_NORMALS 3
 #define BINDING_MATERIALS 4
@@ -38,7 +40,8 @@ namespace vkpt::gpu {
 #define BINDING_EMITTER_CDF 17        // float, inclusive selection CDF (more than one emitter)
 #define BINDING_ENVIRONMENT_TEXELS 18 // vec4, the environment map
 #define BINDING_ENVIRONMENT_CDF 19    // float, the environment map's sampling CDF
-#define BINDING_COUNT 20
+#define BINDING_TRIANGLE_TEXELS 20    // uniform texel buffer: the triangles buffer as uvec4s
+#define BINDING_COUNT 21
 
 // ---------------------------------------------------------------------------------------------
 // What every kernel needs to know about the render, uploaded once (buffer frameParams).
@@ -63,7 +66,7 @@ struct FrameParams {
     float adaptiveDarkFloor; // ADAPTIVE_DARK_FLOOR · 2^-EV
     uint slotCount;          // path slots; each half of the rays buffer holds this many
     uint pixelCount;         // each half of the activePixels buffer holds this many
-    uint nodeCount;
+    uint unused0;
     float sampleClamp; // --clamp: largest component a sample may keep; SAMPLE_CLAMP_OFF: none
     EnvironmentParams environment; // emitterIndex NO_EMITTER: rays that leave see black
 };
@@ -170,7 +173,7 @@ struct PixelState {
 #ifdef __cplusplus
 static_assert(sizeof(FrameParams) == 160 && offsetof(FrameParams, seed) == 64 &&
               offsetof(FrameParams, adaptiveDarkFloor) == 108 &&
-              offsetof(FrameParams, nodeCount) == 120 && offsetof(FrameParams, sampleClamp) == 124 &&
+              offsetof(FrameParams, unused0) == 120 && offsetof(FrameParams, sampleClamp) == 124 &&
               offsetof(FrameParams, environment) == 128);
 static_assert(sizeof(PassParams) == 32);
 static_assert(sizeof(PathState) == 48 && offsetof(PathState, radiance) == 16 &&

@@ -13,10 +13,12 @@
 namespace vkpt::gpu {
 // The GLSL built-ins that shared code uses, so one spelling compiles on both sides.
 using glm::abs;
+using glm::bitCount;
 using glm::atan; // atan(y, x) is GLSL's two-argument arctangent
 using glm::clamp;
 using glm::cross;
 using glm::dot;
+using glm::findLSB;
 using glm::floatBitsToInt;
 using glm::floatBitsToUint;
 using glm::floor;
@@ -37,6 +39,7 @@ using std::sqrt;
 using glm::ivec2;
 using glm::ivec3;
 using glm::uvec2;
+using glm::uvec3;
 using glm::uvec4;
 using glm::vec2;
 using glm::vec3;
@@ -44,11 +47,14 @@ using glm::vec4;
 using uint = std::uint32_t;
 // Shared functions are header-only on the C++ side.
 #define VKPT_FN inline
+// A parameter the function reads and writes: a reference in C++, GLSL's inout.
+#define VKPT_INOUT(Type) Type&
 // C++ builds do not contract a·b − c·d into an FMA unless asked (-ffp-contract=off where it
 // matters); GLSL needs the precise qualifier for the same guarantee.
 #define VKPT_PRECISE
 #else
 #define VKPT_FN
+#define VKPT_INOUT(Type) inout Type
 #define VKPT_PRECISE precise
 #endif
 
@@ -58,28 +64,38 @@ using uint = std::uint32_t;
 #define VKPT_FAR 3.402823466e38f
 
 // ---------------------------------------------------------------------------------------------
-// BVH: nodes in depth-first order with skip ("miss") links, so traversal needs no stack:
-// on a box hit an interior node continues at index + 1 (its first child); on a box miss,
-// or after a leaf's triangles, traversal continues at missIndex.
-#define BVH_END 0xffffffffu
-// A leaf packs its triangle range into one word: count in the low bits, first triangle above.
-#define BVH_LEAF_COUNT_BITS 4u
-#define BVH_LEAF_COUNT_MASK 15u
+// BVH limits. A wide node's leaf child holds at most 15 primitives (4 bits of leafCounts), and a
+// scene at most 2^28 primitives: the walk fetches primitive i as texels 3i..3i + 2 and
+// texelFetch takes an int.
+#define BVH_END 0xffffffffu // no node: the root's parent
 #define BVH_MAX_LEAF_TRIANGLES 15u
-#define BVH_MAX_TRIANGLES (1u << (32u - BVH_LEAF_COUNT_BITS))
+#define BVH_MAX_TRIANGLES (1u << 28u)
 
-struct BvhNode {
-    vec3 boundsMin;
-    uint missIndex;     // next node once this subtree is done or missed; BVH_END at the end
-    vec3 boundsMax;
-    uint leafTriangles; // 0 for an interior node; else (firstTriangle << 4) | triangleCount
+// The device's BVH: 8-wide nodes with quantised child boxes, after Ylitie, Karras and Laine,
+// "Efficient Incoherent Ray Traversal on GPUs Through Compressed Wide BVHs" (HPG 2017), in 80
+// bytes (five 16-byte texels, fetched as bvhNodes texels). Child i's box is
+// origin + 2^e·q for the byte q of each bound, rounded outwards when built so that it always
+// holds the child. Slot s holds the child nearest for rays whose direction signs are the bits
+// of s (x in bit 0, y, z), so a ray of octant o visits slots in the order s XOR o; the walk
+// and its bit stack are in shared/wide_bvh.h, the layout's reasons in docs/bvh.md.
+// Internal children are nodes childBase, childBase + 1, … in slot order; the primitives of
+// leaf children follow one another in slot order from primitiveBase.
+#define WIDE_BVH_WIDTH 8u
+#define WIDE_BVH_TEXELS 5u     // 16-byte texels per node
+#define WIDE_BVH_MAX_DEPTH 32u // levels below the root; the walk's bit stack holds 32 masks
+
+struct WideBvhNode {
+    uint childBase;         // node index of the first internal child
+    uint parent;            // node index of the parent; BVH_END for the root
+    uint slotsAndExponents; // bits 0–7: the slots holding internal children; bits 8–31: the
+                            // exponents ex, ey, ez of the grid spacing 2^e, biased like a float's
+    uint primitiveBase;     // index of the first primitive of the leaf children
+    vec3 origin;            // the grid's origin: the node's box minimum
+    uint leafCounts;        // 4 bits per slot: a leaf child's primitive count, 0 otherwise
+    // Quantised bounds, one byte per slot (slot s in byte s % 4 of word s / 4 of each pair):
+    // [0] lo.x lo.y, [1] lo.z hi.x, [2] hi.y hi.z.
+    uvec4 quantised[3];
 };
-
-VKPT_FN uint packLeafTriangles(uint firstTriangle, uint triangleCount) {
-    return (firstTriangle << BVH_LEAF_COUNT_BITS) | triangleCount;
-}
-VKPT_FN uint leafFirstTriangle(uint leafTriangles) { return leafTriangles >> BVH_LEAF_COUNT_BITS; }
-VKPT_FN uint leafTriangleCount(uint leafTriangles) { return leafTriangles & BVH_LEAF_COUNT_MASK; }
 
 // ---------------------------------------------------------------------------------------------
 // Geometry, in BVH leaf order. Vertices rather than edges, so that a watertight test can
@@ -88,6 +104,7 @@ VKPT_FN uint leafTriangleCount(uint leafTriangles) { return leafTriangles & BVH_
 // centre v0, radius v1.x (v2 unused). Both kinds share the BVH's leaves, so one walk meets
 // both; scenes without spheres compile the sphere test out (FEATURE_SPHERES).
 #define NO_EMITTER 0xffffffffu
+#define NO_PRIMITIVE 0xffffffffu
 #define PRIMITIVE_SPHERE 0x80000000u
 // Set in sourceIndex at load time when the primitive's material is alphaMode MASK, so that a
 // BVH walk knows which crossings need the alpha test without reading the material.
@@ -243,8 +260,8 @@ struct Camera {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(BvhNode) == 32 && offsetof(BvhNode, missIndex) == 12 &&
-              offsetof(BvhNode, boundsMax) == 16 && offsetof(BvhNode, leafTriangles) == 28);
+static_assert(sizeof(WideBvhNode) == 80 && offsetof(WideBvhNode, origin) == 16 &&
+              offsetof(WideBvhNode, leafCounts) == 28 && offsetof(WideBvhNode, quantised) == 32);
 static_assert(sizeof(Triangle) == 48 && offsetof(Triangle, materialIndex) == 12 &&
               offsetof(Triangle, v1) == 16 && offsetof(Triangle, emitterIndex) == 28 &&
               offsetof(Triangle, v2) == 32 && offsetof(Triangle, sourceIndex) == 44);

@@ -160,6 +160,21 @@ VKPT_FN TriangleHit intersectTriangleWatertight(vec3 origin, ShearedRay ray, vec
     return result;
 }
 
+// The smallest float above t, for t >= 0 and finite: a test whose tMax is exclusive then
+// also finds crossings at exactly t (VKPT_FAR becomes infinity, which is fine as a bound).
+VKPT_FN float nextFloatUp(float t) {
+    return uintBitsToFloat(floatBitsToUint(t) + 1u);
+}
+
+// Closest-hit walks keep the crossing with the smallest t and, among crossings at the same t
+// (rays through a shared edge or vertex, coplanar duplicates), the one with the lowest
+// primitive index: the answer then does not depend on the order in which a walk meets them,
+// so the device's wide walk, the reference's stack walk and brute force agree on every ray.
+// A walk tests each primitive against (tMin, nextFloatUp(best t)) once it has a best crossing.
+VKPT_FN bool crossingPrecedes(float t, uint primitive, float bestT, uint bestPrimitive) {
+    return t < bestT || (t == bestT && primitive < bestPrimitive);
+}
+
 // The test both renderers use.
 VKPT_FN TriangleHit intersectTriangle(vec3 origin, vec3 direction, vec3 v0, vec3 v1, vec3 v2,
                                       float tMin, float tMax) {

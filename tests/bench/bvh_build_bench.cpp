@@ -1,6 +1,6 @@
-// bvh_build_bench.cpp — prints BVH build times and tree figures, and the cost of the ordered
-// stack walk against the stackless skip-link walk, on a synthetic 1M-triangle surface and
-// on glTF scenes. Prints figures; asserts nothing.
+// bvh_build_bench.cpp — prints BVH build and collapse times, tree figures, and the cost of the
+// reference's ordered stack walk against the device's stackless wide walk run on the CPU, on
+// a synthetic 1M-triangle surface and on glTF scenes. Prints figures; asserts nothing.
 //
 //     bvh_build_bench [scene.gltf ...]   (default: the repo's and the shared scenes)
 #include <algorithm>
@@ -15,8 +15,9 @@
 #include <vector>
 
 #include "bench_statistics.h"
-#include "bvh/bvh_flatten.h"
 #include "bvh/bvh_traverse.h"
+#include "bvh/bvh_wide.h"
+#include "bvh/wide_traverse.h"
 #include "bvh/synthetic_scenes.h"
 #include "scene/camera.h"
 #include "scene/gltf_loader.h"
@@ -91,13 +92,13 @@ struct WalkResult {
     double trianglesPerRay = 0.0;
     std::uint64_t maxNodes = 0;
     std::uint64_t maxIterations = 0; // nodes + triangle tests: a kernel's loop iterations
-    double mraysPerSecond = -1.0;    // negative: not timed
+    double mraysPerSecond = 0.0;
 };
 
 using Walker = std::function<ClosestHit(const RayQuery&, TraversalCounters*)>;
 
-// One counted pass for the work figures, then (if timed) passes without counters.
-WalkResult measureWalk(const std::vector<RayQuery>& rays, const Walker& walk, bool timed = true) {
+// One counted pass for the work figures, then timed passes without counters.
+WalkResult measureWalk(const std::vector<RayQuery>& rays, const Walker& walk) {
     WalkResult r;
     TraversalCounters total;
     for (const RayQuery& ray : rays) {
@@ -111,7 +112,6 @@ WalkResult measureWalk(const std::vector<RayQuery>& rays, const Walker& walk, bo
     auto n = static_cast<double>(rays.size());
     r.nodesPerRay = static_cast<double>(total.nodesVisited) / n;
     r.trianglesPerRay = static_cast<double>(total.triangleTests) / n;
-    if (!timed) return r;
     std::uint32_t hits = 0;
     double seconds = medianSeconds(kTimedRuns, [&] {
         for (const RayQuery& ray : rays)
@@ -122,26 +122,22 @@ WalkResult measureWalk(const std::vector<RayQuery>& rays, const Walker& walk, bo
 }
 
 void printWalk(const char* label, const WalkResult& r) {
-    std::printf("    %-26s %9.1f %9.2f %9llu %9llu ", label, r.nodesPerRay, r.trianglesPerRay,
-                static_cast<unsigned long long>(r.maxNodes),
-                static_cast<unsigned long long>(r.maxIterations));
-    if (r.mraysPerSecond >= 0.0)
-        std::printf("%9.2f\n", r.mraysPerSecond);
-    else
-        std::printf("%9s\n", "-");
+    std::printf("    %-26s %9.1f %9.2f %9llu %9llu %9.2f\n", label, r.nodesPerRay,
+                r.trianglesPerRay, static_cast<unsigned long long>(r.maxNodes),
+                static_cast<unsigned long long>(r.maxIterations), r.mraysPerSecond);
 }
 
 struct BuiltScene {
-    BvhTree tree;
-    StackBvh stackBvh;               // the tree laid out for the ordered stack walk
-    std::vector<gpu::BvhNode> nodes; // left child first
+    BvhTree tree; // leaves renumbered by flattenWideBvh
+    StackBvh stackBvh; // the tree laid out for the ordered stack walk
+    std::vector<gpu::WideBvhNode> nodes;
     std::vector<gpu::Triangle> triangles;
 };
 
 BuiltScene buildScene(const std::vector<glm::vec3>& positions) {
     BuiltScene s;
     s.tree = buildBvh(triangleBounds(positions));
-    s.nodes = flattenBvh(s.tree);
+    s.nodes = flattenWideBvh(s.tree);
     s.triangles.reserve(s.tree.primitiveOrder.size());
     for (std::uint32_t source : s.tree.primitiveOrder) {
         const glm::vec3* p = &positions[3 * std::size_t(source)];
@@ -158,111 +154,41 @@ void benchBuild(const BenchScene& scene) {
     double serial = medianSeconds(kBuildRuns, [&] { buildBvh(bounds, oneThread); });
     double parallel = medianSeconds(kBuildRuns, [&] { buildBvh(bounds); });
     BuiltScene built = buildScene(scene.positions);
-    double flatten = medianSeconds(kBuildRuns, [&] { flattenBvh(built.tree); });
+    double flatten = medianSeconds(kBuildRuns, [&] {
+        BvhTree copy = built.tree;
+        flattenWideBvh(copy);
+    });
     BvhStats stats = computeBvhStats(built.tree);
+    WideBvhStats wide = computeWideBvhStats(built.nodes);
     std::printf("  build: %.4f s on 1 thread, %.4f s on %u threads (median of %d); "
-                "flatten %.4f s\n",
+                "collapse to 8-wide %.4f s\n",
                 serial, parallel, std::max(1u, std::thread::hardware_concurrency()), kBuildRuns,
                 flatten);
-    std::printf("  tree: %u nodes, %u leaves, depth %u, max leaf %u, SAH cost %.2f\n",
+    std::printf("  binary tree: %u nodes, %u leaves, depth %u, max leaf %u, SAH cost %.2f\n",
                 stats.nodeCount, stats.leafCount, stats.maxDepth, stats.maxLeafSize,
                 double(stats.sahCost));
+    std::printf("  8-wide tree: %u nodes (%.1f MiB), %u leaf children, depth %u, %.2f children "
+                "per node\n",
+                wide.nodeCount, double(wide.nodeCount) * sizeof(gpu::WideBvhNode) / 1048576.0,
+                wide.leafCount, wide.depth, wide.childrenPerNode);
 }
 
-// The walks of other stackless layouts, simulated by a recursive walk that tests each node's
-// box on arrival (as a skip-link walk does) and picks the child order per node: a per-octant
-// threaded BVH (8 orders, near child first along the split axis by the ray's direction sign)
-// or a single fixed order that puts the larger box first.
-using ChildOrder = std::function<bool(const BvhBuildNode& left, const BvhBuildNode& right,
-                                      const RayQuery& ray)>; // true: right child first
-
-struct SimulatedWalk {
-    const BuiltScene& scene;
-    const ChildOrder& rightFirst;
-    const RayQuery& ray;
-    glm::vec3 invDirection;
-    ClosestHit best;
-    TraversalCounters* counters;
-
-    void visit(std::uint32_t index) {
-        const BvhBuildNode& n = scene.tree.nodes[index];
-        if (counters) ++counters->nodesVisited;
-        if (gpu::intersectBox(ray.origin, invDirection, n.bounds.min, n.bounds.max, ray.tMin,
-                              best.t) == VKPT_FAR)
-            return;
-        if (n.isLeaf()) return testLeaf(n);
-        bool swap = rightFirst(scene.tree.nodes[n.leftChild], scene.tree.nodes[n.rightChild], ray);
-        visit(swap ? n.rightChild : n.leftChild);
-        visit(swap ? n.leftChild : n.rightChild);
-    }
-
-    void testLeaf(const BvhBuildNode& n) {
-        for (std::uint32_t i = n.firstPrimitive; i < n.firstPrimitive + n.primitiveCount; ++i) {
-            if (counters) ++counters->triangleTests;
-            const gpu::Triangle& t = scene.triangles[i];
-            gpu::TriangleHit h = gpu::intersectTriangle(ray.origin, ray.direction, t.v0, t.v1, t.v2,
-                                                        ray.tMin, best.t);
-            if (h.hit) best = {h.t, h.u, h.v, i, true};
-        }
-    }
-};
-
-ClosestHit closestHitSimulated(const BuiltScene& s, const ChildOrder& order, const RayQuery& ray,
-                               TraversalCounters* counters) {
-    SimulatedWalk walk{s, order, ray, gpu::safeInverseDirection(ray.direction), {}, counters};
-    walk.best.t = ray.tMax;
-    walk.visit(0);
-    return walk.best;
-}
-
-// The builder does not keep split axes; the axis along which the children's centres lie
-// furthest apart stands in for it.
-bool octantRightFirst(const BvhBuildNode& left, const BvhBuildNode& right, const RayQuery& ray) {
-    glm::vec3 gap = right.bounds.centre() - left.bounds.centre();
-    glm::vec3 a = glm::abs(gap);
-    int axis = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
-    return (gap[axis] >= 0.0f) != (ray.direction[axis] >= 0.0f);
-}
-
-bool largerRightFirst(const BvhBuildNode& left, const BvhBuildNode& right, const RayQuery&) {
-    return right.bounds.surfaceArea() > left.bounds.surfaceArea();
-}
-
-// cameraNodes: the tree flattened near child first along the camera's forward direction.
-void benchTraversal(const BuiltScene& s, const char* label, const std::vector<RayQuery>& rays,
-                    const std::vector<gpu::BvhNode>& cameraNodes) {
+void benchTraversal(const BuiltScene& s, const char* label, const std::vector<RayQuery>& rays) {
     std::printf("  %s, %zu rays, closest hit, 1 thread:\n", label, rays.size());
     std::printf("    %-26s %9s %9s %9s %9s %9s\n", "walk", "nodes/ray", "tris/ray", "max nodes",
                 "max iter.", "Mrays/s");
-    printWalk("stack (ordered)", measureWalk(rays, [&](const RayQuery& r, TraversalCounters* c) {
+    printWalk("stack (ordered, binary)",
+              measureWalk(rays, [&](const RayQuery& r, TraversalCounters* c) {
                   return closestHitStack(s.stackBvh, r, c);
               }));
-    printWalk("stackless, left first",
+    printWalk("stackless 8-wide (device)",
               measureWalk(rays, [&](const RayQuery& r, TraversalCounters* c) {
-                  return closestHitStackless(s.nodes, s.triangles, r, c);
+                  return closestHitWide(s.nodes, s.triangles, r, c);
               }));
-    printWalk("stackless, camera order",
-              measureWalk(rays, [&](const RayQuery& r, TraversalCounters* c) {
-                  return closestHitStackless(cameraNodes, s.triangles, r, c);
-              }));
-    // Simulated walks print no speed: their recursion is not what the renderer would run.
-    ChildOrder octant = octantRightFirst, larger = largerRightFirst;
-    printWalk("octant-threaded (sim.)", measureWalk(
-                                            rays,
-                                            [&](const RayQuery& r, TraversalCounters* c) {
-                                                return closestHitSimulated(s, octant, r, c);
-                                            },
-                                            false));
-    printWalk("larger box first (sim.)", measureWalk(
-                                             rays,
-                                             [&](const RayQuery& r, TraversalCounters* c) {
-                                                 return closestHitSimulated(s, larger, r, c);
-                                             },
-                                             false));
 }
 
-// The camera reflected through the centre of the bounds, looking the other way: a fixed child
-// order that is far-first for one is near-first for the other.
+// The camera reflected through the centre of the bounds, looking the other way: the octant
+// order must serve both.
 SceneCamera mirrored(const SceneCamera& camera, const BuiltScene& s) {
     SceneCamera m = camera;
     m.position = 2.0f * s.tree.nodes[0].bounds.centre() - camera.position;
@@ -274,14 +200,9 @@ void benchScene(const BenchScene& scene) {
     std::printf("\n%s: %zu triangles\n", scene.name.c_str(), scene.positions.size() / 3);
     benchBuild(scene);
     BuiltScene built = buildScene(scene.positions);
-    SceneCamera back = mirrored(scene.camera, built);
-    std::vector<gpu::BvhNode> cameraNodes = flattenBvh(built.tree, {scene.camera.forward});
-    benchTraversal(built, "camera rays", cameraRays(scene.camera, kRays), cameraNodes);
-    benchTraversal(built, "mirrored camera rays", cameraRays(back, kRays),
-                   flattenBvh(built.tree, {back.forward}));
-    // Secondary rays walk the nodes flattened for the camera, as in a render.
-    benchTraversal(built, "scattered rays", scatteredRays(built.tree.nodes[0].bounds, kRays),
-                   cameraNodes);
+    benchTraversal(built, "camera rays", cameraRays(scene.camera, kRays));
+    benchTraversal(built, "mirrored camera rays", cameraRays(mirrored(scene.camera, built), kRays));
+    benchTraversal(built, "scattered rays", scatteredRays(built.tree.nodes[0].bounds, kRays));
 }
 
 BenchScene syntheticSphere() {

@@ -55,7 +55,7 @@ void benchScene(const std::string& path, const BenchOptions& o) {
     PreparedScene prepared;
     SceneCamera sceneCamera = selectCamera(scene, std::nullopt, float(o.width) / float(o.height));
     for (int run = 0; run < o.runs; ++run) {
-        prepared = prepareScene(scene, {{}, sceneCamera.forward});
+        prepared = prepareScene(scene);
         buildSeconds.push_back(prepared.bvhStats.buildSeconds);
     }
     RenderSettings settings;

@@ -100,9 +100,9 @@ RenderSettings benchSettings(const BenchOptions& o) {
 
 // A fresh device per mode, so that its peak memory is this mode's alone.
 ModeFigures runMode(const Scene& scene, const BenchOptions& o, bool general,
-                    const gpu::Camera& camera, const glm::vec3& forward) {
+                    const gpu::Camera& camera) {
     GpuContext context(o.gpu);
-    PreparedScene prepared = prepareScene(scene, {{}, forward, general});
+    PreparedScene prepared = prepareScene(scene, {{}, general});
     ModeFigures figures;
     for (int run = 0; run < o.runs; ++run) {
         WavefrontResult result = renderWavefront(context, prepared, camera, benchSettings(o));
@@ -147,8 +147,8 @@ void benchScene(const BenchScene& bench, const BenchOptions& o) {
     std::printf("%s: %zu triangles, %zu spheres, %ux%u at %u spp; features: %s\n",
                 bench.path.c_str(), scene.triangleCount(), scene.spheres.size(), o.width, o.height,
                 o.spp, describeFeatures(analyseScene(scene)).c_str());
-    ModeFigures specialised = runMode(scene, o, false, camera, sceneCamera.forward);
-    ModeFigures general = runMode(scene, o, true, camera, sceneCamera.forward);
+    ModeFigures specialised = runMode(scene, o, false, camera);
+    ModeFigures general = runMode(scene, o, true, camera);
     std::printf("| build | Mrays/s | seconds | first run | pipeline creation | scene buffers | "
                 "peak device memory |\n| --- | --- | --- | --- | --- | --- | --- |\n");
     for (const auto& [name, f] : {std::pair<const char*, const ModeFigures*>{"scene", &specialised},

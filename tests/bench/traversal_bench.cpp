@@ -1,5 +1,5 @@
 // traversal_bench.cpp — the same rays traced by every traversal: Embree 3 (the baseline),
-// vkpt-ref's ordered stack walk, the device walk on the CPU and the device kernels (lavapipe
+// vkpt-ref's ordered stack walk, the device's walk on the CPU and the device kernels (lavapipe
 // without a GPU). Per ray set and variant: Mrays/s (median of --runs), nodes visited and
 // primitive tests per ray, bytes fetched per ray, the ratio to Embree's Mrays/s, and how many
 // answers disagree with the stack walk's. Beside wall-clock Mrays/s it prints Mrays per CPU
@@ -217,7 +217,7 @@ void benchScene(const std::string& path, const BenchOptions& o) {
     Scene scene = loadBenchScene(path, o);
     float aspect = float(o.width) / float(o.height);
     SceneCamera sceneCamera = selectCamera(scene, std::nullopt, aspect);
-    PreparedScene prepared = prepareScene(scene, {{}, sceneCamera.forward});
+    PreparedScene prepared = prepareScene(scene);
     gpu::Camera camera = makeGpuCamera(sceneCamera, o.width, o.height);
     RenderSettings settings;
     settings.maxDepth = o.maxDepth;

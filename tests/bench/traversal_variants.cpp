@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "bvh/bvh_traverse.h"
+#include "bvh/wide_traverse.h"
 #include "reference/alpha_mask_filter.h"
 #include "render/ray_queries.h"
 #ifdef VKPT_HAVE_EMBREE
@@ -19,12 +20,12 @@ namespace vkpt::bench {
 
 namespace {
 
-// Bytes per node visit (box test) and per primitive test of each layout: the one place that
-// says so. The stack walk tests both boxes of a StackBvhPair (half a pair per box), the
-// skip-link walk (device and its CPU transcription) one gpu::BvhNode per box; both read
+// Bytes per counted node and per primitive test of each layout: the one place that says so.
+// The stack walk counts box tests, two per StackBvhPair it reads; the device's wide walk (and
+// its CPU run) counts node visits, one gpu::WideBvhNode each (eight child boxes). Both read
 // gpu::Triangle records.
 constexpr WalkLayout kStackWalkLayout{sizeof(StackBvhPair) / 2, sizeof(gpu::Triangle)};
-constexpr WalkLayout kSkipLinkLayout{sizeof(gpu::BvhNode), sizeof(gpu::Triangle)};
+constexpr WalkLayout kWideLayout{sizeof(gpu::WideBvhNode), sizeof(gpu::Triangle)};
 
 constexpr std::uint32_t kChunk = 256; // rays a thread takes at a time
 
@@ -110,16 +111,17 @@ std::unique_ptr<TraversalVariant> stackWalk(const PreparedScene& scene, std::uin
         });
 }
 
-std::unique_ptr<TraversalVariant> stacklessWalk(const PreparedScene& scene, std::uint32_t threads) {
-    VariantInfo info{"device walk on the CPU (skip links), " + std::to_string(threads) + " threads",
-                     kSkipLinkLayout};
+// shared/wide_bvh.h, the kernels' own code, run on the CPU (wide_traverse.h).
+std::unique_ptr<TraversalVariant> wideWalkOnCpu(const PreparedScene& scene, std::uint32_t threads) {
+    VariantInfo info{"device walk on the CPU (8-wide), " + std::to_string(threads) + " threads",
+                     kWideLayout};
     return makeCpuWalk(
         std::move(info), scene, threads,
         [&scene](const RayQuery& r, TraversalCounters& c) {
-            return closestHitStackless(scene.nodes, scene.triangles, r, &c);
+            return closestHitWide(scene.nodes, scene.triangles, r, &c);
         },
         [&scene](const RayQuery& r, TraversalCounters& c) {
-            return anyHitStackless(scene.nodes, scene.triangles, r, &c);
+            return anyHitWide(scene.nodes, scene.triangles, r, &c);
         });
 }
 
@@ -129,7 +131,7 @@ std::unique_ptr<TraversalVariant> stacklessWalk(const PreparedScene& scene, std:
 class DeviceKernelVariant final : public TraversalVariant {
 public:
     DeviceKernelVariant(std::unique_ptr<GpuContext> context, const PreparedScene& scene)
-        : TraversalVariant({"device kernels on " + context->deviceInfo().name, kSkipLinkLayout}),
+        : TraversalVariant({"device kernels on " + context->deviceInfo().name, kWideLayout}),
           context_(std::move(context)), queries_(*context_, scene) {}
 
     TraceWork trace(const RaySet& set, std::vector<TraceOutcome>& outcomes) override {
@@ -210,7 +212,7 @@ makeTraversalVariants(const PreparedScene& scene, const VariantOptions& options)
     std::fprintf(stderr, "traversal_bench: built without Embree: no baseline, no ratios\n");
 #endif
     variants.push_back(stackWalk(scene, options.threads));
-    variants.push_back(stacklessWalk(scene, options.threads));
+    variants.push_back(wideWalkOnCpu(scene, options.threads));
     if (options.device)
         if (auto device = deviceKernels(scene, options)) variants.push_back(std::move(device));
     return variants;

@@ -1,7 +1,7 @@
 // traversal_variants.h — the traversals traversal_bench compares on the same ray sets: Embree
 // (the baseline every speed is a ratio of), vkpt-ref's ordered stack walk (the check every
-// other answer is compared with), the device walk transcribed on the CPU and the device
-// kernels themselves. A new walk is one more class in traversal_variants.cpp and one line in
+// other answer is compared with), the device's walk run on the CPU (shared/wide_bvh.h) and the
+// device kernels themselves. A new walk is one more class in traversal_variants.cpp and one line in
 // makeTraversalVariants; its bytes per node and per primitive go in the layout table there.
 #pragma once
 

@@ -30,7 +30,7 @@ inline SceneCamera lookAt(glm::vec3 position, glm::vec3 target, glm::vec3 up, fl
 
 // The scene with its BVH flattened for its first camera, as vkpt and vkpt-ref prepare it.
 inline LoadedTestScene prepareTestScene(const Scene& scene) {
-    return {scene, prepareScene(scene, {{}, scene.cameras.at(0).forward})};
+    return {scene, prepareScene(scene)};
 }
 
 inline const Scene& cornellBoxScene() {

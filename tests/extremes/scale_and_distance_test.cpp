@@ -81,9 +81,13 @@ TEST_P(BeyondTheFloatRange, ImageStaysFinite) {
         test::renderBoth(context(), test::prepareTestScene(scene), settingsWithSeed(2));
     EXPECT_TRUE(test::outputIsFinite(r.cpu));
     EXPECT_TRUE(test::outputIsFinite(r.gpu));
-    // Counted alike by both (a path or two may round across the edge differently).
+    // Counted alike by both, within 2 %: past the float range the triangle test reports
+    // crossings that lie outside the triangle's own box, so which ones a walk finds depends on
+    // its boxes, and the device's quantised boxes are larger than the reference's exact ones.
+    // (1e-20 measured: 26,587 against 26,875, 1.1 %; the device's walk run by the reference
+    // counts 26,586.)
     EXPECT_NEAR(double(r.gpuStats.nonFiniteSamples), double(r.cpuStats.nonFiniteSamples),
-                0.01 * double(r.cpuStats.nonFiniteSamples));
+                0.02 * double(r.cpuStats.nonFiniteSamples));
     if (GetParam() < 1.0f) {
         EXPECT_GT(r.cpuStats.nonFiniteSamples, 0u);
     }

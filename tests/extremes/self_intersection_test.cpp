@@ -107,7 +107,7 @@ TEST_F(SelfIntersectionOnTheDevice, SpawnedRaysNeverReHitTheirOwnTriangle) {
     KernelDesc desc;
     desc.name = std::string(embedded.name);
     desc.spirv = embedded.spirv;
-    desc.storageBufferBindings = {0, 1};
+    desc.bindings = {{0, DescriptorKind::StorageBuffer}, {1, DescriptorKind::StorageBuffer}};
     desc.pushConstantSize = sizeof(std::uint32_t);
     const Kernel kernel(context(), std::move(desc));
     constexpr std::uint32_t kBatch = 1u << 18;

@@ -124,7 +124,7 @@ TEST(Validation, SynchronizationChecksCatchAMissingBarrier) {
     // dispatches, so wavefront barriers are also checked by results, not only by the layer.)
     GpuContext context(testGpuOptions());
     const test_kernels::EmbeddedKernel& embedded = test_kernels::findKernel("write_indices");
-    const Kernel kernel(context, {std::string(embedded.name), embedded.spirv, {0}, 4, {}});
+    const Kernel kernel(context, {std::string(embedded.name), embedded.spirv, {{0}}, 4, {}});
     const Buffer values(context,
                         {"values", 256,
                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,

@@ -38,7 +38,7 @@ Kernel GpuTest::makeKernel(std::string_view name, std::uint32_t bufferCount,
     desc.name = std::string(embedded.name);
     desc.spirv = embedded.spirv;
     for (std::uint32_t binding = 0; binding < bufferCount; ++binding) {
-        desc.storageBufferBindings.push_back(binding);
+        desc.bindings.push_back({binding, DescriptorKind::StorageBuffer});
     }
     desc.pushConstantSize = pushConstantSize;
     desc.specializationConstants = std::move(specialization);

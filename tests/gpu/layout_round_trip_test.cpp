@@ -21,13 +21,14 @@ public:
     uint u() { return 0xA5000000u | next_++; }
     vec3 v3() { return {f(), f(), f()}; }
     vec4 v4() { return {f(), f(), f(), f()}; }
+    uvec4 u4() { return {u(), u(), u(), u()}; }
 
 private:
     uint next_ = 1;
 };
 
 struct SharedStructs {
-    std::vector<BvhNode> bvhNodes;
+    std::vector<WideBvhNode> bvhNodes;
     std::vector<Triangle> triangles;
     std::vector<TriangleNormals> triangleNormals;
     std::vector<Material> materials;
@@ -46,7 +47,10 @@ SharedStructs makeStructs() {
     Values x;
     SharedStructs s;
     for (uint i = 0; i < LAYOUT_COUNT; ++i) {
-        s.bvhNodes.push_back({x.v3(), x.u(), x.v3(), x.u()});
+        WideBvhNode node{x.u(), x.u(), x.u(), x.u(), x.v3(), x.u(), {}};
+        for (uvec4& q : node.quantised)
+            q = x.u4();
+        s.bvhNodes.push_back(node);
         s.triangles.push_back({x.v3(), x.u(), x.v3(), x.u(), x.v3(), x.u()});
         s.triangleNormals.push_back({x.v4(), x.v4(), x.v4()});
         Material m{x.v4(), x.v3(), x.u(), x.f(), x.f(), x.f(), x.u(), x.v3(), x.f(), {}, {}, {}};
@@ -131,7 +135,7 @@ TEST_F(LayoutRoundTrip, DeviceWritesEveryFieldAtItsCppOffset) {
     const SharedStructs s = makeStructs();
     const std::vector<uint> flat = flatten(s);
     const Buffer words = makeStorageBuffer("words", std::span<const uint>(flat));
-    const Buffer bvhNodes = makeStorageBuffer("bvhNodes", LAYOUT_COUNT * sizeof(BvhNode));
+    const Buffer bvhNodes = makeStorageBuffer("bvhNodes", LAYOUT_COUNT * sizeof(WideBvhNode));
     const Buffer triangles = makeStorageBuffer("triangles", LAYOUT_COUNT * sizeof(Triangle));
     const Buffer triangleNormals =
         makeStorageBuffer("triangleNormals", LAYOUT_COUNT * sizeof(TriangleNormals));
@@ -147,7 +151,8 @@ TEST_F(LayoutRoundTrip, DeviceWritesEveryFieldAtItsCppOffset) {
                &environments, &cameras, &words},
               LAYOUT_COUNT);
 
-    expectSameBytes(download<BvhNode>(context(), bvhNodes, LAYOUT_COUNT), s.bvhNodes, "bvhNodes");
+    expectSameBytes(download<WideBvhNode>(context(), bvhNodes, LAYOUT_COUNT), s.bvhNodes,
+                    "bvhNodes");
     expectSameBytes(download<Triangle>(context(), triangles, LAYOUT_COUNT), s.triangles,
                     "triangles");
     expectSameBytes(download<TriangleNormals>(context(), triangleNormals, LAYOUT_COUNT),

@@ -289,11 +289,10 @@ inline std::vector<NamedScene> featureScenes() {
             {"everything", everythingScene}};
 }
 
-// As loadTestScene does for a file: prepared for its camera, specialised or general.
+// As loadTestScene does for a file: prepared specialised or general.
 inline LoadedTestScene prepareTestScene(Scene scene, bool general = false) {
     LoadedTestScene loaded{std::move(scene), {}};
     PrepareOptions options;
-    options.nearFirstDirection = selectCamera(loaded.scene, {}).forward;
     options.general = general;
     loaded.prepared = prepareScene(loaded.scene, options);
     return loaded;

@@ -32,7 +32,6 @@ LoadedTestScene loadFeatureTestScene(const std::string& relative, bool general) 
         loaded.scene.environment =
             readEnvironmentMap(scenePath("test/features/sky.hdr"), glm::vec3(1.0f));
     PrepareOptions prepare;
-    prepare.nearFirstDirection = selectCamera(loaded.scene, {}).forward;
     prepare.general = general;
     loaded.prepared = prepareScene(loaded.scene, prepare);
     return loaded;

@@ -40,7 +40,7 @@ Scene floorScene(float rho, float yfovDegrees = 1.0f) {
 
 test::LoadedTestScene prepared(Scene scene) {
     test::LoadedTestScene loaded{std::move(scene), {}};
-    loaded.prepared = prepareScene(loaded.scene, {{}, loaded.scene.cameras.at(0).forward});
+    loaded.prepared = prepareScene(loaded.scene);
     return loaded;
 }
 
@@ -133,7 +133,7 @@ TEST(Environment, MapImportanceSamplingAgreesWithHemisphereSampling) {
     scene.scene = loadGltfScene(test::scenePath("test/features/environment.gltf"));
     scene.scene.environment =
         readEnvironmentMap(test::scenePath("test/features/sky.hdr"), glm::vec3(1.0f));
-    scene.prepared = prepareScene(scene.scene, {{}, selectCamera(scene.scene, {}).forward});
+    scene.prepared = prepareScene(scene.scene);
     RenderSettings settings = test::testSettings(16, 64);
     settings.lightSamples = 8;
     test::LightAndHemisphere both = test::renderLightAndHemisphere(scene, settings);

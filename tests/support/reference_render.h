@@ -47,7 +47,7 @@ inline LoadedTestScene loadTestScene(const std::string& relative,
     LoadedTestScene loaded{loadGltfScene(scenePath(relative), options), {}};
     loaded.scene.environment = sceneOptions.environment;
     loaded.prepared = prepareScene(
-        loaded.scene, {{}, selectCamera(loaded.scene, {}).forward, sceneOptions.general});
+        loaded.scene, {{}, sceneOptions.general});
     return loaded;
 }
 

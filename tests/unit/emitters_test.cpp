@@ -181,7 +181,7 @@ TEST(Emitters, SingleEmitterHasNoCdf) {
     EXPECT_TRUE(prepared.emitterCdf.empty());
     LightSample light = sampleLight(prepared, glm::vec3(0.0f), glm::vec4(0.9f, 0.3f, 0.3f, 0.0f));
     EXPECT_TRUE(light.valid);
-    PreparedScene general = prepareScene(scene, {{}, std::nullopt, true});
+    PreparedScene general = prepareScene(scene, {{}, true});
     EXPECT_EQ(general.emitterCdf.size(), 1u);
 }
 

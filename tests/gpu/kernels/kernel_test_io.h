@@ -63,7 +63,7 @@ struct IntersectOutput {
 // read_layouts / write_layouts: each shared struct flattened to 32-bit words in declaration
 // order, one region per struct type, LAYOUT_COUNT records per region.
 #define LAYOUT_COUNT 5u
-#define LAYOUT_WORDS_BVH_NODE 8u
+#define LAYOUT_WORDS_BVH_NODE 20u
 #define LAYOUT_WORDS_TRIANGLE 12u
 #define LAYOUT_WORDS_TRIANGLE_NORMALS 12u
 #define LAYOUT_WORDS_MATERIAL 40u
@@ -106,7 +106,7 @@ struct LoopParams {
 static_assert(sizeof(RngInput) == 32 && sizeof(RngOutput) == 32);
 static_assert(sizeof(SamplingInput) == 64 && sizeof(SamplingOutput) == 96);
 static_assert(sizeof(IntersectInput) == 112 && sizeof(IntersectOutput) == 80);
-static_assert(sizeof(BvhNode) == 4 * LAYOUT_WORDS_BVH_NODE &&
+static_assert(sizeof(WideBvhNode) == 4 * LAYOUT_WORDS_BVH_NODE &&
               sizeof(Triangle) == 4 * LAYOUT_WORDS_TRIANGLE &&
               sizeof(TriangleNormals) == 4 * LAYOUT_WORDS_TRIANGLE_NORMALS &&
               sizeof(Material) == 4 * LAYOUT_WORDS_MATERIAL &&

@@ -9,7 +9,7 @@
 
 layout(local_size_x = WORKGROUP_SIZE) in;
 
-VKPT_READONLY_BUFFER(0, BvhNode, bvhNodes)
+VKPT_READONLY_BUFFER(0, WideBvhNode, bvhNodes)
 VKPT_READONLY_BUFFER(1, Triangle, triangles)
 VKPT_READONLY_BUFFER(2, TriangleNormals, triangleNormals)
 VKPT_READONLY_BUFFER(3, Material, materials)
@@ -38,6 +38,13 @@ void putVec4(vec4 value) {
     putFloat(value.w);
 }
 
+void putUvec4(uvec4 value) {
+    putUint(value.x);
+    putUint(value.y);
+    putUint(value.z);
+    putUint(value.w);
+}
+
 void putTextureSlot(TextureSlot slot) {
     putVec3(slot.transformRow0);
     putUint(slot.texture);
@@ -50,10 +57,15 @@ void main() {
     if (i >= LAYOUT_COUNT) return;
 
     cursor = LAYOUT_OFFSET_BVH_NODES + i * LAYOUT_WORDS_BVH_NODE;
-    putVec3(bvhNodes[i].boundsMin);
-    putUint(bvhNodes[i].missIndex);
-    putVec3(bvhNodes[i].boundsMax);
-    putUint(bvhNodes[i].leafTriangles);
+    putUint(bvhNodes[i].childBase);
+    putUint(bvhNodes[i].parent);
+    putUint(bvhNodes[i].slotsAndExponents);
+    putUint(bvhNodes[i].primitiveBase);
+    putVec3(bvhNodes[i].origin);
+    putUint(bvhNodes[i].leafCounts);
+    putUvec4(bvhNodes[i].quantised[0]);
+    putUvec4(bvhNodes[i].quantised[1]);
+    putUvec4(bvhNodes[i].quantised[2]);
 
     cursor = LAYOUT_OFFSET_TRIANGLES + i * LAYOUT_WORDS_TRIANGLE;
     putVec3(triangles[i].v0);

@@ -9,7 +9,7 @@
 
 layout(local_size_x = WORKGROUP_SIZE) in;
 
-VKPT_WRITEONLY_BUFFER(0, BvhNode, bvhNodes)
+VKPT_WRITEONLY_BUFFER(0, WideBvhNode, bvhNodes)
 VKPT_WRITEONLY_BUFFER(1, Triangle, triangles)
 VKPT_WRITEONLY_BUFFER(2, TriangleNormals, triangleNormals)
 VKPT_WRITEONLY_BUFFER(3, Material, materials)
@@ -39,6 +39,13 @@ vec4 takeVec4() {
     return vec4(xyz, takeFloat());
 }
 
+uvec4 takeUvec4() {
+    uint x = takeUint();
+    uint y = takeUint();
+    uint z = takeUint();
+    return uvec4(x, y, z, takeUint());
+}
+
 TextureSlot takeTextureSlot() {
     TextureSlot slot;
     slot.transformRow0 = takeVec3();
@@ -53,10 +60,15 @@ void main() {
     if (i >= LAYOUT_COUNT) return;
 
     cursor = LAYOUT_OFFSET_BVH_NODES + i * LAYOUT_WORDS_BVH_NODE;
-    bvhNodes[i].boundsMin = takeVec3();
-    bvhNodes[i].missIndex = takeUint();
-    bvhNodes[i].boundsMax = takeVec3();
-    bvhNodes[i].leafTriangles = takeUint();
+    bvhNodes[i].childBase = takeUint();
+    bvhNodes[i].parent = takeUint();
+    bvhNodes[i].slotsAndExponents = takeUint();
+    bvhNodes[i].primitiveBase = takeUint();
+    bvhNodes[i].origin = takeVec3();
+    bvhNodes[i].leafCounts = takeUint();
+    bvhNodes[i].quantised[0] = takeUvec4();
+    bvhNodes[i].quantised[1] = takeUvec4();
+    bvhNodes[i].quantised[2] = takeUvec4();
 
     cursor = LAYOUT_OFFSET_TRIANGLES + i * LAYOUT_WORDS_TRIANGLE;
     triangles[i].v0 = takeVec3();

@@ -1,0 +1,389 @@
+// wide_bvh.h — the stackless walk of the 8-wide compressed BVH (host_device.h, WideBvhNode),
+// compiled by the kernels (lib/traverse.glsl) and by the CPU tests and benchmarks
+// (host/bvh/wide_traverse.cpp), so that both run this very code.
+//
+// A visit fetches one node and tests its eight child boxes against (tMin, best t). The hit
+// leaf children's primitives are tested right away, in visiting order; the hit internal
+// children become the node's pending mask, bit p standing for slot p XOR octant, so that the
+// lowest bit is the next child to visit. Descending pushes what is left of the mask onto a bit
+// stack (8 bits a level, 32 levels in two uvec4 registers: no stack in memory); when a node's
+// mask runs out, the walk climbs to its parent, whose node index the node records, and pops
+// the parent's mask. Near-first order comes from the octant alone, so nothing is sorted and no
+// distance is stored (Ylitie et al. 2017 keep (child base, mask) pairs on a stack in memory
+// instead; the parent link and the bit stack are the trail of Áfra and Szirmay-Kalos,
+// "Stackless Multi-BVH Traversal for CPU, MIC and GPU Ray Tracing", CGF 33(1), 2014).
+//
+// The includer supplies, before including this file:
+//   uvec4 bvhNodeTexel(uint texel VKPT_BVH_PARAM)        texel of bvhNodes (5 per node)
+//   Triangle bvhPrimitive(uint index VKPT_BVH_PARAM)     primitive in BVH order
+//   bool bvhHasSpheres(VKPT_BVH_PARAM_ONLY), bool bvhHasAlphaMask(VKPT_BVH_PARAM_ONLY)
+// (the C++ side defines them below over a WideBvhView).
+#ifndef VKPT_WIDE_BVH_H
+#define VKPT_WIDE_BVH_H
+
+#include "host_device.h"
+#include "intersect.h"
+#include "sphere.h"
+
+#ifdef __cplusplus
+#include <cstring>
+
+namespace vkpt::gpu {
+
+// What a walk reads, on the CPU: the nodes and the primitives in BVH order.
+struct WideBvhView {
+    const WideBvhNode* nodes;
+    const Triangle* primitives;
+    bool spheres;   // some primitive may be a sphere
+    bool alphaMask; // alpha-masked primitives need the includer's test (PendingCrossing)
+};
+
+#define VKPT_BVH_PARAM , const WideBvhView& bvh
+#define VKPT_BVH_PARAM_ONLY const WideBvhView& bvh
+#define VKPT_BVH_ARG , bvh
+#define VKPT_BVH_ARG_ONLY bvh
+
+// The node array as the device sees it, 16-byte texels (memcpy: no aliasing of the structs).
+VKPT_FN uvec4 bvhNodeTexel(uint texel VKPT_BVH_PARAM) {
+    uvec4 value;
+    std::memcpy(&value, reinterpret_cast<const unsigned char*>(bvh.nodes) + 16u * texel,
+                sizeof value);
+    return value;
+}
+VKPT_FN Triangle bvhPrimitive(uint index VKPT_BVH_PARAM) {
+    return bvh.primitives[index];
+}
+VKPT_FN bool bvhHasSpheres(VKPT_BVH_PARAM_ONLY) {
+    return bvh.spheres;
+}
+VKPT_FN bool bvhHasAlphaMask(VKPT_BVH_PARAM_ONLY) {
+    return bvh.alphaMask;
+}
+#else
+#define VKPT_BVH_PARAM
+#define VKPT_BVH_PARAM_ONLY
+#define VKPT_BVH_ARG
+#define VKPT_BVH_ARG_ONLY
+#endif
+
+// ---------------------------------------------------------------------------------------------
+// The node's words.
+
+// The first texel, all a climb back to a node needs: childBase, parent, slotsAndExponents,
+// primitiveBase.
+#define WIDE_HEADER_CHILD_BASE(h) (h).x
+#define WIDE_HEADER_PARENT(h) (h).y
+#define WIDE_HEADER_PRIMITIVE_BASE(h) (h).w
+VKPT_FN uint wideInternalSlots(uvec4 header) {
+    return header.z & 0xffu;
+}
+
+// The grid spacing per axis: 2^e, built from the biased exponent bits.
+VKPT_FN vec3 wideGridScale(uvec4 header) {
+    return vec3(uintBitsToFloat(((header.z >> 8u) & 0xffu) << 23u),
+                uintBitsToFloat(((header.z >> 16u) & 0xffu) << 23u),
+                uintBitsToFloat((header.z >> 24u) << 23u));
+}
+
+// Byte `slot` of a pair of words holding one quantised bound of the eight children.
+VKPT_FN float wideQuantisedByte(uint first, uint second, uint slot) {
+    uint word = slot < 4u ? first : second;
+    return float((word >> ((slot & 3u) * 8u)) & 0xffu);
+}
+
+// The primitive count of slot's leaf, 0 for an internal or empty slot.
+VKPT_FN uint wideLeafCount(uint leafCounts, uint slot) {
+    return (leafCounts >> (4u * slot)) & 15u;
+}
+
+// Where slot's primitives start after primitiveBase: the sum of the counts of lower slots
+// (nibbles summed into bytes, then the bytes by one multiplication; at most 7·15 = 105).
+VKPT_FN uint wideLeafOffset(uint leafCounts, uint slot) {
+    uint below = slot == 0u ? 0u : leafCounts & ((1u << (4u * slot)) - 1u);
+    uint bytes = (below & 0x0f0f0f0fu) + ((below >> 4u) & 0x0f0f0f0fu);
+    return (bytes * 0x01010101u) >> 24u;
+}
+
+// The node index of slot's internal child.
+VKPT_FN uint wideChildIndex(uvec4 header, uint slot) {
+    uint lower = wideInternalSlots(header) & ((1u << slot) - 1u);
+    return WIDE_HEADER_CHILD_BASE(header) + uint(bitCount(lower));
+}
+
+// Moves bit s of an 8-bit slot mask to bit s XOR octant: XOR by a bit of the octant swaps
+// single bits, pairs or nibbles.
+VKPT_FN uint orderSlotBits(uint mask, uint octant) {
+    if ((octant & 1u) != 0u) mask = ((mask & 0x55u) << 1u) | ((mask >> 1u) & 0x55u);
+    if ((octant & 2u) != 0u) mask = ((mask & 0x33u) << 2u) | ((mask >> 2u) & 0x33u);
+    if ((octant & 4u) != 0u) mask = ((mask & 0x0fu) << 4u) | ((mask >> 4u) & 0x0fu);
+    return mask;
+}
+
+// The ray's octant: bit k set when direction component k is negative (or −0).
+VKPT_FN uint rayOctant(vec3 direction) {
+    return (floatBitsToUint(direction.x) >> 31u) | ((floatBitsToUint(direction.y) >> 31u) << 1u) |
+           ((floatBitsToUint(direction.z) >> 31u) << 2u);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The bit stack: a mask of 8 bits per level, the top level in the low byte of words.x.
+struct WideBitStack {
+    uvec4 words;    // levels 0–15 from the top
+    uvec4 overflow; // levels 16–31
+};
+
+VKPT_FN void pushMask(VKPT_INOUT(WideBitStack) stack, uint mask) {
+    uvec4 carryOverflow = uvec4(stack.words.w >> 24u, stack.overflow.x >> 24u,
+                                stack.overflow.y >> 24u, stack.overflow.z >> 24u);
+    uvec4 carryWords =
+        uvec4(mask, stack.words.x >> 24u, stack.words.y >> 24u, stack.words.z >> 24u);
+    stack.overflow = (stack.overflow << 8u) | carryOverflow;
+    stack.words = (stack.words << 8u) | carryWords;
+}
+
+VKPT_FN uint popMask(VKPT_INOUT(WideBitStack) stack) {
+    uint mask = stack.words.x & 0xffu;
+    stack.words = (stack.words >> 8u) |
+                  (uvec4(stack.words.y, stack.words.z, stack.words.w, stack.overflow.x) << 24u);
+    stack.overflow =
+        (stack.overflow >> 8u) | (uvec4(stack.overflow.y, stack.overflow.z, stack.overflow.w, 0u)
+                                  << 24u);
+    return mask;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The walk.
+
+// A crossing that needs the alpha test before the walk may take it; primitive NO_PRIMITIVE:
+// none.
+struct PendingCrossing {
+    TriangleHit hit;
+    uint primitive;
+};
+
+// depth of a finished walk: the node loop runs while depth <= WIDE_BVH_MAX_DEPTH, so a walk
+// that a driver's loop limit ends early (continueWideWalk) keeps a real depth and reports
+// itself.
+#define WIDE_WALK_DONE 0xffffffffu
+
+struct WideWalk {
+    vec3 origin;
+    float tMin;
+    vec3 direction;
+    uint octant;
+    vec3 invDirection;
+    bool stopAtFirst;
+    ShearedRay sheared; // the watertight test's shear, once per walk
+    // The best crossing so far; its t bounds every test. primitive NO_PRIMITIVE: none yet.
+    float t;
+    float u;
+    float v;
+    uint primitive;
+    // Where the walk stands.
+    WideBitStack stack;
+    uint depth;      // levels pushed; WIDE_WALK_DONE once finished
+    uint node;       // the node whose children `pending` and `leaves` refer to
+    uvec4 header;    // its first texel
+    uint leafCounts; // its leafCounts word
+    uint pending;    // its internal children still to visit (bit p: slot p ^ octant)
+    uint leaves;     // its leaf children still to test after the current one (same order)
+    uint next;       // the next primitive of the current leaf
+    uint end;        // one past its last
+    // Work done, for statistics.
+    uint nodesVisited;
+    uint primitiveTests;
+};
+
+// Moves to the next leaf of `leaves`, or to an empty range when none is left.
+VKPT_FN void takeNextLeaf(VKPT_INOUT(WideWalk) walk) {
+    if (walk.leaves == 0u) {
+        walk.next = walk.end;
+        return;
+    }
+    uint slot = uint(findLSB(walk.leaves)) ^ walk.octant;
+    walk.leaves &= walk.leaves - 1u;
+    walk.next = WIDE_HEADER_PRIMITIVE_BASE(walk.header) + wideLeafOffset(walk.leafCounts, slot);
+    walk.end = walk.next + wideLeafCount(walk.leafCounts, slot);
+}
+
+// Whether the ray enters child `slot`'s box within (tMin, best t). An empty slot's bounds are
+// lo = 255, hi = 0 on every axis: no box, whatever the slab test would make of it.
+VKPT_FN bool enterChild(WideWalk walk, vec3 scale, vec3 origin, uvec4 q0, uvec4 q1, uvec4 q2,
+                        uint slot) {
+    vec3 lo = vec3(wideQuantisedByte(q0.x, q0.y, slot), wideQuantisedByte(q0.z, q0.w, slot),
+                   wideQuantisedByte(q1.x, q1.y, slot));
+    vec3 hi = vec3(wideQuantisedByte(q1.z, q1.w, slot), wideQuantisedByte(q2.x, q2.y, slot),
+                   wideQuantisedByte(q2.z, q2.w, slot));
+    // q·2^e is exact (8 bits times a power of two), so the one rounding is the sum's, which
+    // the builder checked gives a box around the child's.
+    return lo.x <= hi.x &&
+           intersectBox(walk.origin, walk.invDirection, origin + lo * scale, origin + hi * scale,
+                        walk.tMin, walk.t) != VKPT_FAR;
+}
+
+// Bit `slot` set when the ray enters the child's box.
+VKPT_FN uint childHitBit(WideWalk walk, vec3 scale, vec3 origin, uvec4 q0, uvec4 q1, uvec4 q2,
+                         uint slot) {
+    return enterChild(walk, scale, origin, q0, q1, q2, slot) ? 1u << slot : 0u;
+}
+
+// Fetches node `index` and tests its children: hit internal children become `pending`, hit
+// leaves `leaves` (both in visiting order), and the first of those leaves is the current one.
+VKPT_FN void visitNode(VKPT_INOUT(WideWalk) walk, uint index VKPT_BVH_PARAM) {
+    uint texel = WIDE_BVH_TEXELS * index;
+    uvec4 header = bvhNodeTexel(texel VKPT_BVH_ARG);
+    uvec4 frame = bvhNodeTexel(texel + 1u VKPT_BVH_ARG);
+    uvec4 q0 = bvhNodeTexel(texel + 2u VKPT_BVH_ARG);
+    uvec4 q1 = bvhNodeTexel(texel + 3u VKPT_BVH_ARG);
+    uvec4 q2 = bvhNodeTexel(texel + 4u VKPT_BVH_ARG);
+    vec3 scale = wideGridScale(header);
+    vec3 origin = uintBitsToFloat(uvec3(frame.x, frame.y, frame.z));
+    // Written out: eight box tests in straight-line code, no loop for lavapipe to mask.
+    uint hits = childHitBit(walk, scale, origin, q0, q1, q2, 0u) |
+                childHitBit(walk, scale, origin, q0, q1, q2, 1u) |
+                childHitBit(walk, scale, origin, q0, q1, q2, 2u) |
+                childHitBit(walk, scale, origin, q0, q1, q2, 3u) |
+                childHitBit(walk, scale, origin, q0, q1, q2, 4u) |
+                childHitBit(walk, scale, origin, q0, q1, q2, 5u) |
+                childHitBit(walk, scale, origin, q0, q1, q2, 6u) |
+                childHitBit(walk, scale, origin, q0, q1, q2, 7u);
+    uint internal = wideInternalSlots(header);
+    walk.node = index;
+    walk.header = header;
+    walk.leafCounts = frame.w;
+    walk.pending = orderSlotBits(hits & internal, walk.octant);
+    walk.leaves = orderSlotBits(hits & ~internal, walk.octant);
+    ++walk.nodesVisited;
+    takeNextLeaf(walk);
+}
+
+// A walk of (tMin, tMax), standing at the root's children; continueWideWalk does the rest.
+VKPT_FN WideWalk beginWideWalk(vec3 origin, vec3 direction, float tMin, float tMax,
+                               bool stopAtFirst VKPT_BVH_PARAM) {
+    WideWalk walk;
+    walk.origin = origin;
+    walk.tMin = tMin;
+    walk.direction = direction;
+    walk.octant = rayOctant(direction);
+    walk.invDirection = safeInverseDirection(direction);
+    walk.stopAtFirst = stopAtFirst;
+    walk.sheared = shearRay(direction);
+    walk.t = tMax;
+    walk.u = 0.0f;
+    walk.v = 0.0f;
+    walk.primitive = NO_PRIMITIVE;
+    walk.stack.words = uvec4(0u);
+    walk.stack.overflow = uvec4(0u);
+    walk.depth = 0u;
+    walk.next = 0u;
+    walk.end = 0u;
+    walk.nodesVisited = 0u;
+    walk.primitiveTests = 0u;
+    visitNode(walk, 0u VKPT_BVH_ARG);
+    return walk;
+}
+
+// Ends the walk where it stands (an any-hit query's first hit).
+VKPT_FN void finishWideWalk(VKPT_INOUT(WideWalk) walk) {
+    walk.depth = WIDE_WALK_DONE;
+    walk.pending = 0u;
+    walk.leaves = 0u;
+    walk.next = walk.end;
+}
+
+// Takes a crossing as the best so far (the alpha test, if any, has passed).
+VKPT_FN void takeCrossing(VKPT_INOUT(WideWalk) walk, TriangleHit h, uint primitive) {
+    walk.t = h.t;
+    walk.u = h.u;
+    walk.v = h.v;
+    walk.primitive = primitive;
+    if (walk.stopAtFirst) finishWideWalk(walk);
+}
+
+// The primitive's crossing within (tMin, best t], or within the ray's (tMin, tMax) before the
+// first (crossingPrecedes decides the ties).
+VKPT_FN TriangleHit crossBvhPrimitive(WideWalk walk, Triangle primitive VKPT_BVH_PARAM) {
+    float tMax = walk.primitive == NO_PRIMITIVE ? walk.t : nextFloatUp(walk.t);
+    if (bvhHasSpheres(VKPT_BVH_ARG_ONLY) && isSpherePrimitive(primitive))
+        return intersectSphere(walk.origin, walk.direction, primitive.v0, primitive.v1.x,
+                               walk.tMin, tMax);
+    return intersectTriangleWatertight(walk.origin, walk.sheared, primitive.v0, primitive.v1,
+                                       primitive.v2, walk.tMin, tMax);
+}
+
+// Tests the current node's remaining leaf primitives; returns a crossing of an alpha-masked
+// primitive for the includer to test (the walk stands just past it), else NO_PRIMITIVE.
+VKPT_FN PendingCrossing testLeaves(VKPT_INOUT(WideWalk) walk VKPT_BVH_PARAM) {
+    PendingCrossing pending;
+    pending.primitive = NO_PRIMITIVE;
+    while (walk.next < walk.end) {
+        uint index = walk.next;
+        ++walk.next;
+        if (walk.next == walk.end) takeNextLeaf(walk);
+        ++walk.primitiveTests;
+        Triangle primitive = bvhPrimitive(index VKPT_BVH_ARG);
+        TriangleHit h = crossBvhPrimitive(walk, primitive VKPT_BVH_ARG);
+        if (!h.hit || !crossingPrecedes(h.t, index, walk.t, walk.primitive)) continue;
+        // Marked at load time (PRIMITIVE_ALPHA_MASKED): no material read per crossing.
+        if (bvhHasAlphaMask(VKPT_BVH_ARG_ONLY) && isAlphaMaskedPrimitive(primitive)) {
+            pending.hit = h;
+            pending.primitive = index;
+            return pending;
+        }
+        takeCrossing(walk, h, index);
+    }
+    return pending;
+}
+
+// Climbs from a node whose children are all done to the first ancestor with children left,
+// or to the root.
+VKPT_FN void climbToPendingAncestor(VKPT_INOUT(WideWalk) walk VKPT_BVH_PARAM) {
+    while (walk.pending == 0u && walk.depth > 0u) {
+        walk.node = WIDE_HEADER_PARENT(walk.header);
+        walk.header = bvhNodeTexel(WIDE_BVH_TEXELS * walk.node VKPT_BVH_ARG);
+        walk.pending = popMask(walk.stack);
+        --walk.depth;
+    }
+}
+
+// Walks on until the walk ends or a crossing needs the alpha test (returned, with the walk
+// standing just past it; continue with the same call after deciding).
+//
+// Mesa 22.3's lavapipe silently leaves loops once an invocation's loops have run 65,535
+// condition tests (docs/gpu.md). A walk cut short must not look finished, so the walk is
+// marked finished only where it really ends, and each inner loop's cut is detected with a
+// test the compiler cannot fold into the loop's own exit condition: the leaf loop ends when
+// next >= end, its cut shows as next != end; the climb ends at a pending mask or depth 0, its
+// cut as a node without pending children that is not the root (its parent link is not BVH_END).
+VKPT_FN PendingCrossing continueWideWalk(VKPT_INOUT(WideWalk) walk VKPT_BVH_PARAM) {
+    PendingCrossing pending;
+    pending.primitive = NO_PRIMITIVE;
+    while (walk.depth <= WIDE_BVH_MAX_DEPTH) {
+        pending = testLeaves(walk VKPT_BVH_ARG);
+        if (pending.primitive != NO_PRIMITIVE || walk.depth == WIDE_WALK_DONE) break;
+        if (walk.next != walk.end) break; // the leaf loop was cut short
+        climbToPendingAncestor(walk VKPT_BVH_ARG);
+        if (walk.pending == 0u) {
+            if (WIDE_HEADER_PARENT(walk.header) == BVH_END) finishWideWalk(walk);
+            break; // at the root, done; elsewhere, the climb was cut short
+        }
+        uint slot = uint(findLSB(walk.pending)) ^ walk.octant;
+        walk.pending &= walk.pending - 1u;
+        uint child = wideChildIndex(walk.header, slot);
+        pushMask(walk.stack, walk.pending);
+        ++walk.depth;
+        visitNode(walk, child VKPT_BVH_ARG);
+    }
+    return pending;
+}
+
+// Whether a driver's loop limit ended the walk before its end.
+VKPT_FN bool wideWalkTruncated(WideWalk walk) {
+    return walk.depth != WIDE_WALK_DONE;
+}
+
+#ifdef __cplusplus
+} // namespace vkpt::gpu
+#endif
+
+#endif // VKPT_WIDE_BVH_H
