@@ -150,45 +150,42 @@ EmbreeIntersectors::EmbreeIntersectors(const PreparedScene& scene, std::uint32_t
 
 EmbreeIntersectors::~EmbreeIntersectors() = default;
 
+namespace {
+
+// Embree's ray for a query: t in (tMin, tMax], every mask bit, no motion blur.
+RTCRay embreeRay(const RayQuery& q) {
+    RTCRay r{};
+    r.org_x = q.origin.x;
+    r.org_y = q.origin.y;
+    r.org_z = q.origin.z;
+    r.tnear = q.tMin;
+    r.dir_x = q.direction.x;
+    r.dir_y = q.direction.y;
+    r.dir_z = q.direction.z;
+    r.tfar = q.tMax;
+    r.mask = ~0u;
+    return r;
+}
+
+} // namespace
+
 ClosestHit EmbreeIntersectors::closestHit(const RayQuery& query) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRayHit r{};
-    r.ray = {query.origin.x,
-             query.origin.y,
-             query.origin.z,
-             query.tMin,
-             query.direction.x,
-             query.direction.y,
-             query.direction.z,
-             0.0f,
-             query.tMax,
-             ~0u,
-             0u,
-             0u};
+    r.ray = embreeRay(query);
     r.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     r.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(state_->scene, &context, &r);
     if (r.hit.geomID == RTC_INVALID_GEOMETRY_ID) return {};
-    return {r.ray.tfar, r.hit.u, r.hit.v, state_->geometries[r.hit.geomID].primitives[r.hit.primID],
-            true};
+    const std::uint32_t primitive = state_->geometries[r.hit.geomID].primitives[r.hit.primID];
+    return {r.ray.tfar, r.hit.u, r.hit.v, primitive, true};
 }
 
 bool EmbreeIntersectors::anyHit(const RayQuery& query) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    RTCRay r{query.origin.x,
-             query.origin.y,
-             query.origin.z,
-             query.tMin,
-             query.direction.x,
-             query.direction.y,
-             query.direction.z,
-             0.0f,
-             query.tMax,
-             ~0u,
-             0u,
-             0u};
+    RTCRay r = embreeRay(query);
     rtcOccluded1(state_->scene, &context, &r);
     return r.tfar < 0.0f; // Embree sets tfar to −∞ when something is found
 }
