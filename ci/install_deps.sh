@@ -10,6 +10,7 @@ packages=(
     libglm-dev libstb-dev libtinygltf-dev
     libgtest-dev
     gnuplot-nox # the trade study's plots (vkpt-study; the CI test label `study` draws them)
+    libembree-dev # benchmarks only (embree-ref, traversal_bench): never linked by vkpt or vkpt-ref
 )
 
 missing=()

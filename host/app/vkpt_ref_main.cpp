@@ -1,108 +1,12 @@
-// vkpt_ref_main.cpp — vkpt-ref, the CPU reference renderer: load, build, render, write.
-#include <cstdio>
-#include <optional>
-#include <string>
-#include <thread>
-#include <vector>
-
-#include "app/command_line.h"
-#include "app/convergence_options.h"
-#include "app/render_options.h"
-#include "app/render_report.h"
-#include "app/scene_setup.h"
-#include "common/errors.h"
-#include "image/image_io.h"
-#include "reference/reference_renderer.h"
-
-namespace {
-
-using namespace vkpt;
-
-const char* const kProgram = "vkpt-ref";
-
-struct Invocation {
-    RenderSettings settings;
-    ConvergenceSettings convergence; // --reference only: the CPU renders each pixel to the end
-    bool showHelp = false;
-};
-
-Invocation parseArguments(int argc, char** argv) {
-    Invocation invocation;
-    CommandLine commandLine(kProgram);
-    addRenderOptions(commandLine, invocation.settings);
-    addConvergenceOptions(commandLine, invocation.convergence, ConvergenceOptionSet::ReferenceOnly);
-    commandLine.add({"help", {'h'}, "", "show this help", [&](auto) { invocation.showHelp = true; }});
-    std::vector<std::string> arguments(argv + 1, argv + argc);
-    std::vector<std::string> positional = commandLine.parse(arguments);
-    if (invocation.showHelp) {
-        std::fputs(commandLine.usage("scene.gltf|scene.glb").c_str(), stdout);
-        return invocation;
-    }
-    if (positional.size() > 1) throw InputError("more than one scene file given");
-    if (!positional.empty()) invocation.settings.scenePath = positional[0];
-    validateRenderSettings(invocation.settings);
-    return invocation;
-}
-
-std::string deviceDescription(const RenderSettings& settings) {
-    unsigned threads = settings.threads ? settings.threads : std::thread::hardware_concurrency();
-    return "CPU, " + std::to_string(threads) + " threads";
-}
-
-void writeOutputs(const RenderOutput& output, const RenderSettings& settings) {
-    writeImage(output.image, settings.outputPath, settings.exposure);
-    std::string heatMap = heatMapPathFor(settings.outputPath);
-    writeSampleCountHeatMap(output.sampleCounts, output.image.width, output.image.height, heatMap);
-}
-
-// The reference renders every pixel to its end, so its curve is one point: the final image.
-std::optional<ConvergenceReport> finalError(const ConvergenceSettings& convergence,
-                                            const Image* reference, const RenderOutput& output,
-                                            const RenderStats& stats, std::uint32_t spp) {
-    if (!convergence.any()) return std::nullopt;
-    ConvergenceTracker tracker(reference, 0.0);
-    PassFigures figures;
-    figures.pass = 1;
-    figures.seconds = figures.renderSeconds = stats.seconds;
-    figures.samplesPerPixel = spp;
-    figures.samplesTaken = stats.samplesTaken;
-    tracker.record(figures, &output);
-    return ConvergenceReport{convergence, ConvergenceStop::Budget, false, tracker.curve()};
-}
-
-void run(const RenderSettings& settings, const ConvergenceSettings& convergence) {
-    std::optional<Image> reference;
-    if (!convergence.referencePath.empty())
-        reference = loadReference(convergence.referencePath, settings.width, settings.height);
-    SceneSetup setup = setUpScene(settings, kProgram);
-    RenderReport report;
-    report.program = kProgram;
-    report.settings = &settings;
-    RenderOutput output = renderReference(setup.prepared, setup.camera, settings, report.stats);
-    writeOutputs(output, settings);
-    report.device = deviceDescription(settings);
-    report.bvh = setup.prepared.bvhStats;
-    report.triangles = setup.prepared.triangles.size();
-    report.emitters = setup.prepared.emitters.size();
-    report.features = setup.prepared.usedFeatures;
-    report.generalPipelines = settings.general;
-    report.loadSeconds = setup.loadSeconds;
-    report.convergence = finalError(convergence, reference ? &*reference : nullptr, output,
-                                    report.stats, settings.samplesPerPixel);
-    printRenderSummary(report);
-    if (!settings.statsJsonPath.empty()) writeStatsJson(report, settings.statsJsonPath);
-}
-
-} // namespace
+// vkpt_ref_main.cpp — vkpt-ref, the CPU reference renderer: load, build, render, write, with
+// rays traced by the reference's ordered stack walk.
+#include "app/reference_program.h"
+#include "reference/stack_intersector.h"
 
 int main(int argc, char** argv) {
-    try {
-        Invocation invocation = parseArguments(argc, argv);
-        if (!invocation.showHelp) run(invocation.settings, invocation.convergence);
-        return 0;
-    } catch (const vkpt::InputError& error) {
-        return vkpt::reportFailure(kProgram, error, 1);
-    } catch (const std::exception& error) {
-        return vkpt::reportFailure(kProgram, error, 3);
-    }
+    vkpt::ReferenceProgram program{
+        "vkpt-ref", [](const vkpt::PreparedScene& scene, const vkpt::RenderSettings&) {
+            return std::make_unique<vkpt::StackIntersectors>(scene);
+        }};
+    return vkpt::runReferenceProgram(program, argc, argv);
 }

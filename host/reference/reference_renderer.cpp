@@ -11,9 +11,12 @@
 #include <mutex>
 #include <thread>
 
+#include <time.h>
+
 #include "common/progress.h"
 #include "reference/integrators.h"
 #include "reference/pixel_accumulator.h"
+#include "reference/stack_intersector.h"
 #include "shared/adaptive.h"
 #include "shared/camera.h"
 #include "shared/rng.h"
@@ -36,6 +39,7 @@ struct RenderJob {
     const PreparedScene& scene;
     const gpu::Camera& camera;
     const RenderSettings& settings;
+    const IntersectorFactory& intersectors;
     RenderOutput& output;
     ProgressBar& progress;
     float darkFloor;
@@ -102,8 +106,15 @@ void renderTile(RenderJob& job, IntegratorContext& context, std::uint32_t tile,
     job.progress.advance(std::uint64_t(x1 - x0) * (y1 - y0));
 }
 
+double threadCpuSeconds() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
 void renderWorker(RenderJob& job) {
-    SceneTracer tracer(job.scene);
+    const double cpuStart = threadCpuSeconds();
+    SceneTracer tracer(job.scene, job.intersectors);
     IntegratorContext context{job.settings, tracer};
     ThreadCounters counters;
     for (std::uint32_t tile = job.nextTile++; tile < job.tiles.count(); tile = job.nextTile++)
@@ -114,6 +125,7 @@ void renderWorker(RenderJob& job) {
     job.stats.triangleTests += tracer.traversal().triangleTests;
     job.stats.samplesTaken += counters.samples;
     job.stats.nonFiniteSamples += counters.nonFinite;
+    job.stats.cpuSeconds += threadCpuSeconds() - cpuStart;
 }
 
 RenderOutput makeOutput(std::uint32_t width, std::uint32_t height) {
@@ -137,6 +149,13 @@ float adaptiveDarkFloor(float exposure) { return ADAPTIVE_DARK_FLOOR * std::exp2
 
 RenderOutput renderReference(const PreparedScene& scene, const gpu::Camera& camera,
                              const RenderSettings& settings, RenderStats& stats) {
+    StackIntersectors intersectors(scene);
+    return renderReference(scene, camera, settings, stats, intersectors);
+}
+
+RenderOutput renderReference(const PreparedScene& scene, const gpu::Camera& camera,
+                             const RenderSettings& settings, RenderStats& stats,
+                             const IntersectorFactory& intersectors) {
     auto start = std::chrono::steady_clock::now();
     RenderOutput output = makeOutput(camera.width, camera.height);
     stats = RenderStats{};
@@ -145,8 +164,17 @@ RenderOutput renderReference(const PreparedScene& scene, const gpu::Camera& came
         makeProgressBar("vkpt-ref", std::uint64_t(camera.width) * camera.height, settings.quiet);
     TileGrid tiles{(camera.width + kTileSize - 1) / kTileSize,
                    (camera.height + kTileSize - 1) / kTileSize};
-    RenderJob job{scene, camera, settings, output, *progress, adaptiveDarkFloor(settings.exposure),
-                  tiles, {}, {}, stats};
+    RenderJob job{scene,
+                  camera,
+                  settings,
+                  intersectors,
+                  output,
+                  *progress,
+                  adaptiveDarkFloor(settings.exposure),
+                  tiles,
+                  {},
+                  {},
+                  stats};
     std::vector<std::thread> workers;
     std::uint32_t count = std::min(threadCount(settings), tiles.count());
     for (std::uint32_t i = 0; i < count; ++i) workers.emplace_back(renderWorker, std::ref(job));
