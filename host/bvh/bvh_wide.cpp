@@ -6,6 +6,7 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <span>
 
 #include "common/errors.h"
 
@@ -31,34 +32,43 @@ bool isNonEmptyLeaf(const BvhBuildNode& n) {
     return n.isLeaf() && n.primitiveCount > 0;
 }
 
+// Up to eight binary nodes, held in place: the collapse makes one per wide node, and the
+// 1M-triangle trees have about 200,000 of them, so nothing here touches the heap.
+struct ChildList {
+    std::array<std::uint32_t, WIDE_BVH_WIDTH> nodes{};
+    std::uint32_t count = 0;
+};
+
 // The binary nodes that become the children of the wide node made of `node`: its two
 // children, then repeatedly the chosen interior one replaced by its own two, up to eight.
-std::vector<std::uint32_t> openChildren(const BvhTree& tree, std::uint32_t node,
-                                        CollapseOrder order,
-                                        const std::vector<std::uint32_t>& heights) {
+ChildList openChildren(const BvhTree& tree, std::uint32_t node, CollapseOrder order,
+                       const std::vector<std::uint32_t>& heights) {
     const BvhBuildNode& n = tree.nodes[node];
+    ChildList children;
     if (n.isLeaf()) {
-        if (isNonEmptyLeaf(n)) return {node};
-        return {};
+        if (isNonEmptyLeaf(n)) children.nodes[children.count++] = node;
+        return children;
     }
-    std::vector<std::uint32_t> children{n.leftChild, n.rightChild};
-    while (children.size() < WIDE_BVH_WIDTH) {
-        auto best = children.end();
+    children.nodes[0] = n.leftChild;
+    children.nodes[1] = n.rightChild;
+    children.count = 2;
+    while (children.count < WIDE_BVH_WIDTH) {
+        std::uint32_t best = children.count;
         float bestKey = -1.0f;
-        for (auto it = children.begin(); it != children.end(); ++it) {
-            const BvhBuildNode& c = tree.nodes[*it];
-            if (c.isLeaf()) continue;
-            float key = order == CollapseOrder::LargestArea ? c.bounds.surfaceArea()
-                                                            : float(heights[*it]);
+        for (std::uint32_t c = 0; c < children.count; ++c) {
+            const BvhBuildNode& child = tree.nodes[children.nodes[c]];
+            if (child.isLeaf()) continue;
+            float key = order == CollapseOrder::LargestArea ? child.bounds.surfaceArea()
+                                                            : float(heights[children.nodes[c]]);
             if (key > bestKey) {
                 bestKey = key;
-                best = it;
+                best = c;
             }
         }
-        if (best == children.end()) break;
-        const BvhBuildNode& opened = tree.nodes[*best];
-        *best = opened.leftChild;
-        children.push_back(opened.rightChild);
+        if (best == children.count) break;
+        const BvhBuildNode& opened = tree.nodes[children.nodes[best]];
+        children.nodes[best] = opened.leftChild;
+        children.nodes[children.count++] = opened.rightChild;
     }
     return children;
 }
@@ -70,30 +80,36 @@ glm::vec3 octantDirection(std::uint32_t s) {
 
 // Slot s should hold the child that a ray travelling along octant s's direction reaches
 // first: the one whose centre lies lowest along that direction (Ylitie et al. 2017, section
-// 3.2, assign the same way with an auction; the greedy assignment of the cheapest pairs first
-// is within a few per cent in their measurements and in ours, docs/bvh.md).
+// 3.2, assign the same way with an auction). Greedy: the cheapest (child, slot) pair whose
+// child and slot are both free is placed next, ties to the lower child, then the lower slot
+// (at most 8 rounds over 64 costs, no sort).
 std::array<std::uint32_t, WIDE_BVH_WIDTH> assignSlots(const BvhTree& tree, std::uint32_t parent,
-                                                      const std::vector<std::uint32_t>& children) {
-    struct Pair {
-        float cost;
-        std::uint32_t child;
-        std::uint32_t slot;
-    };
+                                                      const ChildList& children) {
     const glm::vec3 centre = tree.nodes[parent].bounds.centre();
-    std::vector<Pair> pairs;
-    for (std::uint32_t c = 0; c < children.size(); ++c) {
-        glm::vec3 offset = tree.nodes[children[c]].bounds.centre() - centre;
+    std::array<std::array<float, WIDE_BVH_WIDTH>, WIDE_BVH_WIDTH> cost{};
+    for (std::uint32_t c = 0; c < children.count; ++c) {
+        glm::vec3 offset = tree.nodes[children.nodes[c]].bounds.centre() - centre;
         for (std::uint32_t s = 0; s < WIDE_BVH_WIDTH; ++s)
-            pairs.push_back({glm::dot(offset, octantDirection(s)), c, s});
+            cost[c][s] = glm::dot(offset, octantDirection(s));
     }
-    std::stable_sort(pairs.begin(), pairs.end(),
-                     [](const Pair& a, const Pair& b) { return a.cost < b.cost; });
     std::array<std::uint32_t, WIDE_BVH_WIDTH> slotOfChild{};
     std::array<bool, WIDE_BVH_WIDTH> childPlaced{}, slotTaken{};
-    for (const Pair& p : pairs) {
-        if (childPlaced[p.child] || slotTaken[p.slot]) continue;
-        childPlaced[p.child] = slotTaken[p.slot] = true;
-        slotOfChild[p.child] = p.slot;
+    for (std::uint32_t round = 0; round < children.count; ++round) {
+        std::uint32_t bestChild = WIDE_BVH_WIDTH, bestSlot = 0;
+        for (std::uint32_t c = 0; c < children.count; ++c) {
+            if (childPlaced[c]) continue;
+            for (std::uint32_t s = 0; s < WIDE_BVH_WIDTH; ++s) {
+                if (slotTaken[s]) continue;
+                // The first free pair is taken whatever its cost, so a NaN cost (centres of
+                // boxes beyond ±FLT_MAX / 2) still gets a slot.
+                if (bestChild == WIDE_BVH_WIDTH || cost[c][s] < cost[bestChild][bestSlot]) {
+                    bestChild = c;
+                    bestSlot = s;
+                }
+            }
+        }
+        childPlaced[bestChild] = slotTaken[bestSlot] = true;
+        slotOfChild[bestChild] = bestSlot;
     }
     return slotOfChild;
 }
@@ -102,8 +118,11 @@ WideDraft collapseWith(const BvhTree& tree, CollapseOrder order) {
     const std::vector<std::uint32_t> heights =
         order == CollapseOrder::Tallest ? subtreeHeights(tree) : std::vector<std::uint32_t>{};
     WideDraft draft;
+    // Each wide node stands for a distinct interior binary node (or the root leaf).
+    draft.nodes.reserve(tree.nodes.size() / 2 + 1);
     draft.nodes.push_back({0, BVH_END, {}});
     std::vector<std::uint32_t> depths{0};
+    depths.reserve(draft.nodes.capacity());
     // A node's internal children are made together, so they are contiguous; nodes are filled
     // depth first, so a subtree's nodes (and, laid out in node order, its primitives) lie close
     // together in memory, which a walk down one path of a large tree finds in fewer cache lines.
@@ -112,12 +131,12 @@ WideDraft collapseWith(const BvhTree& tree, CollapseOrder order) {
         const std::uint32_t w = toFill.back();
         toFill.pop_back();
         const std::uint32_t binary = draft.nodes[w].binaryNode;
-        const std::vector<std::uint32_t> children = openChildren(tree, binary, order, heights);
+        const ChildList children = openChildren(tree, binary, order, heights);
         const auto slots = assignSlots(tree, binary, children);
         std::array<WideDraftChild, WIDE_BVH_WIDTH> placed{};
-        for (std::uint32_t c = 0; c < children.size(); ++c) {
-            const bool leaf = tree.nodes[children[c]].isLeaf();
-            placed[slots[c]] = {leaf ? Kind::Leaf : Kind::Internal, children[c], 0};
+        for (std::uint32_t c = 0; c < children.count; ++c) {
+            const bool leaf = tree.nodes[children.nodes[c]].isLeaf();
+            placed[slots[c]] = {leaf ? Kind::Leaf : Kind::Internal, children.nodes[c], 0};
         }
         for (WideDraftChild& child : placed) {
             if (child.kind != Kind::Internal) continue;
@@ -171,7 +190,7 @@ std::uint32_t quantiseHigh(float origin, float hi, float scale) {
 }
 
 // The smallest biased exponent whose grid of 255 steps from `origin` reaches past every bound.
-std::uint32_t axisExponent(float origin, float extent, const std::vector<float>& highs) {
+std::uint32_t axisExponent(float origin, float extent, std::span<const float> highs) {
     std::uint32_t e = 1;
     if (extent > 0.0f) {
         int exponent = int(std::ceil(std::log2(double(extent) / kQuantisedMax)));
@@ -202,10 +221,13 @@ void quantiseChildren(const BvhTree& tree, const WideDraftNode& draft, gpu::Wide
     node.origin = box.min;
     std::uint32_t exponents[3];
     for (int axis = 0; axis < 3; ++axis) {
-        std::vector<float> highs;
+        std::array<float, WIDE_BVH_WIDTH> highs{};
+        std::size_t count = 0;
         for (const WideDraftChild& child : draft.slots)
-            if (child.kind != Kind::Empty) highs.push_back(tree.nodes[child.binaryNode].bounds.max[axis]);
-        exponents[axis] = axisExponent(box.min[axis], box.max[axis] - box.min[axis], highs);
+            if (child.kind != Kind::Empty)
+                highs[count++] = tree.nodes[child.binaryNode].bounds.max[axis];
+        exponents[axis] = axisExponent(box.min[axis], box.max[axis] - box.min[axis],
+                                       std::span<const float>(highs.data(), count));
     }
     node.slotsAndExponents |= (exponents[0] << 8) | (exponents[1] << 16) | (exponents[2] << 24);
     for (std::uint32_t slot = 0; slot < WIDE_BVH_WIDTH; ++slot) {
