@@ -7,6 +7,10 @@
 
 #include "app/command_line.h"
 #include "app/convergence_options.h"
+#include "app/farm_options.h"
+#include "app/interrupt.h"
+#include "app/output_checks.h"
+#include "app/render_part.h"
 #include "app/render_options.h"
 #include "app/render_report.h"
 #include "app/scene_setup.h"
@@ -23,6 +27,7 @@ const char* const kProgram = "vkpt-ref";
 struct Invocation {
     RenderSettings settings;
     ConvergenceSettings convergence; // --reference only: the CPU renders each pixel to the end
+    FarmSettings farm;
     bool showHelp = false;
 };
 
@@ -31,6 +36,7 @@ Invocation parseArguments(int argc, char** argv) {
     CommandLine commandLine(kProgram);
     addRenderOptions(commandLine, invocation.settings);
     addConvergenceOptions(commandLine, invocation.convergence, ConvergenceOptionSet::ReferenceOnly);
+    addFarmOptions(commandLine, invocation.farm);
     commandLine.add({"help", {'h'}, "", "show this help", [&](auto) { invocation.showHelp = true; }});
     std::vector<std::string> arguments(argv + 1, argv + argc);
     std::vector<std::string> positional = commandLine.parse(arguments);
@@ -41,18 +47,13 @@ Invocation parseArguments(int argc, char** argv) {
     if (positional.size() > 1) throw InputError("more than one scene file given");
     if (!positional.empty()) invocation.settings.scenePath = positional[0];
     validateRenderSettings(invocation.settings);
+    validateFarmSettings(invocation.farm, invocation.settings);
     return invocation;
 }
 
 std::string deviceDescription(const RenderSettings& settings) {
     unsigned threads = settings.threads ? settings.threads : std::thread::hardware_concurrency();
     return "CPU, " + std::to_string(threads) + " threads";
-}
-
-void writeOutputs(const RenderOutput& output, const RenderSettings& settings) {
-    writeImage(output.image, settings.outputPath, settings.exposure);
-    std::string heatMap = heatMapPathFor(settings.outputPath);
-    writeSampleCountHeatMap(output.sampleCounts, output.image.width, output.image.height, heatMap);
 }
 
 // The reference renders every pixel to its end, so its curve is one point: the final image.
@@ -70,16 +71,36 @@ std::optional<ConvergenceReport> finalError(const ConvergenceSettings& convergen
     return ConvergenceReport{convergence, ConvergenceStop::Budget, false, tracker.curve()};
 }
 
-void run(const RenderSettings& settings, const ConvergenceSettings& convergence) {
+ReferenceOptions referenceOptions(RenderPart& part) {
+    ReferenceOptions options;
+    options.plan = part.plan();
+    options.resume = part.resumeRecords();
+    options.interrupt = &stopRequested();
+    options.checkpointSeconds = part.checkpointSeconds();
+    if (options.checkpointSeconds > 0.0) options.checkpoint = part.checkpointWriter();
+    return options;
+}
+
+// Returns the exit code: 0, or 128 + the signal that stopped the render.
+int run(const Invocation& invocation) {
+    const RenderSettings& settings = invocation.settings;
+    const ConvergenceSettings& convergence = invocation.convergence;
+    // Every output path and a resumed state first: a typo costs a second, not the render.
+    checkOutputPaths(settings);
+    RenderPart part(kProgram, settings, invocation.farm);
     std::optional<Image> reference;
     if (!convergence.referencePath.empty())
         reference = loadReference(convergence.referencePath, settings.width, settings.height);
     SceneSetup setup = setUpScene(settings, kProgram);
+    part.attachScene(setup);
+    installStopHandlers();
     RenderReport report;
     report.program = kProgram;
     report.settings = &settings;
-    RenderOutput output = renderReference(setup.prepared, setup.camera, settings, report.stats);
-    writeOutputs(output, settings);
+    const ReferenceResult result = renderReferenceParts(setup.prepared, setup.camera, settings,
+                                                        report.stats, referenceOptions(part));
+    const RenderOutput& output = result.output;
+    part.writeResults(output, result.records, result.interrupted);
     report.device = deviceDescription(settings);
     report.bvh = setup.prepared.bvhStats;
     report.triangles = setup.prepared.triangles.size();
@@ -91,6 +112,7 @@ void run(const RenderSettings& settings, const ConvergenceSettings& convergence)
                                     report.stats, settings.samplesPerPixel);
     printRenderSummary(report);
     if (!settings.statsJsonPath.empty()) writeStatsJson(report, settings.statsJsonPath);
+    return result.interrupted ? exitCodeForStop() : 0;
 }
 
 } // namespace
@@ -98,8 +120,7 @@ void run(const RenderSettings& settings, const ConvergenceSettings& convergence)
 int main(int argc, char** argv) {
     try {
         Invocation invocation = parseArguments(argc, argv);
-        if (!invocation.showHelp) run(invocation.settings, invocation.convergence);
-        return 0;
+        return invocation.showHelp ? 0 : run(invocation);
     } catch (const vkpt::InputError& error) {
         return vkpt::reportFailure(kProgram, error, 1);
     } catch (const std::exception& error) {
