@@ -88,12 +88,13 @@ int run(const Invocation& invocation) {
     // Every output path and a resumed state first: a typo costs a second, not the render.
     checkOutputPaths(settings);
     RenderPart part(kProgram, settings, invocation.farm);
+    // Before the load, so that a stop during it still ends with the image and the state.
+    installStopHandlers();
     std::optional<Image> reference;
     if (!convergence.referencePath.empty())
         reference = loadReference(convergence.referencePath, settings.width, settings.height);
     SceneSetup setup = setUpScene(settings, kProgram);
     part.attachScene(setup);
-    installStopHandlers();
     RenderReport report;
     report.program = kProgram;
     report.settings = &settings;
