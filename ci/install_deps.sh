@@ -10,6 +10,10 @@ packages=(
     libglm-dev libstb-dev libtinygltf-dev
     libgtest-dev
     gnuplot-nox # the trade study's plots (vkpt-study; the CI test label `study` draws them)
+    libopenexr-dev # OpenEXR output: render states, AOVs (host/state)
+    # Tests only: oiiotool reads the EXR layers as compositors do (label farm); a private Slurm
+    # runs the array-job recipe (label slurm); python3-yaml parses the OpenJD template (farm).
+    openimageio-tools slurm-wlm munge python3-yaml
 )
 
 missing=()
