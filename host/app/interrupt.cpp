@@ -20,7 +20,9 @@ extern "C" void onStopSignal(int signal) {
 
 } // namespace
 
-const std::atomic<bool>& stopRequested() { return requested; }
+const std::atomic<bool>& stopRequested() {
+    return requested;
+}
 
 void installStopHandlers() {
     struct sigaction action {};

@@ -20,8 +20,7 @@ void checkWritable(const std::string& path) {
     const fs::path parent = fs::path(path).parent_path();
     const fs::path folder = parent.empty() ? fs::path(".") : parent;
     std::error_code error;
-    if (fs::is_directory(path, error))
-        throw InputError(path + ": is a folder, not a file name");
+    if (fs::is_directory(path, error)) throw InputError(path + ": is a folder, not a file name");
     if (!fs::exists(folder, error))
         throw InputError(path + ": cannot write: the folder '" + folder.string() +
                          "' does not exist");

@@ -18,7 +18,9 @@ namespace vkpt {
 
 namespace {
 
-bool isExr(const std::string& path) { return detail::lowerCaseExtension(path) == ".exr"; }
+bool isExr(const std::string& path) {
+    return detail::lowerCaseExtension(path) == ".exr";
+}
 
 // The samples the records hold, as the ranges of their region: uniform sampling takes the same
 // samples in every pixel, [begin, begin + taken); adaptive sampling the prefix [0, B) that the
@@ -129,11 +131,11 @@ void RenderPart::writeResults(const RenderOutput& output, const std::vector<Pixe
         try {
             writeStateFile(state, rescue);
         } catch (const std::exception& second) {
-            throw InputError(std::string(error.what()) + "; saving the state failed too: " +
-                             second.what());
+            throw InputError(std::string(error.what()) +
+                             "; saving the state failed too: " + second.what());
         }
-        throw InputError(std::string(error.what()) + "; the render's state is saved in " +
-                         rescue + " (resume or merge it from there)");
+        throw InputError(std::string(error.what()) + "; the render's state is saved in " + rescue +
+                         " (resume or merge it from there)");
     }
 }
 

@@ -31,12 +31,14 @@ struct Invocation {
 Invocation parseArguments(int argc, char** argv) {
     Invocation invocation;
     CommandLine commandLine(kProgram);
-    commandLine.add({"output", {'o'}, "FILE",
+    commandLine.add({"output",
+                     {'o'},
+                     "FILE",
                      ".exr: the merged state and image; .png, .pfm, .hdr: the image, and the "
                      "state beside it (NAME_state.exr)",
                      [&](auto v) { invocation.outputPath = v[0]; }});
-    commandLine.add({"quiet", {'q'}, "", "print nothing on success",
-                     [&](auto) { invocation.quiet = true; }});
+    commandLine.add(
+        {"quiet", {'q'}, "", "print nothing on success", [&](auto) { invocation.quiet = true; }});
     commandLine.add(
         {"help", {'h'}, "", "show this help", [&](auto) { invocation.showHelp = true; }});
     std::vector<std::string> arguments(argv + 1, argv + argc);
@@ -52,7 +54,8 @@ Invocation parseArguments(int argc, char** argv) {
 
 std::vector<StatePart> readParts(const std::vector<std::string>& paths) {
     std::vector<StatePart> parts;
-    for (const std::string& path : paths) parts.push_back({path, readStateFile(path)});
+    for (const std::string& path : paths)
+        parts.push_back({path, readStateFile(path)});
     return parts;
 }
 

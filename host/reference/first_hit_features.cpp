@@ -67,8 +67,10 @@ std::vector<FeatureRecord> renderFirstHitFeatures(const PreparedScene& scene,
     const unsigned count = std::max(
         1u, std::min(threads ? threads : std::thread::hardware_concurrency(), window.height()));
     std::vector<std::thread> workers;
-    for (unsigned i = 0; i < count; ++i) workers.emplace_back(featureWorker, std::ref(job));
-    for (std::thread& worker : workers) worker.join();
+    for (unsigned i = 0; i < count; ++i)
+        workers.emplace_back(featureWorker, std::ref(job));
+    for (std::thread& worker : workers)
+        worker.join();
     return features;
 }
 

@@ -32,8 +32,8 @@ std::string folderOf(const std::string& path) {
 
 std::string temporaryPathFor(const std::string& path) {
     const std::filesystem::path p(path);
-    return (p.parent_path() / ("." + p.filename().string() + ".partial-" +
-                               std::to_string(::getpid())))
+    return (p.parent_path() /
+            ("." + p.filename().string() + ".partial-" + std::to_string(::getpid())))
         .string();
 }
 

@@ -16,13 +16,14 @@ float saturatedFloat(double value) {
 
 } // namespace
 
-PixelRect fullFrame(std::uint32_t width, std::uint32_t height) { return {0, 0, width, height}; }
+PixelRect fullFrame(std::uint32_t width, std::uint32_t height) {
+    return {0, 0, width, height};
+}
 
 PixelRect boundingRect(const PixelRect& a, const PixelRect& b) {
     if (a.empty()) return b;
     if (b.empty()) return a;
-    return {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1),
-            std::max(a.y1, b.y1)};
+    return {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
 }
 
 std::string describeRect(const PixelRect& r) {

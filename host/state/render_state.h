@@ -60,10 +60,10 @@ struct Region {
 // a Pairwise Algorithm for Computing Sample Variances", 1979); doubles, so that the reference's
 // accumulators round-trip and the device's floats fit without loss.
 struct PixelRecord {
-    glm::dvec3 mean{0.0};       // radiance, over the finite samples
-    double luminanceMean = 0.0; // Welford mean of the per-sample luminance
-    double luminanceM2 = 0.0;   // Welford sum of squared deviations
-    std::uint32_t count = 0;    // finite samples accumulated
+    glm::dvec3 mean{0.0};           // radiance, over the finite samples
+    double luminanceMean = 0.0;     // Welford mean of the per-sample luminance
+    double luminanceM2 = 0.0;       // Welford sum of squared deviations
+    std::uint32_t count = 0;        // finite samples accumulated
     std::uint32_t samplesTaken = 0; // samples traced, non-finite ones included
     bool converged = false;         // adaptive sampling stopped the pixel
 };

@@ -22,8 +22,7 @@ const char* integratorName(const RenderSettings& s) {
     case Integrator::Path:
         return "path";
     case Integrator::Direct:
-        return s.lightSampling == LightSampling::Hemisphere ? "direct-hemisphere"
-                                                            : "direct-light";
+        return s.lightSampling == LightSampling::Hemisphere ? "direct-hemisphere" : "direct-light";
     case Integrator::Normals:
         return "normals";
     }
@@ -69,8 +68,8 @@ std::string settingsKey(const RenderSettings& s) {
     std::string key = "integrator=" + std::string(integratorName(s));
     key += " max-depth=" + std::to_string(s.maxDepth);
     key += " rr-depth=" + std::to_string(s.rrStartDepth);
-    key += " light-samples=" + std::to_string(s.integrator == Integrator::Normals ? 0u
-                                                                                 : s.lightSamples);
+    key += " light-samples=" +
+           std::to_string(s.integrator == Integrator::Normals ? 0u : s.lightSamples);
     key += " path-filter=" + std::to_string(static_cast<std::uint32_t>(s.pathFilter));
     key += " clamp=" + exactFloat(s.clamp);
     key += " adaptive=" + adaptiveKey(s);

@@ -43,7 +43,9 @@ SplitDouble splitDouble(double value) {
     return s;
 }
 
-double joinDouble(float hi, float lo) { return double(hi) + double(lo); }
+double joinDouble(float hi, float lo) {
+    return double(hi) + double(lo);
+}
 
 // Every channel of the file: name, type and one value per window pixel.
 struct Channels {
@@ -268,10 +270,13 @@ struct ReadChannels {
     bool hasFeatures = false;
 
     explicit ReadChannels(std::size_t n) {
-        for (auto* v : {&lumMean, &lumMeanLo, &m2, &m2Lo, &depth}) v->resize(n);
-        for (auto* v : {&count, &taken, &converged}) v->resize(n);
+        for (auto* v : {&lumMean, &lumMeanLo, &m2, &m2Lo, &depth})
+            v->resize(n);
+        for (auto* v : {&count, &taken, &converged})
+            v->resize(n);
         for (int k = 0; k < 3; ++k)
-            for (auto* v : {&mean[k], &meanLo[k], &albedo[k], &normal[k]}) v->resize(n);
+            for (auto* v : {&mean[k], &meanLo[k], &albedo[k], &normal[k]})
+                v->resize(n);
     }
 };
 
@@ -292,10 +297,10 @@ void insertSlices(const Imf::Header& header, ReadChannels& r, Imf::FrameBuffer& 
     r.hasFeatures = header.channels().findChannel("Z") != nullptr;
     if (!r.hasFeatures) return;
     for (int k = 0; k < 3; ++k) {
-        readInto(header, frame, (std::string("albedo.") + kRgb[k]).c_str(), Imf::FLOAT,
-                 r.albedo[k], path);
-        readInto(header, frame, (std::string("normal.") + kXyz[k]).c_str(), Imf::FLOAT,
-                 r.normal[k], path);
+        readInto(header, frame, (std::string("albedo.") + kRgb[k]).c_str(), Imf::FLOAT, r.albedo[k],
+                 path);
+        readInto(header, frame, (std::string("normal.") + kXyz[k]).c_str(), Imf::FLOAT, r.normal[k],
+                 path);
     }
     readInto(header, frame, "Z", Imf::FLOAT, r.depth, path);
 }
@@ -305,7 +310,8 @@ void fillRecords(const ReadChannels& r, RenderState& state) {
     state.pixels.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
         PixelRecord& p = state.pixels[i];
-        for (int k = 0; k < 3; ++k) p.mean[k] = joinDouble(r.mean[k][i], r.meanLo[k][i]);
+        for (int k = 0; k < 3; ++k)
+            p.mean[k] = joinDouble(r.mean[k][i], r.meanLo[k][i]);
         p.count = r.count[i];
         p.samplesTaken = r.taken[i];
         p.converged = r.converged[i] != 0;
@@ -362,9 +368,8 @@ void writeStateFile(const RenderState& state, const std::string& path) {
     addImageChannels(state, channels);
     addFeatureChannels(state, channels);
     addMomentChannels(state, channels);
-    writeAtomically(path, [&](const std::string& temporary) {
-        writeChannels(state, channels, temporary);
-    });
+    writeAtomically(
+        path, [&](const std::string& temporary) { writeChannels(state, channels, temporary); });
 }
 
 RenderState readStateFile(const std::string& path) {

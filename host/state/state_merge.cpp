@@ -22,8 +22,8 @@ void checkSameRender(const StatePart& first, const StatePart& part) {
     const StateIdentity& a = first.state.identity;
     const StateIdentity& b = part.state.identity;
     if (b.sceneHash != a.sceneHash)
-        refuse(part, "another scene than " + first.path + " (scene hash " + b.sceneHash +
-                         ", not " + a.sceneHash + ")");
+        refuse(part, "another scene than " + first.path + " (scene hash " + b.sceneHash + ", not " +
+                         a.sceneHash + ")");
     if (b.width != a.width || b.height != a.height)
         refuse(part, "image size " + std::to_string(b.width) + "x" + std::to_string(b.height) +
                          " differs from " + first.path + "'s " + std::to_string(a.width) + "x" +
@@ -32,8 +32,8 @@ void checkSameRender(const StatePart& first, const StatePart& part) {
         refuse(part, "settings '" + b.settings + "' differ from " + first.path + "'s '" +
                          a.settings + "'");
     if (b.seed != a.seed)
-        refuse(part, "seed " + std::to_string(b.seed) + " differs from " + first.path +
-                         "'s seed " + std::to_string(a.seed));
+        refuse(part, "seed " + std::to_string(b.seed) + " differs from " + first.path + "'s seed " +
+                         std::to_string(a.seed));
 }
 
 namespace {
@@ -81,8 +81,8 @@ void foldPart(RenderState& merged, const RenderState& part, std::vector<bool>& h
         for (std::uint32_t x = w.x0; x < w.x1; ++x) {
             PixelRecord& target = merged.at(x, y);
             target = combineRecords(target, part.at(x, y));
-            const std::size_t i = std::size_t(y - merged.window.y0) * merged.window.width() +
-                                  (x - merged.window.x0);
+            const std::size_t i =
+                std::size_t(y - merged.window.y0) * merged.window.width() + (x - merged.window.x0);
             const std::size_t j = std::size_t(y - w.y0) * w.width() + (x - w.x0);
             // Every part computes the same features for a pixel (a function of the pixel
             // alone, docs/distributed.md); the first part that has them gives them.
@@ -102,9 +102,11 @@ FeatureRecord noSurface() {
 } // namespace
 
 void checkPartsCompatible(const std::vector<StatePart>& parts) {
-    for (std::size_t i = 1; i < parts.size(); ++i) checkSameRender(parts[0], parts[i]);
+    for (std::size_t i = 1; i < parts.size(); ++i)
+        checkSameRender(parts[0], parts[i]);
     for (std::size_t i = 0; i < parts.size(); ++i)
-        for (std::size_t j = i + 1; j < parts.size(); ++j) checkNoSharedSamples(parts[i], parts[j]);
+        for (std::size_t j = i + 1; j < parts.size(); ++j)
+            checkNoSharedSamples(parts[i], parts[j]);
 }
 
 RenderState mergeStates(std::vector<StatePart> parts) {
@@ -117,12 +119,14 @@ RenderState mergeStates(std::vector<StatePart> parts) {
     RenderState merged;
     merged.identity = parts[0].state.identity;
     merged.origin = {"vkpt-merge", parts[0].state.origin.scene, ""};
-    for (const StatePart& part : parts) merged.window = boundingRect(merged.window, part.state.window);
+    for (const StatePart& part : parts)
+        merged.window = boundingRect(merged.window, part.state.window);
     merged.regions = joinedRegions(parts);
     merged.pixels.assign(merged.window.area(), PixelRecord{});
     merged.features.assign(merged.window.area(), noSurface());
     std::vector<bool> hasFeatures(merged.window.area(), false);
-    for (const StatePart& part : parts) foldPart(merged, part.state, hasFeatures);
+    for (const StatePart& part : parts)
+        foldPart(merged, part.state, hasFeatures);
     return merged;
 }
 

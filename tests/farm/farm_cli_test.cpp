@@ -38,8 +38,9 @@ protected:
     // A part of a 16×16 render: task 1 of 2 of `spp` samples.
     std::vector<std::string> task(const char* program, std::uint32_t spp, const std::string& out,
                                   std::vector<std::string> extra = {}) {
-        std::vector<std::string> a = {"-q", "--spp", std::to_string(spp), "--res", "16", "16",
-                                      "--task", "1/2", "-o", path(out)};
+        std::vector<std::string> a = {
+            "-q", "--spp",  std::to_string(spp), "--res", "16", "16", "--task", "1/2",
+            "-o", path(out)};
         a.insert(a.end(), extra.begin(), extra.end());
         return command(program, a);
     }
@@ -66,7 +67,8 @@ protected:
                                         const std::string& started, double relative) {
         ASSERT_EQ(runProcess(task(program, spp, "full.exr")).exitCode, 0);
 
-        Child killed = spawnWithStderrPipe(task(program, spp, "killed.exr", {"--checkpoint", "0.05"}));
+        Child killed =
+            spawnWithStderrPipe(task(program, spp, "killed.exr", {"--checkpoint", "0.05"}));
         std::string text;
         if (!readUntil(killed.stderrFd, "checkpoint: wrote", text)) {
             finish(killed, text);
@@ -99,7 +101,8 @@ protected:
     void expectMergeRefused(const std::vector<std::string>& parts, const std::string& culprit,
                             const std::string& reason) {
         std::vector<std::string> a = {VKPT_MERGE, "-o", path("refused.exr")};
-        for (const std::string& p : parts) a.push_back(path(p));
+        for (const std::string& p : parts)
+            a.push_back(path(p));
         const Finished f = runProcess(a);
         EXPECT_EQ(f.exitCode, 1) << f.stderrText;
         EXPECT_EQ(lineCount(f.stderrText), 1) << f.stderrText;
@@ -126,8 +129,8 @@ TEST_F(FarmCli, BadOutputPathsFailBeforeTheSceneLoads) {
         std::string message;
     };
     const std::vector<Case> cases = {
-        {{"-o", missing}, missing + ": cannot write: the folder '" + path("missing") +
-                              "' does not exist"},
+        {{"-o", missing},
+         missing + ": cannot write: the folder '" + path("missing") + "' does not exist"},
         {{"-o", path("x.tiff")},
          path("x.tiff") + ": unknown image extension '.tiff' (use .png, .pfm, .hdr or .exr)"},
         {{"-o", path("x.exr"), "--stats-json", path("missing/s.json")},
@@ -148,8 +151,8 @@ TEST_F(FarmCli, BadOutputPathsFailBeforeTheSceneLoads) {
 }
 
 TEST_F(FarmCli, TasksAndAdaptiveSamplingAreRefusedTogether) {
-    const Finished f = runProcess(command(
-        VKPT_REF, {"--task", "0/2", "--adaptive", "16", "0.1", "-o", path("x.exr")}));
+    const Finished f = runProcess(
+        command(VKPT_REF, {"--task", "0/2", "--adaptive", "16", "0.1", "-o", path("x.exr")}));
     EXPECT_EQ(f.exitCode, 1);
     EXPECT_EQ(f.stderrText, "vkpt-ref: error: options --task and --adaptive: an adaptive pixel's "
                             "stop depends on all its samples, so tasks cannot share them; split "
@@ -167,8 +170,7 @@ TEST_F(FarmCli, AFailedFinalWriteSavesTheStateToARescueFile) {
     kill(child.pid, SIGTERM);
     const Finished f = finish(child, text);
     EXPECT_EQ(f.exitCode, 1) << f.stderrText;
-    const std::string rescue =
-        path("vkpt-rescue-" + std::to_string(child.pid) + "-x_state.exr");
+    const std::string rescue = path("vkpt-rescue-" + std::to_string(child.pid) + "-x_state.exr");
     EXPECT_NE(f.stderrText.find("the render's state is saved in " + rescue), std::string::npos)
         << f.stderrText;
     EXPECT_GT(readStateFile(rescue).pixels.at(0).count, 0u);
@@ -176,14 +178,14 @@ TEST_F(FarmCli, AFailedFinalWriteSavesTheStateToARescueFile) {
 
 TEST_F(FarmCli, DeviceAndCpuPartsMergeIntoTheReferenceImage) {
     const auto part = [&](const char* program, const std::string& task, const std::string& out) {
-        return runProcess(command(program, {"-q", "--spp", "12", "--res", "16", "16", "--task",
-                                            task, "-o", path(out)}));
+        return runProcess(command(
+            program, {"-q", "--spp", "12", "--res", "16", "16", "--task", task, "-o", path(out)}));
     };
     ASSERT_EQ(part(VKPT, "0/3", "t0.exr").exitCode, 0);
     ASSERT_EQ(part(VKPT_REF, "1/3", "t1.exr").exitCode, 0);
     ASSERT_EQ(part(VKPT, "2/3", "t2.exr").exitCode, 0);
-    ASSERT_EQ(runProcess(command(VKPT_REF, {"-q", "--spp", "12", "--res", "16", "16", "-o",
-                                            path("one.exr")}))
+    ASSERT_EQ(runProcess(command(VKPT_REF,
+                                 {"-q", "--spp", "12", "--res", "16", "16", "-o", path("one.exr")}))
                   .exitCode,
               0);
     const Finished merged = runProcess(
@@ -206,8 +208,8 @@ TEST_F(FarmCli, DeviceAndCpuPartsMergeIntoTheReferenceImage) {
 TEST_F(FarmCli, MergeRefusesPartsThatDoNotBelongTogether) {
     const auto part = [&](const std::string& out, std::vector<std::string> extra,
                           const std::string& scene = kScene) {
-        std::vector<std::string> a = {VKPT_REF, "-q", "--spp", "4", "--res", "8", "8", "-o",
-                                      path(out)};
+        std::vector<std::string> a = {VKPT_REF, "-q", "--spp", "4",      "--res",
+                                      "8",      "8",  "-o",    path(out)};
         a.insert(a.end(), extra.begin(), extra.end());
         a.push_back(scene);
         ASSERT_EQ(runProcess(a).exitCode, 0) << out;
@@ -222,9 +224,9 @@ TEST_F(FarmCli, MergeRefusesPartsThatDoNotBelongTogether) {
     std::filesystem::resize_file(path("truncated.exr"),
                                  std::filesystem::file_size(path("a1.exr")) / 2);
     std::filesystem::copy_file(path("a0_rate.png"), path("png.exr"));
-    ASSERT_EQ(runProcess({"/usr/bin/oiiotool", "--create", "8x8", "3", "-o", path("plain.exr")})
-                  .exitCode,
-              0)
+    ASSERT_EQ(
+        runProcess({"/usr/bin/oiiotool", "--create", "8x8", "3", "-o", path("plain.exr")}).exitCode,
+        0)
         << "oiiotool (Debian's openimageio-tools) is a test dependency: bash ci/install_deps.sh";
 
     expectMergeRefused({"a0.exr", "seed.exr"}, "seed.exr", "seed 5 differs");
@@ -235,7 +237,8 @@ TEST_F(FarmCli, MergeRefusesPartsThatDoNotBelongTogether) {
     expectMergeRefused({"a0.exr", "png.exr"}, "png.exr", "not a readable OpenEXR render state");
     expectMergeRefused({"a0.exr", "plain.exr"}, "plain.exr", "without vkpt's metadata");
     expectMergeRefused({"a0.exr", "gone.exr"}, "gone.exr", "cannot read: No such file");
-    const Finished ok = runProcess({VKPT_MERGE, "-o", path("ok.exr"), path("a1.exr"), path("a0.exr")});
+    const Finished ok =
+        runProcess({VKPT_MERGE, "-o", path("ok.exr"), path("a1.exr"), path("a0.exr")});
     EXPECT_EQ(ok.exitCode, 0) << ok.stderrText;
 }
 

@@ -63,7 +63,8 @@ TEST(PixelRecords, ChanCombinationEqualsOneRunningSum) {
     std::mt19937 random(7);
     std::lognormal_distribution<double> radiance(0.0, 2.0);
     std::vector<double> values(1000);
-    for (double& v : values) v = radiance(random);
+    for (double& v : values)
+        v = radiance(random);
     const PixelRecord all = welford(values);
     for (std::size_t split : {std::size_t(0), std::size_t(1), std::size_t(333), std::size_t(999)}) {
         const PixelRecord a = welford({values.begin(), values.begin() + long(split)});
@@ -136,7 +137,8 @@ TEST_F(StateFile, RoundTripsTheMomentsTheFeaturesAndTheMetadata) {
         const PixelRecord& a = read.pixels[i];
         const PixelRecord& b = written.pixels[i];
         // Two floats hold about 48 of a double's 53 bits.
-        for (int c = 0; c < 3; ++c) EXPECT_NEAR(a.mean[c], b.mean[c], 1e-14 * b.mean[c]);
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(a.mean[c], b.mean[c], 1e-14 * b.mean[c]);
         EXPECT_NEAR(a.luminanceMean, b.luminanceMean, 1e-14 * b.luminanceMean);
         EXPECT_NEAR(a.luminanceM2, b.luminanceM2, 1e-14 * b.luminanceM2);
         EXPECT_EQ(a.count, b.count);
@@ -248,9 +250,8 @@ TEST(StateMerge, RefusesPartsOfAnotherRender) {
 }
 
 TEST(StateMerge, RefusesSamplesTakenTwice) {
-    const std::string message =
-        mergeRefusal({taskPart("a.exr", {0, 4}), taskPart("b.exr", {8, 12}),
-                      taskPart("c.exr", {3, 8})});
+    const std::string message = mergeRefusal(
+        {taskPart("a.exr", {0, 4}), taskPart("b.exr", {8, 12}), taskPart("c.exr", {3, 8})});
     EXPECT_EQ(message, "c.exr: its samples [3,8) of pixels x 5..21, y 7..18 are also in a.exr");
     // Disjoint rectangles may share sample indices: those are other pixels' samples.
     StatePart left = taskPart("left.exr", {0, 4});
