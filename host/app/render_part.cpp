@@ -10,6 +10,7 @@
 #include "image/image_io.h"
 #include "prepare/scene_hash.h"
 #include "reference/first_hit_features.h"
+#include "reference/stack_intersector.h"
 #include "state/atomic_write.h"
 #include "state/state_file.h"
 #include "state/state_merge.h"
@@ -84,8 +85,9 @@ void RenderPart::checkResumable(const RenderState& resumed) {
 RenderState RenderPart::stateOf(const std::vector<PixelRecord>& records) {
     VKPT_ASSERT(setup_ != nullptr, "attachScene comes first");
     if (features_.empty())
-        features_ = renderFirstHitFeatures(setup_->prepared, setup_->camera, settings_.seed,
-                                           plan_.crop, settings_.threads);
+        features_ = renderFirstHitFeatures(setup_->prepared, StackIntersectors(setup_->prepared),
+                                           setup_->camera, settings_.seed, plan_.crop,
+                                           settings_.threads);
     RenderState state;
     state.identity = identity_;
     state.origin.program = program_;

@@ -40,6 +40,7 @@ void writeStats(JsonWriter& json, const RenderReport& r) {
     const RenderStats& st = r.stats;
     json.key("render").beginObject();
     json.field("seconds", st.seconds).field("loadSeconds", r.loadSeconds);
+    json.field("cpuSeconds", st.cpuSeconds);
     json.key("rays").beginObject();
     json.field("camera", st.rays.camera).field("extension", st.rays.extension);
     json.field("shadow", st.rays.shadow).field("total", st.rays.total());
@@ -122,10 +123,16 @@ void printRenderSummary(const RenderReport& r) {
     std::printf("%s: %s, %ux%u, %.3f s, %.2f Mrays/s on %s\n", r.program.c_str(),
                 r.settings->outputPath.c_str(), r.settings->width, r.settings->height, st.seconds,
                 st.megaRaysPerSecond(), r.device.c_str());
-    std::printf("  rays: %llu camera, %llu extension, %llu shadow; %.1f nodes and %.1f triangle "
-                "tests per ray\n",
+    std::printf("  rays: %llu camera, %llu extension, %llu shadow; ",
                 (unsigned long long)st.rays.camera, (unsigned long long)st.rays.extension,
-                (unsigned long long)st.rays.shadow, st.nodesPerRay(), st.trianglesPerRay());
+                (unsigned long long)st.rays.shadow);
+    // Every counted walk tests the root box, so no nodes means a traversal that does not count
+    // (embree-ref's Embree).
+    if (st.nodesVisited > 0 || st.rays.total() == 0)
+        std::printf("%.1f nodes and %.1f triangle tests per ray\n", st.nodesPerRay(),
+                    st.trianglesPerRay());
+    else
+        std::printf("traversal work not counted\n");
     double share = st.uniformBudget ? 100.0 * double(st.samplesTaken) / double(st.uniformBudget) : 0;
     std::printf("  samples: %llu of a uniform budget of %llu (%.1f %%)", (unsigned long long)st.samplesTaken,
                 (unsigned long long)st.uniformBudget, share);

@@ -5,6 +5,8 @@
 #include <array>
 #include <utility>
 
+#include "bvh/pair_box_test.h"
+#include "bvh/ray_triangle_test.h"
 #include "common/errors.h"
 #include "shared/intersect.h"
 #include "shared/sphere.h"
@@ -13,42 +15,54 @@ namespace vkpt {
 
 namespace {
 
-// What every walk carries: the ray with its precomputed inverse direction, the best hit so
-// far (whose t is the walk's current tMax) and the optional counters.
+// What every walk carries: the ray with its inverse direction and triangle test data, the best hit
+// so far (whose t is the walk's current tMax) and its work, counted in locals and added to the
+// caller's counters once, at the end.
 struct Walk {
     const RayQuery& ray;
     glm::vec3 invDirection;
-    gpu::ShearedRay sheared; // the watertight test's per-ray shear, computed once per walk
+    RayTriangleTest triangleTest;
     ClosestHit best;
+    std::uint64_t boxTests = 0;
+    std::uint64_t primitiveTests = 0;
     TraversalCounters* counters;
 
     Walk(const RayQuery& r, TraversalCounters* c)
         : ray(r), invDirection(gpu::safeInverseDirection(r.direction)),
-          sheared(gpu::shearRay(r.direction)), counters(c) {
+          triangleTest(r.origin, r.direction), counters(c) {
         best.t = r.tMax;
     }
+    ~Walk() {
+        if (counters == nullptr) return;
+        counters->nodesVisited += boxTests;
+        counters->triangleTests += primitiveTests;
+    }
+    Walk(const Walk&) = delete;
+    Walk& operator=(const Walk&) = delete;
 
     // Box entry distance, or VKPT_FAR when the box is missed or lies beyond the best hit.
     float enterBox(const glm::vec3& boxMin, const glm::vec3& boxMax) {
-        if (counters) ++counters->nodesVisited;
+        ++boxTests;
         return gpu::intersectBox(ray.origin, invDirection, boxMin, boxMax, ray.tMin, best.t);
     }
 
-    // Tests one primitive against (tMin, best t], before the first hit (tMin, tMax); a hit the
-    // filter accepts becomes the best if it precedes it (intersect.h, crossingPrecedes).
+    // Tests one primitive against (tMin, best t], before the first hit (tMin, tMax); a hit
+    // becomes the best if it precedes it (intersect.h, crossingPrecedes) and unless the
+    // primitive is alpha-masked and the filter rejects it.
     bool testTriangle(std::span<const gpu::Triangle> triangles, std::uint32_t index) {
-        if (counters) ++counters->triangleTests;
+        ++primitiveTests;
         const gpu::Triangle& tri = triangles[index];
         const float tMax = best.hit ? gpu::nextFloatUp(best.t) : best.t;
-        gpu::TriangleHit h =
-            gpu::isSpherePrimitive(tri)
-                ? gpu::intersectSphere(ray.origin, ray.direction, tri.v0, tri.v1.x, ray.tMin, tMax)
-                : gpu::intersectTriangleWatertight(ray.origin, sheared, tri.v0, tri.v1, tri.v2,
-                                                   ray.tMin, tMax);
+        gpu::TriangleHit h = gpu::isSpherePrimitive(tri)
+                                 ? gpu::intersectSphere(ray.origin, ray.direction, tri.v0, tri.v1.x,
+                                                        ray.tMin, tMax)
+                                 : triangleTest.intersect(tri.v0, tri.v1, tri.v2, ray.tMin, tMax);
         if (!h.hit) return false;
         if (!gpu::crossingPrecedes(h.t, index, best.t, best.hit ? best.triangle : NO_PRIMITIVE))
             return false;
-        if (ray.filter != nullptr && !ray.filter->accepts(index, ray, h)) return false;
+        if (ray.filter != nullptr && gpu::isAlphaMaskedPrimitive(tri) &&
+            !ray.filter->accepts(index, ray, h))
+            return false;
         best = {h.t, h.u, h.v, index, true};
         return true;
     }
@@ -73,9 +87,16 @@ ClosestHit finish(const Walk& walk) {
 // times it may hold a crossing at that t.
 constexpr float kBoxExitMargin = 1.0000004f;
 
+// Whether a box entered at `entry` may still hold the best crossing: it may tie with the best
+// t and precede it by primitive index (crossingPrecedes).
+bool mayHoldBest(float entry, const Walk& walk) {
+    return entry != VKPT_FAR && !(entry > walk.best.t * kBoxExitMargin);
+}
+
+// A far child waiting on the stack, with its box entry distance when it was pushed.
 struct StackEntry {
-    std::uint32_t node;
-    float entry; // box entry distance when pushed
+    StackBvhChild node;
+    float entry;
 };
 
 // A stack as deep as the deepest tree the builder makes (kBvhMaxDepth): a walk holds at most
@@ -84,71 +105,114 @@ struct NodeStack {
     std::array<StackEntry, kBvhMaxDepth + 1> entries;
     std::uint32_t size = 0;
 
-    void push(std::uint32_t node, float entry) {
+    void push(const StackEntry& entry) {
         VKPT_ASSERT(size < entries.size(), "tree deeper than kBvhMaxDepth");
-        entries[size++] = {node, entry};
+        entries[size++] = entry;
     }
-    StackEntry pop() { return entries[--size]; }
-    bool empty() const { return size == 0; }
+    // The next entry whose box may still hold the best crossing; false when none is left (an
+    // entry whose box now lies behind a nearer hit found since the push is dropped).
+    bool popUseful(const Walk& walk, StackEntry& next) {
+        while (size > 0) {
+            next = entries[--size];
+            if (mayHoldBest(next.entry, walk)) return true;
+        }
+        return false;
+    }
 };
 
-// Pushes the children of an interior node whose boxes the ray enters, the nearer last so that
-// it is popped first (front-to-back order, as in pbrt-v4's BVHAggregate::Intersect, which
-// uses the ray's direction sign instead of the entry distances).
-void pushChildren(const BvhTree& tree, const BvhBuildNode& n, Walk& walk, NodeStack& stack) {
-    const BvhBuildNode& left = tree.nodes[n.leftChild];
-    const BvhBuildNode& right = tree.nodes[n.rightChild];
-    StackEntry near{n.leftChild, walk.enterBox(left.bounds.min, left.bounds.max)};
-    StackEntry far{n.rightChild, walk.enterBox(right.bounds.min, right.bounds.max)};
-    if (far.entry < near.entry) std::swap(near, far);
-    if (far.entry != VKPT_FAR) stack.push(far.node, far.entry);
-    if (near.entry != VKPT_FAR) stack.push(near.node, near.entry);
+// Memory-level parallelism for the walk (see bvh_stack_layout.h): a node that starts a block
+// asks for all of the block's lines before its first pair is read, and a leaf put on the stack
+// asks for its primitives before the walk comes back to it.
+void prefetchBlock(const StackBvh& bvh, StackBvhChild node) {
+    const StackBvhPair* first = &bvh.pairs[node.first];
+    for (std::uint32_t i = 0; i < node.blockPairs(); ++i)
+        __builtin_prefetch(first + i);
 }
 
-// The ordered walk; with stopAtFirst it becomes the any-hit query.
-bool walkStack(const BvhTree& tree, std::span<const gpu::Triangle> triangles, Walk& walk,
-               bool stopAtFirst) {
-    if (tree.nodes.empty()) return false;
-    const BvhBuildNode& root = tree.nodes[0];
-    float rootEntry = walk.enterBox(root.bounds.min, root.bounds.max);
+void prefetchLeaf(const StackBvh& bvh, StackBvhChild leaf) {
+    const char* begin = reinterpret_cast<const char*>(&bvh.primitives[leaf.first]);
+    const char* end = begin + leaf.primitiveCount() * sizeof(gpu::Triangle);
+    for (const char* line = begin; line < end; line += 64)
+        __builtin_prefetch(line);
+}
+
+// The ordered walk; with stopAtFirst it becomes the any-hit query. At an interior node both
+// children's boxes are tested (one cache line, one vector test); the walk goes on into the
+// nearer and pushes the farther with its entry distance, which is checked against the best hit
+// again when it is popped (mayHoldBest). The nearer is the one with the smaller entry, the left
+// one on a tie.
+// This is pbrt-v4's front-to-back BVHAggregate::Intersect, ordered by entry distance where pbrt
+// uses the ray's direction sign on the split axis.
+bool walkStack(const StackBvh& bvh, Walk& walk, bool stopAtFirst) {
+    if (bvh.empty) return false;
+    if (!mayHoldBest(walk.enterBox(bvh.rootBounds.min, bvh.rootBounds.max), walk)) return false;
+    const std::span<const gpu::Triangle> triangles(bvh.primitives);
+    const PairBoxTest pairTest(walk.ray.origin, walk.ray.direction);
     NodeStack stack;
-    if (rootEntry != VKPT_FAR) stack.push(0, rootEntry);
+    StackBvhChild node = bvh.root;
     bool any = false;
-    while (!stack.empty()) {
-        StackEntry e = stack.pop();
-        // A nearer hit was found since the push. Boxes entered up to the best t (with intersectBox's
-        // margin) may still hold a crossing that ties with it and precedes it.
-        if (e.entry > walk.best.t * kBoxExitMargin) continue;
-        const BvhBuildNode& n = tree.nodes[e.node];
-        if (!n.isLeaf()) {
-            pushChildren(tree, n, walk, stack);
-            continue;
+    for (;;) {
+        if (node.isLeaf()) {
+            any = walk.testTriangles(triangles, node.first, node.primitiveCount(), stopAtFirst) ||
+                  any;
+            if (any && stopAtFirst) return true;
+        } else {
+            prefetchBlock(bvh, node);
+            const StackBvhPair& pair = bvh.pairs[node.first];
+            walk.boxTests += 2;
+            PairBoxTest::Entries e = pairTest.enter(pair, walk.ray.tMin, walk.best.t);
+            StackEntry near{pair.child[0], e.child[0]};
+            StackEntry far{pair.child[1], e.child[1]};
+            if (far.entry < near.entry) std::swap(near, far);
+            if (far.entry != VKPT_FAR) {
+                if (far.node.isLeaf()) prefetchLeaf(bvh, far.node);
+                stack.push(far);
+            }
+            if (mayHoldBest(near.entry, walk)) {
+                node = near.node;
+                continue;
+            }
         }
-        any = walk.testTriangles(triangles, n.firstPrimitive, n.primitiveCount, stopAtFirst) || any;
-        if (any && stopAtFirst) return true;
+        StackEntry next;
+        if (!stack.popUseful(walk, next)) return any;
+        node = next.node;
     }
-    return any;
 }
 
 } // namespace
 
-ClosestHit closestHitStack(const BvhTree& tree, std::span<const gpu::Triangle> triangles,
-                           const RayQuery& ray, TraversalCounters* counters) {
+ClosestHit closestHitStack(const StackBvh& bvh, const RayQuery& ray, TraversalCounters* counters) {
     Walk walk(ray, counters);
-    walkStack(tree, triangles, walk, false);
+    walkStack(bvh, walk, false);
     return finish(walk);
 }
 
-bool anyHitStack(const BvhTree& tree, std::span<const gpu::Triangle> triangles, const RayQuery& ray,
-                 TraversalCounters* counters) {
+bool anyHitStack(const StackBvh& bvh, const RayQuery& ray, TraversalCounters* counters) {
     Walk walk(ray, counters);
-    return walkStack(tree, triangles, walk, true);
+    return walkStack(bvh, walk, true);
 }
 
+// With intersect.h's own tests rather than the walk's per-ray versions (pair_box_test.h,
+// ray_triangle_test.h), so that comparing the walk with brute force also checks those against
+// the shared functions. In index order, with t exclusive, the first crossing found at a t is
+// the one of lowest index, as crossingPrecedes asks.
 ClosestHit closestHitBruteForce(std::span<const gpu::Triangle> triangles, const RayQuery& ray) {
-    Walk walk(ray, nullptr);
-    walk.testTriangles(triangles, 0, static_cast<std::uint32_t>(triangles.size()), false);
-    return finish(walk);
+    ClosestHit best;
+    best.t = ray.tMax;
+    for (std::uint32_t i = 0; i < triangles.size(); ++i) {
+        const gpu::Triangle& tri = triangles[i];
+        gpu::TriangleHit h = gpu::isSpherePrimitive(tri)
+                                 ? gpu::intersectSphere(ray.origin, ray.direction, tri.v0, tri.v1.x,
+                                                        ray.tMin, best.t)
+                                 : gpu::intersectTriangle(ray.origin, ray.direction, tri.v0, tri.v1,
+                                                          tri.v2, ray.tMin, best.t);
+        if (!h.hit) continue;
+        if (ray.filter != nullptr && gpu::isAlphaMaskedPrimitive(tri) &&
+            !ray.filter->accepts(i, ray, h))
+            continue;
+        best = {h.t, h.u, h.v, i, true};
+    }
+    return best.hit ? best : ClosestHit{};
 }
 
 } // namespace vkpt

@@ -7,6 +7,7 @@
 #include <span>
 
 #include "bvh/bvh_build.h"
+#include "bvh/bvh_stack_layout.h"
 #include "shared/host_device.h"
 #include "shared/intersect.h"
 
@@ -15,7 +16,8 @@ namespace vkpt {
 struct RayQuery;
 
 // Decides whether a primitive the ray crosses counts as a hit: alpha-masked surfaces let rays
-// through where their alpha is below the cutoff. Without a filter every crossing counts.
+// through where their alpha is below the cutoff. Without a filter every crossing counts; the
+// walks ask it only about primitives marked PRIMITIVE_ALPHA_MASKED (as the device walk does).
 class HitFilter {
 public:
     virtual ~HitFilter() = default;
@@ -47,11 +49,12 @@ struct TraversalCounters {
     std::uint64_t triangleTests = 0;
 };
 
-// triangles are in BVH order (gpu::Triangle built from primitiveOrder).
-ClosestHit closestHitStack(const BvhTree& tree, std::span<const gpu::Triangle> triangles,
-                           const RayQuery& ray, TraversalCounters* counters = nullptr);
-bool anyHitStack(const BvhTree& tree, std::span<const gpu::Triangle> triangles, const RayQuery& ray,
-                 TraversalCounters* counters = nullptr);
+// The reference's walk, on the tree and primitives laid out by makeStackBvh.
+ClosestHit closestHitStack(const StackBvh& bvh, const RayQuery& ray,
+                           TraversalCounters* counters = nullptr);
+bool anyHitStack(const StackBvh& bvh, const RayQuery& ray, TraversalCounters* counters = nullptr);
+
+// Below, triangles are in BVH order (gpu::Triangle built from primitiveOrder).
 
 ClosestHit closestHitBruteForce(std::span<const gpu::Triangle> triangles, const RayQuery& ray);
 

@@ -21,6 +21,9 @@ struct RayCounts {
 
 struct RenderStats {
     double seconds = 0.0;
+    // CPU time of the render threads (vkpt-ref; 0 for vkpt): unlike `seconds` it does not grow
+    // while other processes hold the cores, so it compares renders on a shared machine.
+    double cpuSeconds = 0.0;
     RayCounts rays;
     std::uint64_t nodesVisited = 0;  // BVH nodes whose box was tested
     std::uint64_t triangleTests = 0;

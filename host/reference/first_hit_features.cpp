@@ -18,6 +18,7 @@ namespace {
 
 struct FeatureJob {
     const PreparedScene& scene;
+    const IntersectorFactory& intersectors;
     const gpu::Camera& camera;
     std::uint32_t seed;
     const PixelRect& window;
@@ -49,7 +50,7 @@ FeatureRecord pixelFeatures(FeatureJob& job, SceneTracer& tracer, std::uint32_t 
 }
 
 void featureWorker(FeatureJob& job) {
-    SceneTracer tracer(job.scene);
+    SceneTracer tracer(job.scene, job.intersectors);
     const PixelRect& w = job.window;
     for (std::uint32_t row = job.nextRow++; row < w.height(); row = job.nextRow++)
         for (std::uint32_t x = w.x0; x < w.x1; ++x)
@@ -60,10 +61,11 @@ void featureWorker(FeatureJob& job) {
 } // namespace
 
 std::vector<FeatureRecord> renderFirstHitFeatures(const PreparedScene& scene,
+                                                  const IntersectorFactory& intersectors,
                                                   const gpu::Camera& camera, std::uint32_t seed,
                                                   const PixelRect& window, unsigned threads) {
     std::vector<FeatureRecord> features(window.area());
-    FeatureJob job{scene, camera, seed, window, features, {}};
+    FeatureJob job{scene, intersectors, camera, seed, window, features, {}};
     const unsigned count = std::max(
         1u, std::min(threads ? threads : std::thread::hardware_concurrency(), window.height()));
     std::vector<std::thread> workers;

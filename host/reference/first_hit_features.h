@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "prepare/prepared_scene.h"
+#include "reference/scene_intersector.h"
 #include "state/render_state.h"
 
 namespace vkpt {
@@ -20,9 +21,10 @@ inline constexpr std::uint32_t kFeatureSamples = 16;
 // For each pixel of `window`, row-major: albedo (the base colour, textures applied) and
 // shading normal (world space, turned towards the camera) averaged over the samples, a miss
 // counting as 0, so that edges are filtered like the colour (Open Image Denoise asks for that);
-// depth the camera-space z of the nearest hit (+inf when every sample misses). `threads` 0:
-// every core.
+// depth the camera-space z of the nearest hit (+inf when every sample misses). Rays go through
+// `intersectors`; `threads` 0: every core.
 std::vector<FeatureRecord> renderFirstHitFeatures(const PreparedScene& scene,
+                                                  const IntersectorFactory& intersectors,
                                                   const gpu::Camera& camera, std::uint32_t seed,
                                                   const PixelRect& window, unsigned threads);
 

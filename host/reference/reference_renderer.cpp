@@ -11,10 +11,13 @@
 #include <mutex>
 #include <thread>
 
+#include <time.h>
+
 #include "common/errors.h"
 #include "common/progress.h"
 #include "reference/integrators.h"
 #include "reference/pixel_accumulator.h"
+#include "reference/stack_intersector.h"
 #include "shared/adaptive.h"
 #include "shared/camera.h"
 #include "shared/rng.h"
@@ -49,6 +52,7 @@ struct RenderJob {
     const PreparedScene& scene;
     const gpu::Camera& camera;
     const RenderSettings& settings;
+    const IntersectorFactory& intersectors;
     const SamplePlan& plan;
     std::vector<PixelWork>& pixels; // plan.crop, row-major
     ProgressBar& progress;
@@ -109,8 +113,15 @@ void renderTile(RenderJob& job, IntegratorContext& context, std::uint32_t tile,
     job.progress.advance(counters.samples - before);
 }
 
+double threadCpuSeconds() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
 void renderWorker(RenderJob& job) {
-    SceneTracer tracer(job.scene);
+    const double cpuStart = threadCpuSeconds();
+    SceneTracer tracer(job.scene, job.intersectors);
     IntegratorContext context{job.settings, tracer};
     ThreadCounters counters;
     for (std::uint32_t tile = job.nextTile++; tile < job.tiles.count(); tile = job.nextTile++)
@@ -121,6 +132,7 @@ void renderWorker(RenderJob& job) {
     job.stats.triangleTests += tracer.traversal().triangleTests;
     job.stats.samplesTaken += counters.samples;
     job.stats.nonFiniteSamples += counters.nonFinite;
+    job.stats.cpuSeconds += threadCpuSeconds() - cpuStart;
 }
 
 std::uint32_t threadCount(const RenderSettings& settings) {
@@ -269,6 +281,11 @@ float adaptiveDarkFloor(float exposure) { return ADAPTIVE_DARK_FLOOR * std::exp2
 ReferenceResult renderReferenceParts(const PreparedScene& scene, const gpu::Camera& camera,
                                      const RenderSettings& settings, RenderStats& stats,
                                      const ReferenceOptions& options) {
+    // Laying the tree out for the stack walk is set-up, not render time.
+    std::optional<StackIntersectors> stackWalk;
+    if (!options.intersectors) stackWalk.emplace(scene);
+    const IntersectorFactory& intersectors =
+        options.intersectors ? *options.intersectors : *stackWalk;
     auto start = Clock::now();
     const SamplePlan plan = options.plan.value_or(
         SamplePlan{fullFrame(camera.width, camera.height), {0, settings.samplesPerPixel}});
@@ -279,7 +296,7 @@ ReferenceResult renderReferenceParts(const PreparedScene& scene, const gpu::Came
         makeProgressBar("vkpt-ref", stats.uniformBudget, settings.quiet);
     TileGrid tiles{(plan.crop.width() + kTileSize - 1) / kTileSize,
                    (plan.crop.height() + kTileSize - 1) / kTileSize};
-    RenderJob job{scene, camera, settings, plan, pixels, *progress,
+    RenderJob job{scene, camera, settings, intersectors, plan, pixels, *progress,
                   adaptiveDarkFloor(settings.exposure), tiles, 0, {}, {}, stats};
     RoundLoop rounds(job, options);
     ReferenceResult result;
@@ -294,6 +311,14 @@ ReferenceResult renderReferenceParts(const PreparedScene& scene, const gpu::Came
 RenderOutput renderReference(const PreparedScene& scene, const gpu::Camera& camera,
                              const RenderSettings& settings, RenderStats& stats) {
     return renderReferenceParts(scene, camera, settings, stats, {}).output;
+}
+
+RenderOutput renderReference(const PreparedScene& scene, const gpu::Camera& camera,
+                             const RenderSettings& settings, RenderStats& stats,
+                             const IntersectorFactory& intersectors) {
+    ReferenceOptions options;
+    options.intersectors = &intersectors;
+    return renderReferenceParts(scene, camera, settings, stats, options).output;
 }
 
 } // namespace vkpt

@@ -12,11 +12,15 @@
 #include "common/render_stats.h"
 #include "image/render_output.h"
 #include "prepare/prepared_scene.h"
+#include "reference/scene_intersector.h"
 #include "state/sample_plan.h"
 
 namespace vkpt {
 
 struct ReferenceOptions {
+    // The ray queries (each thread makes its own); null: vkpt-ref's ordered stack walk
+    // (StackIntersectors).
+    const IntersectorFactory* intersectors = nullptr;
     std::optional<SamplePlan> plan; // unset: every pixel, samples [0, spp)
     // Records of plan.crop (row-major) to continue from (--resume): each pixel goes on from
     // its samplesTaken; converged pixels stay as they are.
@@ -40,9 +44,14 @@ ReferenceResult renderReferenceParts(const PreparedScene& scene, const gpu::Came
                                      const RenderSettings& settings, RenderStats& stats,
                                      const ReferenceOptions& options);
 
-// The whole image, samples [0, spp).
+// The whole image, samples [0, spp), rays through vkpt-ref's ordered stack walk.
 RenderOutput renderReference(const PreparedScene& scene, const gpu::Camera& camera,
                              const RenderSettings& settings, RenderStats& stats);
+
+// The same render with the rays traced by `intersectors` (each thread makes its own).
+RenderOutput renderReference(const PreparedScene& scene, const gpu::Camera& camera,
+                             const RenderSettings& settings, RenderStats& stats,
+                             const IntersectorFactory& intersectors);
 
 // The luminance below which adaptive sampling asks for an absolute error (see adaptive.h).
 float adaptiveDarkFloor(float exposure);

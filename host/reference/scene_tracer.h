@@ -1,48 +1,42 @@
-// scene_tracer.h — the reference's ray queries: ordered stack traversal of the BVH tree,
-// counting rays by kind and traversal work for the statistics. Alpha-masked surfaces let
-// rays through where their alpha is below the cutoff, for every kind of ray.
+// scene_tracer.h — what the integrators trace through: one thread's SceneIntersector, with
+// the rays counted by kind for the statistics. Alpha-masked surfaces let rays through where
+// their alpha is below the cutoff, for every kind of ray (the intersector's alpha test).
 #pragma once
 
-#include "bvh/bvh_traverse.h"
+#include <memory>
+
 #include "common/render_stats.h"
-#include "prepare/prepared_scene.h"
+#include "reference/scene_intersector.h"
 
 namespace vkpt {
 
 enum class RayKind { Camera, Extension, Shadow };
 
-// The alpha MASK test of docs/scene-model.md for candidate hits of the prepared scene.
-class AlphaMaskFilter final : public HitFilter {
-public:
-    explicit AlphaMaskFilter(const PreparedScene& scene) : scene_(scene) {}
-    bool accepts(std::uint32_t primitive, const RayQuery& ray,
-                 const gpu::TriangleHit& hit) const override;
-
-private:
-    const PreparedScene& scene_;
-};
-
 // One per thread: the counters are plain integers, merged after the render.
 class SceneTracer {
 public:
-    explicit SceneTracer(const PreparedScene& scene)
-        : scene_(scene), alphaMask_(scene),
-          filter_(scene.features.alphaMask ? &alphaMask_ : nullptr) {}
+    SceneTracer(const PreparedScene& scene, const IntersectorFactory& intersectors)
+        : scene_(scene), intersector_(intersectors.makeIntersector()) {}
 
-    ClosestHit closest(const glm::vec3& origin, const glm::vec3& direction, RayKind kind);
+    ClosestHit closest(const glm::vec3& origin, const glm::vec3& direction, RayKind kind) {
+        (kind == RayKind::Camera ? rays_.camera : rays_.extension) += 1;
+        return intersector_->closestHit(origin, direction);
+    }
     // True when something lies strictly between origin and origin + tMax·direction.
-    bool occluded(const glm::vec3& origin, const glm::vec3& direction, float tMax);
+    bool occluded(const glm::vec3& origin, const glm::vec3& direction, float tMax) {
+        rays_.shadow += 1;
+        return intersector_->occluded(origin, direction, tMax);
+    }
 
     const PreparedScene& scene() const { return scene_; }
+    SceneIntersector& intersector() { return *intersector_; }
     const RayCounts& rays() const { return rays_; }
-    const TraversalCounters& traversal() const { return traversal_; }
+    TraversalCounters traversal() const { return intersector_->traversal(); }
 
 private:
     const PreparedScene& scene_;
-    AlphaMaskFilter alphaMask_;
-    const HitFilter* filter_;
+    std::unique_ptr<SceneIntersector> intersector_;
     RayCounts rays_;
-    TraversalCounters traversal_;
 };
 
 } // namespace vkpt

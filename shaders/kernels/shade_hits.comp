@@ -33,6 +33,36 @@ vec4 random4(PathState state, uint dimension) {
     return randomFloats(frame.seed, state.pixel, state.sampleIndex, passParams.bounce, dimension);
 }
 
+// Stores write only what a record needs, field by field: lavapipe writes a storage buffer one
+// invocation and one word at a time (docs/gpu.md), so every word left out counts.
+
+// A light-sample record: the flags alone when it cannot contribute (nothing reads the rest),
+// the probe's factor only for a probe.
+void storeLightSample(uint index, ShadowRay record) {
+    shadowRays[index].flags = record.flags;
+    if (record.flags == SHADOW_NONE) return;
+    shadowRays[index].origin = record.origin;
+    shadowRays[index].direction = record.direction;
+    shadowRays[index].tMax = record.tMax;
+    shadowRays[index].contribution = record.contribution;
+    if (record.flags == SHADOW_PROBE) shadowRays[index].factor = record.factor;
+}
+
+bool sameBits(vec3 a, vec3 b) {
+    return floatBitsToUint(a) == floatBitsToUint(b);
+}
+
+// The fields of a path's state that shading changed (the pixel and sample index never change).
+void storePathState(uint slot, PathState before, PathState after) {
+    if (!sameBits(after.throughput, before.throughput))
+        pathStates[slot].throughput = after.throughput;
+    if (!sameBits(after.radiance, before.radiance)) pathStates[slot].radiance = after.radiance;
+    if (!sameBits(after.lightScale, before.lightScale))
+        pathStates[slot].lightScale = after.lightScale;
+    if (floatBitsToUint(after.previousBsdfPdf) != floatBitsToUint(before.previousBsdfPdf))
+        pathStates[slot].previousBsdfPdf = after.previousBsdfPdf;
+}
+
 void clearLightSamples(uint ray) {
     uint n = frame.lightSamples;
     for (uint k = 0u; k < n; ++k)
@@ -53,7 +83,7 @@ void writePathLightSamples(Vertex vertex, PathState state) {
             float weight = powerHeuristic(count, pdfLight, 1.0, pdfBsdf);
             shadow.contribution = shadow.contribution * (weight / (count * pdfLight));
         }
-        shadowRays[vertex.ray * n + k] = shadow;
+        storeLightSample(vertex.ray * n + k, shadow);
     }
 }
 
@@ -127,7 +157,7 @@ void writeHemisphereProbes(Vertex vertex, PathState state) {
             probe = ShadowRay(origin, SHADOW_PROBE, direction, VKPT_FAR, f,
                               local.z / uniformHemispherePdf());
         }
-        shadowRays[vertex.ray * n + k] = probe;
+        storeLightSample(vertex.ray * n + k, probe);
     }
 }
 
@@ -139,7 +169,7 @@ void writeDirectLightSamples(Vertex vertex, PathState state) {
         ShadowRay shadow = makeLightSampleRay(vertex.surface, random4(state, DIM_LIGHT_FIRST + k),
                                               pdfLight, pdfBsdf);
         if (shadow.flags != SHADOW_NONE) shadow.contribution = shadow.contribution / pdfLight;
-        shadowRays[vertex.ray * n + k] = shadow;
+        storeLightSample(vertex.ray * n + k, shadow);
     }
 }
 
@@ -188,7 +218,8 @@ Shading shadeRay(uint i) {
         vertex.ray = i;
         vertex.record = record;
         vertex.surface = makeSurfacePoint(hit, record.origin, record.direction);
-        PathState state = fetchPathState(record.slot);
+        PathState before = fetchPathState(record.slot);
+        PathState state = before;
         if (frame.integrator == INTEGRATOR_NORMALS) {
             state.radiance = 0.5 * vertex.surface.rawShadingNormal + 0.5;
         } else if (frame.integrator == INTEGRATOR_PATH) {
@@ -196,7 +227,7 @@ Shading shadeRay(uint i) {
         } else {
             shading.lit = shadeDirect(vertex, state);
         }
-        pathStates[record.slot] = state;
+        storePathState(record.slot, before, state);
     } else {
         shadeMiss(record);
     }
@@ -216,5 +247,10 @@ void main() {
     }
     uint nextHalf = queueHalf ^ 1u;
     uint slot = appendToQueue(COUNTER_RAYS + nextHalf, continues);
-    if (continues) rays[nextHalf * frame.slotCount + slot] = next;
+    if (continues) {
+        uint index = nextHalf * frame.slotCount + slot;
+        rays[index].origin = next.origin;
+        rays[index].slot = next.slot;
+        rays[index].direction = next.direction;
+    }
 }

@@ -226,20 +226,64 @@ VKPT_FN void takeNextLeaf(VKPT_INOUT(WideWalk) walk) {
     walk.end = walk.next + wideLeafCount(walk.leafCounts, slot);
 }
 
-// Where the ray enters child `slot`'s box within (tMin, best t), VKPT_FAR when it does not.
-// An empty slot's bounds are lo = 255, hi = 0 on every axis: no box, whatever the slab test
-// would make of it.
-VKPT_FN float enterChild(WideWalk walk, vec3 scale, vec3 origin, uvec4 q0, uvec4 q1, uvec4 q2,
-                         uint slot) {
-    vec3 lo = vec3(wideQuantisedByte(q0.x, q0.y, slot), wideQuantisedByte(q0.z, q0.w, slot),
-                   wideQuantisedByte(q1.x, q1.y, slot));
-    vec3 hi = vec3(wideQuantisedByte(q1.z, q1.w, slot), wideQuantisedByte(q2.x, q2.y, slot),
-                   wideQuantisedByte(q2.z, q2.w, slot));
-    // q·2^e is exact (8 bits times a power of two), so the one rounding is the sum's, which
-    // the builder checked gives a box around the child's.
-    if (lo.x > hi.x) return VKPT_FAR;
-    return intersectBox(walk.origin, walk.invDirection, origin + lo * scale, origin + hi * scale,
-                        walk.tMin, walk.t);
+// A node's quantised bounds as the ray meets them: per axis the byte pair of the plane it
+// enters by (near) and of the one it leaves by (far), picked once per node from the ray's
+// octant. The slab test then needs no min and max per axis and slot, which on lavapipe cost a
+// NaN test each besides (docs/bvh.md): for a direction component of either sign, the plane
+// picked as near gives exactly the smaller of intersectBox's two distances.
+struct NearFarBounds {
+    uvec2 nearX;
+    uvec2 nearY;
+    uvec2 nearZ;
+    uvec2 farX;
+    uvec2 farY;
+    uvec2 farZ;
+};
+
+VKPT_FN NearFarBounds nearFarBounds(uvec4 q0, uvec4 q1, uvec4 q2, uint octant) {
+    uvec2 loX = uvec2(q0.x, q0.y), loY = uvec2(q0.z, q0.w), loZ = uvec2(q1.x, q1.y);
+    uvec2 hiX = uvec2(q1.z, q1.w), hiY = uvec2(q2.x, q2.y), hiZ = uvec2(q2.z, q2.w);
+    bool negativeX = (octant & 1u) != 0u;
+    bool negativeY = (octant & 2u) != 0u;
+    bool negativeZ = (octant & 4u) != 0u;
+    NearFarBounds b;
+    b.nearX = negativeX ? hiX : loX;
+    b.farX = negativeX ? loX : hiX;
+    b.nearY = negativeY ? hiY : loY;
+    b.farY = negativeY ? loY : hiY;
+    b.nearZ = negativeZ ? hiZ : loZ;
+    b.farZ = negativeZ ? loZ : hiZ;
+    return b;
+}
+
+// The larger and smaller of two distances that are never NaN, as a compare and a select.
+VKPT_FN float largerOf(float a, float b) {
+    return a > b ? a : b;
+}
+VKPT_FN float smallerOf(float a, float b) {
+    return a < b ? a : b;
+}
+
+// Where the ray enters child `slot`'s box within (tMin, best t), VKPT_FAR when it does not:
+// intersectBox's slab test (Ize's widened exit, slabFar for rays parallel to a slab) on the
+// decoded box. q·2^e is exact (8 bits times a power of two), so the one rounding of a decoded
+// bound is the sum's, which the builder checked gives a box around the child's. An empty slot
+// (lo = 255, hi = 0 on every axis) has its near planes beyond its far ones: no hit.
+VKPT_FN float enterChild(WideWalk walk, vec3 scale, vec3 origin, NearFarBounds b, uint slot) {
+    vec3 near = vec3(wideQuantisedByte(b.nearX.x, b.nearX.y, slot),
+                     wideQuantisedByte(b.nearY.x, b.nearY.y, slot),
+                     wideQuantisedByte(b.nearZ.x, b.nearZ.y, slot));
+    vec3 far = vec3(wideQuantisedByte(b.farX.x, b.farX.y, slot),
+                    wideQuantisedByte(b.farY.x, b.farY.y, slot),
+                    wideQuantisedByte(b.farZ.x, b.farZ.y, slot));
+    vec3 tNear = (origin + near * scale - walk.origin) * walk.invDirection;
+    vec3 tFar = (origin + far * scale - walk.origin) * walk.invDirection;
+    float enter = largerOf(largerOf(tNear.x, tNear.y), largerOf(tNear.z, walk.tMin));
+    float exit = smallerOf(smallerOf(slabFar(tFar.x, walk.invDirection.x),
+                                     slabFar(tFar.y, walk.invDirection.y)),
+                           smallerOf(slabFar(tFar.z, walk.invDirection.z), walk.t)) *
+                 1.0000004f;
+    return enter <= exit ? enter : VKPT_FAR;
 }
 
 // The slots among 0–3 (or 4–7, with `first` 4) whose boxes the ray enters.
@@ -259,15 +303,16 @@ VKPT_FN void visitNode(VKPT_INOUT(WideWalk) walk, uint index VKPT_BVH_PARAM) {
     uvec4 q2 = bvhNodeTexel(texel + 4u VKPT_BVH_ARG);
     vec3 scale = wideGridScale(header);
     vec3 origin = uintBitsToFloat(uvec3(frame.x, frame.y, frame.z));
+    NearFarBounds bounds = nearFarBounds(q0, q1, q2, walk.octant);
     // Written out: eight box tests in straight-line code, no loop for lavapipe to mask.
-    walk.entryLow = vec4(enterChild(walk, scale, origin, q0, q1, q2, 0u),
-                         enterChild(walk, scale, origin, q0, q1, q2, 1u),
-                         enterChild(walk, scale, origin, q0, q1, q2, 2u),
-                         enterChild(walk, scale, origin, q0, q1, q2, 3u));
-    walk.entryHigh = vec4(enterChild(walk, scale, origin, q0, q1, q2, 4u),
-                          enterChild(walk, scale, origin, q0, q1, q2, 5u),
-                          enterChild(walk, scale, origin, q0, q1, q2, 6u),
-                          enterChild(walk, scale, origin, q0, q1, q2, 7u));
+    walk.entryLow = vec4(enterChild(walk, scale, origin, bounds, 0u),
+                         enterChild(walk, scale, origin, bounds, 1u),
+                         enterChild(walk, scale, origin, bounds, 2u),
+                         enterChild(walk, scale, origin, bounds, 3u));
+    walk.entryHigh = vec4(enterChild(walk, scale, origin, bounds, 4u),
+                          enterChild(walk, scale, origin, bounds, 5u),
+                          enterChild(walk, scale, origin, bounds, 6u),
+                          enterChild(walk, scale, origin, bounds, 7u));
     walk.entriesCurrent = true;
     uint hits = enteredSlots(walk.entryLow, 0u) | enteredSlots(walk.entryHigh, 4u);
     uint internal = wideInternalSlots(header);

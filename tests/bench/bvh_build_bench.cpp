@@ -129,6 +129,7 @@ void printWalk(const char* label, const WalkResult& r) {
 
 struct BuiltScene {
     BvhTree tree; // leaves renumbered by flattenWideBvh
+    StackBvh stackBvh; // the tree laid out for the ordered stack walk
     std::vector<gpu::WideBvhNode> nodes;
     std::vector<gpu::Triangle> triangles;
 };
@@ -142,6 +143,7 @@ BuiltScene buildScene(const std::vector<glm::vec3>& positions) {
         const glm::vec3* p = &positions[3 * std::size_t(source)];
         s.triangles.push_back({p[0], 0u, p[1], NO_EMITTER, p[2], source});
     }
+    s.stackBvh = makeStackBvh(s.tree, s.triangles);
     return s;
 }
 
@@ -177,7 +179,7 @@ void benchTraversal(const BuiltScene& s, const char* label, const std::vector<Ra
                 "max iter.", "Mrays/s");
     printWalk("stack (ordered, binary)",
               measureWalk(rays, [&](const RayQuery& r, TraversalCounters* c) {
-                  return closestHitStack(s.tree, s.triangles, r, c);
+                  return closestHitStack(s.stackBvh, r, c);
               }));
     printWalk("stackless 8-wide (device)",
               measureWalk(rays, [&](const RayQuery& r, TraversalCounters* c) {

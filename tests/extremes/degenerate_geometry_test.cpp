@@ -12,7 +12,7 @@
 
 #include "common/errors.h"
 #include "extremes_support.h"
-#include "gltf_writer.h"
+#include "../support/gltf_writer.h"
 #include "scene/gltf_loader.h"
 
 namespace vkpt {

@@ -109,9 +109,9 @@ TEST_P(GrazingLight, NoShadowRayIsBlockedByThePlaneItLeaves) {
     test::LoadedTestScene scene = test::prepareTestScene(g.scene);
     std::vector<DeviceRay> rays = shadowSegments(scene.prepared, 100000);
     std::uint64_t blocked = 0;
+    const StackBvh stackBvh = makeStackBvh(scene.prepared.tree, scene.prepared.triangles);
     for (const DeviceRay& ray : rays)
-        blocked += anyHitStack(scene.prepared.tree, scene.prepared.triangles,
-                               {ray.origin, ray.direction, 0.0f, 1.0f});
+        blocked += anyHitStack(stackBvh, {ray.origin, ray.direction, 0.0f, 1.0f});
     EXPECT_EQ(blocked, 0u) << "vkpt-ref, theta " << GetParam();
     DeviceRayQueries queries(context(), scene.prepared);
     std::vector<bool> occluded = queries.occluded(rays);

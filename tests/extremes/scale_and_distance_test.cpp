@@ -12,7 +12,7 @@
 
 #include "../support/scene_transforms.h"
 #include "extremes_support.h"
-#include "gltf_writer.h"
+#include "../support/gltf_writer.h"
 #include "scene/gltf_loader.h"
 
 namespace vkpt {

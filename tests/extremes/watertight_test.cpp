@@ -92,11 +92,11 @@ bool leaks(const AimedRay& r, bool hit, float t) {
 
 LeakCount countLeaks(const ClosedMesh& m, std::uint32_t rays) {
     LeakCount leakCount;
+    const StackBvh stackBvh = makeStackBvh(m.prepared.tree, m.prepared.triangles);
     for (std::uint32_t i = 0; i < rays; ++i)
         for (int side = 0; side < 2; ++side) {
             AimedRay r = aimedRay(m, i, side);
-            ClosestHit hit = closestHitStack(m.prepared.tree, m.prepared.triangles,
-                                             {r.ray.origin, r.ray.direction});
+            ClosestHit hit = closestHitStack(stackBvh, {r.ray.origin, r.ray.direction});
             if (leaks(r, hit.hit, hit.t))
                 ++(side == 0 ? leakCount.fromOutside : leakCount.fromInside);
         }

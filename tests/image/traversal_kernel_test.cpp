@@ -14,7 +14,7 @@
 #include "bvh/wide_traverse.h"
 #include "bvh/synthetic_scenes.h"
 #include "feature_scenes.h"
-#include "reference/scene_tracer.h"
+#include "reference/alpha_mask_filter.h"
 #include "render/ray_queries.h"
 #include "shared/camera.h"
 #include "shared/intersect.h"
@@ -142,11 +142,11 @@ protected:
         DeviceRayQueries queries(context(), scene.prepared);
         std::vector<gpu::HitRecord> hits = queries.closest(rays);
         ReferenceFilter filter(scene.prepared);
+        const StackBvh stackBvh = makeStackBvh(scene.prepared.tree, scene.prepared.triangles);
         int disagreements = 0, hitCount = 0;
         for (std::size_t i = 0; i < rays.size(); ++i) {
             ClosestHit cpu =
-                closestHitStack(scene.prepared.tree, scene.prepared.triangles,
-                                {rays[i].origin, rays[i].direction, 0.0f, VKPT_FAR, filter.get()});
+                closestHitStack(stackBvh, {rays[i].origin, rays[i].direction, 0.0f, VKPT_FAR, filter.get()});
             hitCount += cpu.hit ? 1 : 0;
             if (sameClosestHit(scene.prepared, rays[i], hits[i], cpu)) continue;
             if (++disagreements <= 5)
@@ -173,11 +173,11 @@ protected:
         DeviceRayQueries queries(context(), scene.prepared);
         std::vector<bool> occluded = queries.occluded(rays);
         ReferenceFilter filter(scene.prepared);
+        const StackBvh stackBvh = makeStackBvh(scene.prepared.tree, scene.prepared.triangles);
         int disagreements = 0, blocked = 0;
         for (std::size_t i = 0; i < rays.size(); ++i) {
             bool cpu =
-                anyHitStack(scene.prepared.tree, scene.prepared.triangles,
-                            {rays[i].origin, rays[i].direction, 0.0f, rays[i].tMax, filter.get()});
+                anyHitStack(stackBvh, {rays[i].origin, rays[i].direction, 0.0f, rays[i].tMax, filter.get()});
             blocked += cpu ? 1 : 0;
             if (occluded[i] == cpu) continue;
             if (++disagreements <= 5)

@@ -38,6 +38,7 @@ struct Layout {
 
 struct BuiltScene {
     BvhTree tree;
+    StackBvh stackBvh;                    // the tree laid out for the ordered stack walk
     std::vector<gpu::WideBvhNode> nodes;  // collapsed opening the largest child first
     std::vector<gpu::Triangle> triangles; // in the order tree and nodes index
     Layout tall;                          // collapsed opening the tallest child first
@@ -63,6 +64,7 @@ BuiltScene buildScene(const std::vector<glm::vec3>& positions) {
     s.tall.tree = s.tree;
     s.nodes = flattenWideBvh(s.tree);
     s.triangles = bvhOrderedTriangles(positions, s.tree);
+    s.stackBvh = makeStackBvh(s.tree, s.triangles);
     s.tall.nodes = flattenWideBvh(s.tall.tree, CollapseOrder::Tallest);
     s.tall.triangles = bvhOrderedTriangles(positions, s.tall.tree);
     s.indexOfSource.resize(s.triangles.size());
@@ -185,7 +187,7 @@ struct WalkFigures {
 // disagreement so that one bad scene does not print 10^5 failures.
 bool checkRay(const BuiltScene& s, const RayQuery& ray, bool bruteForce, WalkFigures& f) {
     TraversalCounters stackCount, wideCount;
-    ClosestHit stack = closestHitStack(s.tree, s.triangles, ray, &stackCount);
+    ClosestHit stack = closestHitStack(s.stackBvh, ray, &stackCount);
     ClosestHit wide = closestHitWide(s.nodes, s.triangles, ray, &wideCount);
     f.stack.nodesVisited += stackCount.nodesVisited;
     f.stack.triangleTests += stackCount.triangleTests;
@@ -204,14 +206,14 @@ bool checkRay(const BuiltScene& s, const RayQuery& ray, bool bruteForce, WalkFig
         ClosestHit brute = closestHitBruteForce(s.triangles, ray);
         EXPECT_TRUE(sameHit(s, ray, brute, stack)) << "brute force vs stack, " << describe(ray);
     }
-    EXPECT_EQ(anyHitStack(s.tree, s.triangles, ray), stack.hit) << describe(ray);
+    EXPECT_EQ(anyHitStack(s.stackBvh, ray), stack.hit) << describe(ray);
     EXPECT_EQ(anyHitWide(s.nodes, s.triangles, ray), stack.hit) << describe(ray);
     EXPECT_EQ(anyHitWide(s.tall.nodes, s.tall.triangles, ray), stack.hit) << describe(ray);
     if (stack.hit) {
         // Nothing lies strictly nearer than the closest hit (tMax is exclusive).
         RayQuery nearer = ray;
         nearer.tMax = stack.t;
-        EXPECT_FALSE(anyHitStack(s.tree, s.triangles, nearer)) << describe(ray);
+        EXPECT_FALSE(anyHitStack(s.stackBvh, nearer)) << describe(ray);
         EXPECT_FALSE(anyHitWide(s.nodes, s.triangles, nearer)) << describe(ray);
     }
     return !::testing::Test::HasFailure();
@@ -325,15 +327,15 @@ BuiltScene twoSquares() {
 TEST(BvhTraverse, RespectsTheRayInterval) {
     BuiltScene s = twoSquares();
     RayQuery ray{glm::vec3(0.25f, 0.5f, 0.0f), glm::vec3(0.0f, 0.0f, 1.0f)};
-    EXPECT_EQ(closestHitStack(s.tree, s.triangles, ray).t, 1.0f);
+    EXPECT_EQ(closestHitStack(s.stackBvh, ray).t, 1.0f);
     EXPECT_EQ(closestHitWide(s.nodes, s.triangles, ray).t, 1.0f);
     ray.tMin = 1.0f; // exclusive: the near square is skipped
-    EXPECT_EQ(closestHitStack(s.tree, s.triangles, ray).t, 2.0f);
+    EXPECT_EQ(closestHitStack(s.stackBvh, ray).t, 2.0f);
     EXPECT_EQ(closestHitWide(s.nodes, s.triangles, ray).t, 2.0f);
     ray.tMax = 2.0f; // exclusive: nothing left
-    EXPECT_FALSE(closestHitStack(s.tree, s.triangles, ray).hit);
+    EXPECT_FALSE(closestHitStack(s.stackBvh, ray).hit);
     EXPECT_FALSE(closestHitWide(s.nodes, s.triangles, ray).hit);
-    EXPECT_FALSE(anyHitStack(s.tree, s.triangles, ray));
+    EXPECT_FALSE(anyHitStack(s.stackBvh, ray));
     EXPECT_FALSE(anyHitWide(s.nodes, s.triangles, ray));
 }
 
@@ -358,7 +360,7 @@ TEST(BvhTraverse, CountsBoxAndTriangleTests) {
     BuiltScene s = twoSquares();
     RayQuery ray{glm::vec3(0.25f, 0.5f, 0.0f), glm::vec3(0.0f, 0.0f, 1.0f)};
     TraversalCounters stack, wide;
-    closestHitStack(s.tree, s.triangles, ray, &stack);
+    closestHitStack(s.stackBvh, ray, &stack);
     closestHitWide(s.nodes, s.triangles, ray, &wide);
     EXPECT_GT(stack.nodesVisited, 0u);
     EXPECT_GT(stack.triangleTests, 0u);
@@ -380,7 +382,7 @@ TEST(BvhTraverse, FindsAVertexHitAlongABoxEdge) {
     ClosestHit brute = closestHitBruteForce(s.triangles, ray);
     ASSERT_TRUE(brute.hit);
     EXPECT_EQ(brute.t, 1.0f);
-    EXPECT_EQ(closestHitStack(s.tree, s.triangles, ray).t, 1.0f);
+    EXPECT_EQ(closestHitStack(s.stackBvh, ray).t, 1.0f);
     EXPECT_EQ(closestHitWide(s.nodes, s.triangles, ray).t, 1.0f);
 }
 

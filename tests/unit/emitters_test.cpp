@@ -10,6 +10,7 @@
 #include "prepare/prepared_scene.h"
 #include "reference/light_sampling.h"
 #include "reference/scene_tracer.h"
+#include "reference/stack_intersector.h"
 #include "reference/surface.h"
 #include "shared/rng.h"
 #include "shared/sampling.h"
@@ -117,7 +118,8 @@ struct PdfMean {
 // that reach an area emitter.
 PdfMean integrateLightPdf(const PreparedScene& prepared, const glm::vec3& origin,
                           std::uint32_t seed) {
-    SceneTracer tracer(prepared);
+    StackIntersectors intersectors(prepared);
+    SceneTracer tracer(prepared, intersectors);
     const int n = 400000;
     double sum = 0.0, sumSq = 0.0;
     for (uint32_t i = 0; i < uint32_t(n); ++i) {
@@ -195,7 +197,8 @@ TEST(Emitters, LightPdfWithASphereIntegratesToTheAreaEmittersShare) {
 // A light sample's pdf must equal lightPdf() for the same point: the two halves of MIS.
 TEST(Emitters, SampledPdfEqualsEvaluatedPdf) {
     PreparedScene prepared = prepareScene(mixedEmitterScene());
-    SceneTracer tracer(prepared);
+    StackIntersectors intersectors(prepared);
+    SceneTracer tracer(prepared, intersectors);
     const glm::vec3 origin(0.1f, 0.05f, -0.3f);
     for (uint32_t i = 0; i < 2000; ++i) {
         LightSample light =

@@ -1,6 +1,7 @@
-// gltf_writer.h — glTF files made by the tests, for what only the loader decides: degenerate
-// vertex data (zero-area triangles, NaN normals and positions) and scenes placed far from the
-// origin through the node tree. Written with tinygltf, buffers embedded as data URIs.
+// gltf_writer.h — glTF files made by the tests and benchmarks: for what only the loader
+// decides (degenerate vertex data, scenes placed far from the origin through the node tree),
+// and generated benchmark scenes that every renderer reads from the same file. Written with
+// tinygltf; buffers embedded as data URIs, or in a .bin file beside a large scene.
 #pragma once
 
 #include <algorithm>
@@ -28,7 +29,7 @@ class GltfWriter {
 public:
     GltfWriter() {
         model_.asset.version = "2.0";
-        model_.asset.generator = "vkpt tests/extremes";
+        model_.asset.generator = "vkpt tests";
         model_.buffers.emplace_back();
         model_.scenes.emplace_back();
         model_.defaultScene = 0;
@@ -38,7 +39,17 @@ public:
         tinygltf::Material m;
         m.pbrMetallicRoughness.baseColorFactor = {albedo.x, albedo.y, albedo.z, 1.0};
         m.pbrMetallicRoughness.metallicFactor = 0.0;
-        m.emissiveFactor = {emission.x, emission.y, emission.z};
+        // The core emissiveFactor stays in [0, 1]; brighter emitters carry the rest in
+        // KHR_materials_emissive_strength, as the specification asks.
+        const double strength =
+            std::max({1.0, double(emission.x), double(emission.y), double(emission.z)});
+        m.emissiveFactor = {emission.x / strength, emission.y / strength, emission.z / strength};
+        if (strength > 1.0) {
+            tinygltf::Value::Object emissive;
+            emissive["emissiveStrength"] = tinygltf::Value(strength);
+            m.extensions["KHR_materials_emissive_strength"] = tinygltf::Value(emissive);
+            addExtensionUsed("KHR_materials_emissive_strength");
+        }
         // specularFactor 0: the Lambertian "diffuse" kind the extreme-case answers assume.
         tinygltf::Value::Object specular;
         specular["specularFactor"] = tinygltf::Value(0.0);
@@ -77,16 +88,24 @@ public:
         addRootNode(node);
     }
 
-    void write(const std::string& path) { writeModel(model_, path); }
+    // Embedded: one self-contained .gltf (base64 data URIs, 4/3 the size). Separate: the
+    // buffer in <name>.bin beside the .gltf, as exporters write large scenes.
+    enum class Buffers { Embedded, Separate };
+
+    void write(const std::string& path, Buffers buffers = Buffers::Embedded) {
+        writeModel(model_, path, buffers);
+    }
 
     void addExtensionUsed(const std::string& name) {
         auto& used = model_.extensionsUsed;
         if (std::find(used.begin(), used.end(), name) == used.end()) used.push_back(name);
     }
 
-    static void writeModel(tinygltf::Model& model, const std::string& path) {
+    static void writeModel(tinygltf::Model& model, const std::string& path,
+                           Buffers buffers = Buffers::Embedded) {
         tinygltf::TinyGLTF io;
-        if (!io.WriteGltfSceneToFile(&model, path, false, true, false, false))
+        const bool embedBuffers = buffers == Buffers::Embedded;
+        if (!io.WriteGltfSceneToFile(&model, path, false, embedBuffers, false, false))
             throw std::runtime_error("cannot write " + path);
     }
 
