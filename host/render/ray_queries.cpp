@@ -6,6 +6,7 @@
 #include "gpu/context.h"
 #include "gpu/dispatch.h"
 #include "gpu/submit.h"
+#include "gpu/timestamps.h"
 #include "gpu/upload.h"
 #include "render/accumulation.h"
 #include "render/device_scene.h"
@@ -20,7 +21,8 @@ struct DeviceRayQueries::State {
           closestKernel(makeWavefrontKernel(c, WavefrontKernel::TraceClosest, scene.features)),
           shadowKernel(makeWavefrontKernel(c, WavefrontKernel::TraceShadow, scene.features)),
           closestSet(bindWavefrontKernel(closestKernel, WavefrontKernel::TraceClosest, table())),
-          shadowSet(bindWavefrontKernel(shadowKernel, WavefrontKernel::TraceShadow, table())) {
+          shadowSet(bindWavefrontKernel(shadowKernel, WavefrontKernel::TraceShadow, table())),
+          timer(c, 1, "rayQueryTimer") {
         gpu::FrameParams frame{};
         frame.lightSamples = 1;
         frame.slotCount = batch;
@@ -47,9 +49,14 @@ struct DeviceRayQueries::State {
     void run(const Kernel& kernel, const DescriptorSet& set, std::uint32_t count) {
         const gpu::PassParams params{};
         submitAndWait(context, kernel.name(), [&](VkCommandBuffer commands) {
+            timer.recordReset(commands);
+            timer.recordBegin(commands, kernel.name());
             recordDispatch(commands, kernel, set, {workgroupsFor(count, WORKGROUP_SIZE), 1, 1},
                            pushConstantBytes(params));
+            timer.recordEnd(commands);
         });
+        for (const KernelTime& time : timer.results())
+            kernelNanoseconds += time.nanoseconds;
     }
 
     DeviceCounters counters() {
@@ -68,6 +75,8 @@ struct DeviceRayQueries::State {
     Kernel shadowKernel;
     DescriptorSet closestSet;
     DescriptorSet shadowSet;
+    GpuTimer timer;
+    std::uint64_t kernelNanoseconds = 0;
 };
 
 DeviceRayQueries::DeviceRayQueries(GpuContext& context, const PreparedScene& scene,
@@ -125,6 +134,10 @@ std::uint32_t DeviceRayQueries::truncatedTraversals() {
 
 std::uint64_t DeviceRayQueries::nodesVisited() {
     return state_->counters().wide(COUNTER_NODES_VISITED);
+}
+
+double DeviceRayQueries::kernelSeconds() const {
+    return double(state_->kernelNanoseconds) * 1e-9;
 }
 
 } // namespace vkpt

@@ -39,6 +39,9 @@ public:
     std::uint32_t truncatedTraversals();
     // BVH nodes tested so far, over all queries.
     std::uint64_t nodesVisited();
+    // GPU time of the traversal dispatches so far (timestamps; 0 on a device without them):
+    // the kernels' own time, without uploads and readbacks.
+    double kernelSeconds() const;
 
 private:
     struct State;

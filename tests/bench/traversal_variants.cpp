@@ -78,7 +78,7 @@ public:
                 if (set.anyHit) return {0.0f, any_(ray, c)};
                 return outcomeOf(closest_(ray, c));
             });
-        return {counters.nodesVisited, counters.triangleTests};
+        return {counters.nodesVisited, counters.triangleTests, std::nullopt};
     }
 
 private:
@@ -130,9 +130,10 @@ std::unique_ptr<TraversalVariant> wideWalkOnCpu(const PreparedScene& scene, std:
 // (COUNTER_NODES), not triangle tests.
 class DeviceKernelVariant final : public TraversalVariant {
 public:
-    DeviceKernelVariant(std::unique_ptr<GpuContext> context, const PreparedScene& scene)
+    DeviceKernelVariant(std::unique_ptr<GpuContext> context, const PreparedScene& scene,
+                        std::uint32_t batch)
         : TraversalVariant({"device kernels on " + context->deviceInfo().name, kWideLayout}),
-          context_(std::move(context)), queries_(*context_, scene) {}
+          context_(std::move(context)), queries_(*context_, scene, batchFor(*context_, batch)) {}
 
     TraceWork trace(const RaySet& set, std::vector<TraceOutcome>& outcomes) override {
         std::vector<DeviceRay> rays;
@@ -140,6 +141,7 @@ public:
         for (const RayQuery& r : set.rays)
             rays.push_back({r.origin, r.direction, r.tMax});
         std::uint64_t nodesBefore = queries_.nodesVisited();
+        const double kernelBefore = queries_.kernelSeconds();
         outcomes.assign(set.rays.size(), {});
         if (set.anyHit) {
             std::vector<bool> blocked = queries_.occluded(rays);
@@ -150,10 +152,16 @@ public:
             for (std::size_t i = 0; i < rays.size(); ++i)
                 outcomes[i] = {hits[i].t, hits[i].triangle != NO_HIT};
         }
-        return {queries_.nodesVisited() - nodesBefore, std::nullopt};
+        return {queries_.nodesVisited() - nodesBefore, std::nullopt,
+                queries_.kernelSeconds() - kernelBefore};
     }
 
 private:
+    static std::uint32_t batchFor(const GpuContext& context, std::uint32_t requested) {
+        if (requested > 0) return (requested + WORKGROUP_SIZE - 1) / WORKGROUP_SIZE * WORKGROUP_SIZE;
+        return context.deviceInfo().type == VK_PHYSICAL_DEVICE_TYPE_CPU ? 1u << 14 : 1u << 22;
+    }
+
     std::unique_ptr<GpuContext> context_;
     DeviceRayQueries queries_;
 };
@@ -162,7 +170,7 @@ std::unique_ptr<TraversalVariant> deviceKernels(const PreparedScene& scene,
                                                 const VariantOptions& options) {
     try {
         return std::make_unique<DeviceKernelVariant>(std::make_unique<GpuContext>(options.gpu),
-                                                     scene);
+                                                     scene, options.deviceBatch);
     } catch (const std::exception& error) {
         std::fprintf(stderr, "traversal_bench: device kernels left out: %s\n", error.what());
         return nullptr;

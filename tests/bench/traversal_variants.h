@@ -40,6 +40,8 @@ struct TraceOutcome {
 struct TraceWork {
     std::optional<std::uint64_t> nodes;
     std::optional<std::uint64_t> primitiveTests;
+    // The device kernels: their GPU time alone, without uploads and readbacks.
+    std::optional<double> kernelSeconds;
 };
 
 class TraversalVariant {
@@ -58,6 +60,9 @@ struct VariantOptions {
     std::uint32_t threads = 2; // CPU variants and Embree
     bool device = true;        // the device kernels (on lavapipe without a GPU)
     GpuOptions gpu;
+    // Rays per upload and dispatch of the device kernels; 0: 16,384 on a CPU device, 2^22 on a
+    // GPU, whose cores a small batch leaves idle.
+    std::uint32_t deviceBatch = 0;
 };
 
 // The variants for one scene; a variant that cannot run here (no Vulkan device) is left out
