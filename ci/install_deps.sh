@@ -11,6 +11,10 @@ packages=(
     libgtest-dev
     gnuplot-nox # the trade study's plots (vkpt-study; the CI test label `study` draws them)
     libembree-dev # benchmarks only (embree-ref, traversal_bench): never linked by vkpt or vkpt-ref
+    libopenexr-dev # OpenEXR output: render states, AOVs (host/state)
+    # Tests only: oiiotool reads the EXR layers as compositors do (label farm); a private Slurm
+    # runs the array-job recipe (label slurm); python3-yaml parses the OpenJD template (farm).
+    openimageio-tools slurm-wlm munge python3-yaml
 )
 
 missing=()

@@ -9,6 +9,10 @@
 
 #include "app/command_line.h"
 #include "app/convergence_options.h"
+#include "app/farm_options.h"
+#include "app/interrupt.h"
+#include "app/output_checks.h"
+#include "app/render_part.h"
 #include "app/render_options.h"
 #include "app/render_report.h"
 #include "app/scene_setup.h"
@@ -23,6 +27,7 @@ namespace {
 struct Invocation {
     RenderSettings settings;
     ConvergenceSettings convergence; // --reference only: the CPU renders each pixel to the end
+    FarmSettings farm;
     bool showHelp = false;
 };
 
@@ -31,6 +36,7 @@ Invocation parseArguments(const std::string& program, int argc, char** argv) {
     CommandLine commandLine(program);
     addRenderOptions(commandLine, invocation.settings);
     addConvergenceOptions(commandLine, invocation.convergence, ConvergenceOptionSet::ReferenceOnly);
+    addFarmOptions(commandLine, invocation.farm);
     commandLine.add(
         {"help", {'h'}, "", "show this help", [&](auto) { invocation.showHelp = true; }});
     std::vector<std::string> arguments(argv + 1, argv + argc);
@@ -42,18 +48,13 @@ Invocation parseArguments(const std::string& program, int argc, char** argv) {
     if (positional.size() > 1) throw InputError("more than one scene file given");
     if (!positional.empty()) invocation.settings.scenePath = positional[0];
     validateRenderSettings(invocation.settings);
+    validateFarmSettings(invocation.farm, invocation.settings);
     return invocation;
 }
 
 std::string deviceDescription(const RenderSettings& settings) {
     unsigned threads = settings.threads ? settings.threads : std::thread::hardware_concurrency();
     return "CPU, " + std::to_string(threads) + " threads";
-}
-
-void writeOutputs(const RenderOutput& output, const RenderSettings& settings) {
-    writeImage(output.image, settings.outputPath, settings.exposure);
-    std::string heatMap = heatMapPathFor(settings.outputPath);
-    writeSampleCountHeatMap(output.sampleCounts, output.image.width, output.image.height, heatMap);
 }
 
 // The reference renders every pixel to its end, so its curve is one point: the final image.
@@ -71,20 +72,41 @@ std::optional<ConvergenceReport> finalError(const ConvergenceSettings& convergen
     return ConvergenceReport{convergence, ConvergenceStop::Budget, false, tracker.curve()};
 }
 
-void run(const ReferenceProgram& program, const RenderSettings& settings,
-         const ConvergenceSettings& convergence) {
+ReferenceOptions referenceOptions(RenderPart& part, const IntersectorFactory& intersectors) {
+    ReferenceOptions options;
+    options.intersectors = &intersectors;
+    options.plan = part.plan();
+    options.resume = part.resumeRecords();
+    options.interrupt = &stopRequested();
+    options.checkpointSeconds = part.checkpointSeconds();
+    if (options.checkpointSeconds > 0.0) options.checkpoint = part.checkpointWriter();
+    return options;
+}
+
+// Returns the exit code: 0, or 128 + the signal that stopped the render.
+int run(const ReferenceProgram& program, const Invocation& invocation) {
+    const RenderSettings& settings = invocation.settings;
+    const ConvergenceSettings& convergence = invocation.convergence;
+    // Every output path and a resumed state first: a typo costs a second, not the render.
+    checkOutputPaths(settings);
+    RenderPart part(program.name, settings, invocation.farm);
+    // Before the load, so that a stop during it still ends with the image and the state.
+    installStopHandlers();
     std::optional<Image> reference;
     if (!convergence.referencePath.empty())
         reference = loadReference(convergence.referencePath, settings.width, settings.height);
     SceneSetup setup = setUpScene(settings, program.name);
+    part.attachScene(setup);
     std::unique_ptr<IntersectorFactory> intersectors =
         program.makeIntersectors(setup.prepared, settings);
     RenderReport report;
     report.program = program.name;
     report.settings = &settings;
-    RenderOutput output =
-        renderReference(setup.prepared, setup.camera, settings, report.stats, *intersectors);
-    writeOutputs(output, settings);
+    const ReferenceResult result =
+        renderReferenceParts(setup.prepared, setup.camera, settings, report.stats,
+                             referenceOptions(part, *intersectors));
+    const RenderOutput& output = result.output;
+    part.writeResults(output, result.records, result.interrupted);
     report.device = deviceDescription(settings);
     report.bvh = setup.prepared.bvhStats;
     report.triangles = setup.prepared.triangles.size();
@@ -96,6 +118,7 @@ void run(const ReferenceProgram& program, const RenderSettings& settings,
                                     report.stats, settings.samplesPerPixel);
     printRenderSummary(report);
     if (!settings.statsJsonPath.empty()) writeStatsJson(report, settings.statsJsonPath);
+    return result.interrupted ? exitCodeForStop() : 0;
 }
 
 } // namespace
@@ -103,8 +126,7 @@ void run(const ReferenceProgram& program, const RenderSettings& settings,
 int runReferenceProgram(const ReferenceProgram& program, int argc, char** argv) {
     try {
         Invocation invocation = parseArguments(program.name, argc, argv);
-        if (!invocation.showHelp) run(program, invocation.settings, invocation.convergence);
-        return 0;
+        return invocation.showHelp ? 0 : run(program, invocation);
     } catch (const InputError& error) {
         return reportFailure(program.name, error, 1);
     } catch (const std::exception& error) {

@@ -28,7 +28,8 @@ void addImageOptions(CommandLine& cl, RenderSettings& s) {
                 s.width = parseUnsigned("res", v[0], 1);
                 s.height = parseUnsigned("res", v[1], 1);
             }});
-    cl.add({"output", {'o', 'f'}, "FILE", ".png (sRGB 8-bit), .pfm or .hdr (linear float)",
+    cl.add({"output", {'o', 'f'}, "FILE",
+            ".png (sRGB 8-bit), .pfm, .hdr (linear float), .exr (float, layers and state)",
             [&s](auto v) { s.outputPath = v[0]; }});
     cl.add({"exposure", {}, "EV", "scale by 2^EV before 8-bit output (default 0)",
             [&s](auto v) { s.exposure = parseFloat("exposure", v[0]); }});

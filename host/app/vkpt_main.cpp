@@ -1,8 +1,6 @@
 // vkpt_main.cpp — vkpt, the wavefront path tracer on a Vulkan compute device: load, build,
 // upload, render, write. Same options and outputs as vkpt-ref, plus the device's own.
-#include <atomic>
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -10,8 +8,12 @@
 
 #include "app/command_line.h"
 #include "app/convergence_options.h"
+#include "app/farm_options.h"
+#include "app/interrupt.h"
+#include "app/output_checks.h"
 #include "app/pass_figures.h"
 #include "app/render_options.h"
+#include "app/render_part.h"
 #include "app/render_report.h"
 #include "app/scene_setup.h"
 #include "common/errors.h"
@@ -26,11 +28,11 @@ namespace {
 using namespace vkpt;
 
 const char* const kProgram = "vkpt";
-constexpr int kExitInterrupted = 130; // 128 + SIGINT, as shells report it
 
 struct Invocation {
     RenderSettings settings;
     ConvergenceSettings convergence;
+    FarmSettings farm;
     GpuOptions gpu;
     bool listDevices = false;
     bool kernelStats = false;
@@ -65,6 +67,7 @@ Invocation parseArguments(int argc, char** argv) {
     CommandLine commandLine(kProgram);
     addRenderOptions(commandLine, invocation.settings);
     addConvergenceOptions(commandLine, invocation.convergence, ConvergenceOptionSet::All);
+    addFarmOptions(commandLine, invocation.farm);
     addDeviceOptions(commandLine, invocation);
     commandLine.add(
         {"help", {'h'}, "", "show this help", [&](auto) { invocation.showHelp = true; }});
@@ -78,6 +81,7 @@ Invocation parseArguments(int argc, char** argv) {
     if (positional.size() > 1) throw InputError("more than one scene file given");
     if (!positional.empty()) invocation.settings.scenePath = positional[0];
     validateRenderSettings(invocation.settings);
+    validateFarmSettings(invocation.farm, invocation.settings);
     return invocation;
 }
 
@@ -87,29 +91,6 @@ int printDevices() {
     for (const DeviceInfo& device : devices)
         std::printf("%s\n", describeDevice(device).c_str());
     return 0;
-}
-
-// Ctrl-C asks the renderer to stop after the current pass; a second one ends the process
-// (SA_RESETHAND restores the default action).
-std::atomic<bool> interruptRequested{false};
-static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler");
-
-extern "C" void onInterrupt(int) {
-    interruptRequested.store(true);
-}
-
-void installInterruptHandler() {
-    struct sigaction action {};
-    action.sa_handler = onInterrupt;
-    action.sa_flags = SA_RESETHAND;
-    sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, nullptr);
-}
-
-void writeOutputs(const RenderOutput& output, const RenderSettings& settings) {
-    writeImage(output.image, settings.outputPath, settings.exposure);
-    std::string heatMap = heatMapPathFor(settings.outputPath);
-    writeSampleCountHeatMap(output.sampleCounts, output.image.width, output.image.height, heatMap);
 }
 
 DeviceRunReport deviceRunReport(const WavefrontResult& result, double setupSeconds) {
@@ -135,11 +116,16 @@ bool printsPassLines(const Invocation& invocation) {
     return invocation.convergence.needsPixels() && !invocation.settings.quiet;
 }
 
-WavefrontOptions wavefrontOptions(const Invocation& invocation, ConvergenceTracker& tracker) {
+WavefrontOptions wavefrontOptions(const Invocation& invocation, ConvergenceTracker& tracker,
+                                  RenderPart& part) {
     WavefrontOptions options;
     options.timeKernels = invocation.kernelStats;
     options.slotCount = invocation.pathSlots;
-    options.interrupt = &interruptRequested;
+    options.interrupt = &stopRequested();
+    options.plan = part.plan();
+    options.resume = part.resumeRecords();
+    options.checkpointSeconds = part.checkpointSeconds();
+    if (options.checkpointSeconds > 0.0) options.checkpoint = part.checkpointWriter();
     const ConvergenceSettings& convergence = invocation.convergence;
     options.timeLimitSeconds = convergence.timeLimitSeconds;
     if (!convergence.any()) return options;
@@ -213,21 +199,25 @@ void warnAboutTruncation(const WavefrontResult& result) {
 
 int render(const Invocation& invocation) {
     const RenderSettings& settings = invocation.settings;
-    // The device first: without one, the user hears that (one line) before a long load.
+    // Every output path and a resumed state first: a typo costs a second, not the render.
+    checkOutputPaths(settings);
+    RenderPart part(kProgram, settings, invocation.farm);
+    // The device next: without one, the user hears that (one line) before a long load.
     GpuContext context(invocation.gpu);
     const std::optional<Image> reference = loadReferenceFor(invocation);
     SceneSetup setup = setUpScene(settings, kProgram);
+    part.attachScene(setup);
     const auto start = std::chrono::steady_clock::now();
-    installInterruptHandler();
+    installStopHandlers();
     std::fprintf(stderr, "%s: device %s\n", kProgram, describeDevice(context.deviceInfo()).c_str());
     ConvergenceTracker tracker(reference ? &*reference : nullptr,
                                invocation.convergence.targetError);
     RenderSettings renderSettings = settings;
     renderSettings.quiet = settings.quiet || printsPassLines(invocation);
     WavefrontResult result = renderWavefront(context, setup.prepared, setup.camera, renderSettings,
-                                             wavefrontOptions(invocation, tracker));
+                                             wavefrontOptions(invocation, tracker, part));
     const std::chrono::duration<double> total = std::chrono::steady_clock::now() - start;
-    writeOutputs(result.output, settings);
+    part.writeResults(result.output, result.records, result.interrupted);
     RenderReport report =
         makeReport(invocation, setup, context, result, total.count() - result.stats.seconds);
     report.convergence = convergenceReport(invocation, tracker, result.stop);
@@ -237,7 +227,7 @@ int render(const Invocation& invocation) {
     if (context.validationMessageCount() > 0)
         throw InternalError("the validation layer reported " +
                             std::to_string(context.validationMessageCount()) + " messages");
-    return result.interrupted ? kExitInterrupted : 0;
+    return result.interrupted ? exitCodeForStop() : 0;
 }
 
 } // namespace

@@ -1,10 +1,10 @@
-// reference_renderer.cpp — tiles handed to threads from an atomic counter; each pixel is
-// sampled until its budget or its confidence interval says stop.
+// reference_renderer.cpp — rounds of samples over the crop; in each, tiles handed to threads
+// from an atomic counter, each pixel sampled up to the round's end unless its confidence
+// interval says stop. A pixel's samples are the same and summed in the same order however the
+// render is cut into rounds, so rounds change nothing in the image.
 #include "reference/reference_renderer.h"
 
 #include <algorithm>
-#include <atomic>
-#include <cfloat>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -13,6 +13,7 @@
 
 #include <time.h>
 
+#include "common/errors.h"
 #include "common/progress.h"
 #include "reference/integrators.h"
 #include "reference/pixel_accumulator.h"
@@ -27,7 +28,12 @@ namespace vkpt {
 
 namespace {
 
+using Clock = std::chrono::steady_clock;
+
 constexpr std::uint32_t kTileSize = 16;
+// A round's length when nothing else asks: short enough that Ctrl-C or SIGTERM is answered
+// within about this long, long enough that starting the threads costs nothing.
+constexpr double kRoundSeconds = 1.0;
 
 struct TileGrid {
     std::uint32_t columns;
@@ -35,25 +41,28 @@ struct TileGrid {
     std::uint32_t count() const { return columns * rows; }
 };
 
+// One pixel of the crop: its running estimate and where it stands.
+struct PixelWork {
+    PixelAccumulator accumulator;
+    std::uint32_t taken = 0; // samples traced, from the plan's first sample index on
+    bool converged = false;
+};
+
 struct RenderJob {
     const PreparedScene& scene;
     const gpu::Camera& camera;
     const RenderSettings& settings;
     const IntersectorFactory& intersectors;
-    RenderOutput& output;
+    const SamplePlan& plan;
+    std::vector<PixelWork>& pixels; // plan.crop, row-major
     ProgressBar& progress;
     float darkFloor;
     TileGrid tiles;
+    std::uint32_t roundEnd = 0; // every pixel samples until it has taken this many
     std::atomic<std::uint32_t> nextTile{0};
     std::mutex statsMutex;
     RenderStats& stats;
 };
-
-// Outputs are float: a statistic beyond the float range saturates instead of becoming infinite
-// (a double-to-float conversion out of range is undefined behaviour besides).
-float saturatedFloat(double value) {
-    return float(std::clamp(value, -double(FLT_MAX), double(FLT_MAX)));
-}
 
 struct ThreadCounters {
     std::uint64_t samples = 0;
@@ -65,9 +74,11 @@ void renderPixel(RenderJob& job, IntegratorContext& context, std::uint32_t x, st
     const RenderSettings& settings = job.settings;
     const AdaptiveSettings& adaptive = settings.adaptive;
     const std::uint32_t pixel = y * job.camera.width + x;
-    PixelAccumulator accumulator;
-    std::uint32_t s = 0;
-    for (; s < settings.samplesPerPixel; ++s) {
+    PixelWork& work = job.pixels[std::size_t(y - job.plan.crop.y0) * job.plan.crop.width() +
+                                 (x - job.plan.crop.x0)];
+    PixelAccumulator& accumulator = work.accumulator;
+    while (work.taken < job.roundEnd && !work.converged) {
+        const std::uint32_t s = job.plan.range.begin + work.taken;
         SampleKey key{settings.seed, pixel, s};
         glm::vec4 jitter = gpu::randomFloats(key.seed, pixel, s, 0, DIM_CAMERA);
         glm::vec2 film(float(x) + jitter.x, float(y) + jitter.y);
@@ -79,31 +90,27 @@ void renderPixel(RenderJob& job, IntegratorContext& context, std::uint32_t x, st
         } else {
             ++counters.nonFinite; // discarded: one NaN would poison the pixel for good
         }
+        ++work.taken;
+        ++counters.samples;
         bool batchDone = (s + 1) % adaptive.batchSize == 0;
-        if (adaptive.enabled && batchDone &&
-            gpu::isPixelConverged(accumulator.count, float(accumulator.luminanceMean),
-                                  float(accumulator.luminanceM2), adaptive.minSamples,
-                                  adaptive.tolerance, job.darkFloor)) {
-            ++s;
-            break;
-        }
+        work.converged = adaptive.enabled && batchDone &&
+                         gpu::isPixelConverged(accumulator.count, float(accumulator.luminanceMean),
+                                               float(accumulator.luminanceM2), adaptive.minSamples,
+                                               adaptive.tolerance, job.darkFloor);
     }
-    counters.samples += s;
-    job.output.image.pixels[pixel] = accumulator.mean();
-    job.output.sampleCounts[pixel] = accumulator.count;
-    job.output.luminanceMean[pixel] = saturatedFloat(accumulator.luminanceMean);
-    job.output.luminanceM2[pixel] = saturatedFloat(accumulator.luminanceM2);
 }
 
 void renderTile(RenderJob& job, IntegratorContext& context, std::uint32_t tile,
                 ThreadCounters& counters) {
-    std::uint32_t x0 = (tile % job.tiles.columns) * kTileSize;
-    std::uint32_t y0 = (tile / job.tiles.columns) * kTileSize;
-    std::uint32_t x1 = std::min(x0 + kTileSize, job.camera.width);
-    std::uint32_t y1 = std::min(y0 + kTileSize, job.camera.height);
+    const PixelRect& crop = job.plan.crop;
+    std::uint32_t x0 = crop.x0 + (tile % job.tiles.columns) * kTileSize;
+    std::uint32_t y0 = crop.y0 + (tile / job.tiles.columns) * kTileSize;
+    std::uint32_t x1 = std::min(x0 + kTileSize, crop.x1);
+    std::uint32_t y1 = std::min(y0 + kTileSize, crop.y1);
+    const std::uint64_t before = counters.samples;
     for (std::uint32_t y = y0; y < y1; ++y)
         for (std::uint32_t x = x0; x < x1; ++x) renderPixel(job, context, x, y, counters);
-    job.progress.advance(std::uint64_t(x1 - x0) * (y1 - y0));
+    job.progress.advance(counters.samples - before);
 }
 
 double threadCpuSeconds() {
@@ -128,60 +135,190 @@ void renderWorker(RenderJob& job) {
     job.stats.cpuSeconds += threadCpuSeconds() - cpuStart;
 }
 
-RenderOutput makeOutput(std::uint32_t width, std::uint32_t height) {
-    RenderOutput output;
-    output.image = Image(width, height);
-    std::size_t pixels = std::size_t(width) * height;
-    output.sampleCounts.assign(pixels, 0);
-    output.luminanceMean.assign(pixels, 0.0f);
-    output.luminanceM2.assign(pixels, 0.0f);
-    return output;
-}
-
 std::uint32_t threadCount(const RenderSettings& settings) {
     if (settings.threads > 0) return settings.threads;
     return std::max(1u, std::thread::hardware_concurrency());
+}
+
+void runRound(RenderJob& job) {
+    job.nextTile = 0;
+    std::vector<std::thread> workers;
+    std::uint32_t count = std::min(threadCount(job.settings), job.tiles.count());
+    for (std::uint32_t i = 0; i < count; ++i) workers.emplace_back(renderWorker, std::ref(job));
+    for (std::thread& worker : workers) worker.join();
+}
+
+// --- records --------------------------------------------------------------------------------
+
+PixelWork workFromRecord(const PixelRecord& r) {
+    PixelWork w;
+    w.accumulator.radianceSum = r.mean * double(r.count);
+    w.accumulator.luminanceMean = r.luminanceMean;
+    w.accumulator.luminanceM2 = r.luminanceM2;
+    w.accumulator.count = r.count;
+    w.taken = r.samplesTaken;
+    w.converged = r.converged;
+    return w;
+}
+
+PixelRecord recordFromWork(const PixelWork& w) {
+    PixelRecord r;
+    const PixelAccumulator& a = w.accumulator;
+    r.mean = a.count ? a.radianceSum / double(a.count) : glm::dvec3(0.0);
+    r.luminanceMean = a.luminanceMean;
+    r.luminanceM2 = a.luminanceM2;
+    r.count = a.count;
+    r.samplesTaken = w.taken;
+    r.converged = w.converged;
+    return r;
+}
+
+std::vector<PixelRecord> recordsOf(const std::vector<PixelWork>& pixels) {
+    std::vector<PixelRecord> records;
+    records.reserve(pixels.size());
+    for (const PixelWork& w : pixels) records.push_back(recordFromWork(w));
+    return records;
+}
+
+std::vector<PixelWork> initialWork(const SamplePlan& plan, const ReferenceOptions& options) {
+    if (!options.resume) return std::vector<PixelWork>(plan.crop.area());
+    VKPT_ASSERT(options.resume->size() == plan.crop.area(), "resume records cover the crop");
+    std::vector<PixelWork> pixels;
+    pixels.reserve(options.resume->size());
+    for (const PixelRecord& r : *options.resume) pixels.push_back(workFromRecord(r));
+    return pixels;
+}
+
+// --- rounds ----------------------------------------------------------------------------------
+
+class RoundLoop {
+public:
+    RoundLoop(RenderJob& job, const ReferenceOptions& options)
+        : job_(job), options_(options), lastCheckpoint_(Clock::now()) {}
+
+    // Returns true when interrupted.
+    bool run() {
+        std::uint32_t done = samplesDone();
+        const std::uint32_t budget = job_.plan.range.size();
+        double secondsPerPixelSample = 0.0;
+        while (done < budget && activePixels() > 0) {
+            const std::uint32_t k = samplesForRound(secondsPerPixelSample, budget - done);
+            const Clock::time_point begin = Clock::now();
+            const std::uint64_t samplesBefore = job_.stats.samplesTaken;
+            job_.roundEnd = done + k;
+            runRound(job_);
+            const double seconds = std::chrono::duration<double>(Clock::now() - begin).count();
+            const std::uint64_t samples = job_.stats.samplesTaken - samplesBefore;
+            if (samples > 0) secondsPerPixelSample = seconds / double(samples);
+            done = job_.roundEnd;
+            if (done >= budget) break;
+            checkpointIfDue();
+            if (options_.interrupt && options_.interrupt->load()) return true;
+        }
+        return false;
+    }
+
+private:
+    std::uint32_t samplesDone() const {
+        std::uint32_t least = UINT32_MAX;
+        for (const PixelWork& w : job_.pixels)
+            if (!w.converged) least = std::min(least, w.taken);
+        return least == UINT32_MAX ? job_.plan.range.size() : least;
+    }
+
+    std::uint64_t activePixels() const {
+        return std::uint64_t(std::count_if(job_.pixels.begin(), job_.pixels.end(),
+                                           [&](const PixelWork& w) {
+                                               return !w.converged &&
+                                                      w.taken < job_.plan.range.size();
+                                           }));
+    }
+
+    // The first round takes one sample per pixel to measure the rate; later ones what fits in
+    // kRoundSeconds, or in the time left to the next checkpoint when that is sooner.
+    std::uint32_t samplesForRound(double secondsPerPixelSample, std::uint32_t left) const {
+        if (!(secondsPerPixelSample > 0.0)) return 1;
+        double seconds = kRoundSeconds;
+        if (options_.checkpoint && options_.checkpointSeconds > 0.0) {
+            const double sinceCheckpoint =
+                std::chrono::duration<double>(Clock::now() - lastCheckpoint_).count();
+            seconds = std::min(seconds, options_.checkpointSeconds - sinceCheckpoint);
+        }
+        const double perSample = secondsPerPixelSample * double(activePixels());
+        const double fit = std::floor(std::max(seconds, 0.0) / perSample);
+        return std::uint32_t(std::clamp(fit, 1.0, double(left)));
+    }
+
+    void checkpointIfDue() {
+        if (!options_.checkpoint || !(options_.checkpointSeconds > 0.0)) return;
+        const Clock::time_point now = Clock::now();
+        if (std::chrono::duration<double>(now - lastCheckpoint_).count() <
+            options_.checkpointSeconds)
+            return;
+        options_.checkpoint(recordsOf(job_.pixels));
+        lastCheckpoint_ = Clock::now();
+    }
+
+    RenderJob& job_;
+    const ReferenceOptions& options_;
+    Clock::time_point lastCheckpoint_;
+};
+
+RenderOutput outputOf(const gpu::Camera& camera, const PixelRect& crop,
+                      const std::vector<PixelRecord>& records) {
+    RenderState state;
+    state.identity.width = camera.width;
+    state.identity.height = camera.height;
+    state.window = crop;
+    state.pixels = records;
+    return renderOutputOf(state);
 }
 
 } // namespace
 
 float adaptiveDarkFloor(float exposure) { return ADAPTIVE_DARK_FLOOR * std::exp2(-exposure); }
 
+ReferenceResult renderReferenceParts(const PreparedScene& scene, const gpu::Camera& camera,
+                                     const RenderSettings& settings, RenderStats& stats,
+                                     const ReferenceOptions& options) {
+    // Laying the tree out for the stack walk is set-up, not render time.
+    std::optional<StackIntersectors> stackWalk;
+    if (!options.intersectors) stackWalk.emplace(scene);
+    const IntersectorFactory& intersectors =
+        options.intersectors ? *options.intersectors : *stackWalk;
+    auto start = Clock::now();
+    const SamplePlan plan = options.plan.value_or(
+        SamplePlan{fullFrame(camera.width, camera.height), {0, settings.samplesPerPixel}});
+    std::vector<PixelWork> pixels = initialWork(plan, options);
+    stats = RenderStats{};
+    stats.uniformBudget = std::uint64_t(plan.crop.area()) * plan.range.size();
+    std::unique_ptr<ProgressBar> progress =
+        makeProgressBar("vkpt-ref", stats.uniformBudget, settings.quiet);
+    TileGrid tiles{(plan.crop.width() + kTileSize - 1) / kTileSize,
+                   (plan.crop.height() + kTileSize - 1) / kTileSize};
+    RenderJob job{scene, camera, settings, intersectors, plan, pixels, *progress,
+                  adaptiveDarkFloor(settings.exposure), tiles, 0, {}, {}, stats};
+    RoundLoop rounds(job, options);
+    ReferenceResult result;
+    result.interrupted = rounds.run();
+    progress->finish();
+    result.records = recordsOf(pixels);
+    result.output = outputOf(camera, plan.crop, result.records);
+    stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    return result;
+}
+
 RenderOutput renderReference(const PreparedScene& scene, const gpu::Camera& camera,
                              const RenderSettings& settings, RenderStats& stats) {
-    StackIntersectors intersectors(scene);
-    return renderReference(scene, camera, settings, stats, intersectors);
+    return renderReferenceParts(scene, camera, settings, stats, {}).output;
 }
 
 RenderOutput renderReference(const PreparedScene& scene, const gpu::Camera& camera,
                              const RenderSettings& settings, RenderStats& stats,
                              const IntersectorFactory& intersectors) {
-    auto start = std::chrono::steady_clock::now();
-    RenderOutput output = makeOutput(camera.width, camera.height);
-    stats = RenderStats{};
-    stats.uniformBudget = std::uint64_t(camera.width) * camera.height * settings.samplesPerPixel;
-    std::unique_ptr<ProgressBar> progress =
-        makeProgressBar("vkpt-ref", std::uint64_t(camera.width) * camera.height, settings.quiet);
-    TileGrid tiles{(camera.width + kTileSize - 1) / kTileSize,
-                   (camera.height + kTileSize - 1) / kTileSize};
-    RenderJob job{scene,
-                  camera,
-                  settings,
-                  intersectors,
-                  output,
-                  *progress,
-                  adaptiveDarkFloor(settings.exposure),
-                  tiles,
-                  {},
-                  {},
-                  stats};
-    std::vector<std::thread> workers;
-    std::uint32_t count = std::min(threadCount(settings), tiles.count());
-    for (std::uint32_t i = 0; i < count; ++i) workers.emplace_back(renderWorker, std::ref(job));
-    for (std::thread& worker : workers) worker.join();
-    progress->finish();
-    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return output;
+    ReferenceOptions options;
+    options.intersectors = &intersectors;
+    return renderReferenceParts(scene, camera, settings, stats, options).output;
 }
 
 } // namespace vkpt

@@ -8,6 +8,16 @@
 
 namespace vkpt {
 
+namespace {
+
+// Kahan's best estimate of the sum is the running sum less its compensation; the device summed
+// the samples times ACCUMULATION_SCALE (a power of two: exact to undo).
+glm::dvec3 radianceSumOf(const gpu::PixelState& p) {
+    return (glm::dvec3(p.radianceSum) - glm::dvec3(p.compensation)) / double(ACCUMULATION_SCALE);
+}
+
+} // namespace
+
 RenderOutput makeRenderOutput(std::span<const gpu::PixelState> pixels, std::uint32_t width,
                               std::uint32_t height) {
     VKPT_ASSERT(pixels.size() == std::size_t(width) * height, "one state per pixel");
@@ -18,16 +28,47 @@ RenderOutput makeRenderOutput(std::span<const gpu::PixelState> pixels, std::uint
     output.luminanceM2.resize(pixels.size());
     for (std::size_t i = 0; i < pixels.size(); ++i) {
         const gpu::PixelState& p = pixels[i];
-        // Kahan's best estimate of the sum is the running sum less its compensation; the
-        // device summed the samples times ACCUMULATION_SCALE (a power of two: exact to undo).
-        glm::dvec3 sum =
-            (glm::dvec3(p.radianceSum) - glm::dvec3(p.compensation)) / double(ACCUMULATION_SCALE);
-        output.image.pixels[i] = p.count ? glm::vec3(sum / double(p.count)) : glm::vec3(0.0f);
+        output.image.pixels[i] =
+            p.count ? glm::vec3(radianceSumOf(p) / double(p.count)) : glm::vec3(0.0f);
         output.sampleCounts[i] = p.count;
         output.luminanceMean[i] = p.luminanceMean;
         output.luminanceM2[i] = p.luminanceM2;
     }
     return output;
+}
+
+PixelRecord recordFromPixelState(const gpu::PixelState& p) {
+    PixelRecord r;
+    r.mean = p.count ? radianceSumOf(p) / double(p.count) : glm::dvec3(0.0);
+    r.luminanceMean = p.luminanceMean;
+    r.luminanceM2 = p.luminanceM2;
+    r.count = p.count;
+    r.samplesTaken = p.samplesTaken;
+    r.converged = p.converged != 0;
+    return r;
+}
+
+gpu::PixelState pixelStateFromRecord(const PixelRecord& r) {
+    gpu::PixelState p{};
+    const glm::dvec3 scaledSum = r.mean * double(r.count) * double(ACCUMULATION_SCALE);
+    p.radianceSum = glm::vec3(scaledSum);
+    p.compensation = glm::vec3(glm::dvec3(p.radianceSum) - scaledSum);
+    p.count = r.count;
+    p.samplesTaken = r.samplesTaken;
+    p.luminanceMean = float(r.luminanceMean);
+    p.luminanceM2 = float(r.luminanceM2);
+    p.converged = r.converged ? 1u : 0u;
+    return p;
+}
+
+std::vector<PixelRecord> cropRecords(std::span<const gpu::PixelState> pixels, std::uint32_t width,
+                                     const PixelRect& crop) {
+    std::vector<PixelRecord> records;
+    records.reserve(crop.area());
+    for (std::uint32_t y = crop.y0; y < crop.y1; ++y)
+        for (std::uint32_t x = crop.x0; x < crop.x1; ++x)
+            records.push_back(recordFromPixelState(pixels[std::size_t(y) * width + x]));
+    return records;
 }
 
 std::uint64_t totalSamplesTaken(std::span<const gpu::PixelState> pixels) {

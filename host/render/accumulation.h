@@ -4,10 +4,12 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "common/render_stats.h"
 #include "image/render_output.h"
 #include "lib/wavefront.h"
+#include "state/render_state.h"
 
 namespace vkpt {
 
@@ -19,6 +21,16 @@ RenderOutput makeRenderOutput(std::span<const gpu::PixelState> pixels, std::uint
 
 // Σ samples traced over the pixels, non-finite ones included (RenderStats::samplesTaken).
 std::uint64_t totalSamplesTaken(std::span<const gpu::PixelState> pixels);
+
+// One pixel state as the executor-neutral record (the Kahan sum's best estimate over the count,
+// in double) and back: Kahan's running sum becomes the float nearest the sum and the
+// compensation the rest, so the record's sum survives to within the compensation's rounding.
+PixelRecord recordFromPixelState(const gpu::PixelState& pixel);
+gpu::PixelState pixelStateFromRecord(const PixelRecord& record);
+
+// The records of `crop`, row-major, from the whole image's pixel states.
+std::vector<PixelRecord> cropRecords(std::span<const gpu::PixelState> pixels, std::uint32_t width,
+                                     const PixelRect& crop);
 
 // A snapshot of queueCounters.
 struct DeviceCounters {

@@ -9,6 +9,7 @@
 #include <ctime>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "common/errors.h"
@@ -101,12 +102,17 @@ BufferTable makeBufferTable(const DeviceScene& scene, const WorkBuffers& work) {
     return table;
 }
 
+SamplePlan samplePlanFor(const gpu::Camera& camera, const RenderSettings& settings,
+                        const WavefrontOptions& options) {
+    return options.plan.value_or(
+        SamplePlan{fullFrame(camera.width, camera.height), {0, settings.samplesPerPixel}});
+}
+
 std::uint32_t slotCountFor(const GpuContext& context, const RenderSettings& settings,
-                           const WavefrontOptions& options) {
+                           const SamplePlan& plan, const WavefrontOptions& options) {
     SlotRequest request;
     request.lightSamples = settings.lightSamples;
-    request.pathsWanted =
-        std::uint64_t(settings.width) * settings.height * settings.samplesPerPixel;
+    request.pathsWanted = std::uint64_t(plan.crop.area()) * plan.range.size();
     request.requestedSlots = options.slotCount;
     return chooseSlotCount(context, request);
 }
@@ -138,9 +144,10 @@ public:
     WavefrontRenderer(GpuContext& context, const PreparedScene& scene, const gpu::Camera& camera,
                       const RenderSettings& settings, const WavefrontOptions& options)
         : context_(context), settings_(settings), camera_(camera), options_(options),
+          plan_(samplePlanFor(camera, settings, options)), budget_(plan_.range.size()),
           pixelCount_(camera.width * camera.height), scene_(uploadScene(context, scene)),
-          buffers_(context, slotCountFor(context, settings, options), settings.lightSamples,
-                   pixelCount_),
+          buffers_(context, slotCountFor(context, settings, plan_, options),
+                   settings.lightSamples, pixelCount_),
           table_(makeBufferTable(scene_, buffers_)),
           pipelines_(context, table_, kernelFeaturesFor(scene, options)),
           timer_(makeTimer(context, options)),
@@ -152,6 +159,10 @@ public:
 
 private:
     void initialise();
+    void uploadResumedStates();
+    void uploadActiveList();
+    bool checkpointIfDue();
+    std::vector<gpu::PixelState> downloadPixelStates();
     ScheduleInputs schedule() const;
     gpu::PassParams chunkParams(std::uint32_t samplesPerPass, std::uint32_t start,
                                 std::uint32_t pixels) const;
@@ -168,6 +179,8 @@ private:
     const RenderSettings& settings_;
     gpu::Camera camera_;
     const WavefrontOptions& options_;
+    SamplePlan plan_;
+    std::uint32_t budget_; // samples per pixel of the plan's range
     std::uint32_t pixelCount_;
     DeviceScene scene_;
     WorkBuffers buffers_;
@@ -191,6 +204,8 @@ private:
     double secondsPerPixelSample_ = 0.0; // the last pass's rate, for a time limit
     double observerSeconds_ = 0.0;       // spent in readbacks and observer calls
     double observerCpuSeconds_ = 0.0;
+    std::uint64_t resumedSamples_ = 0; // Σ samples the resumed records had taken
+    Clock::time_point lastCheckpoint_;
 };
 
 void WavefrontRenderer::initialise() {
@@ -199,6 +214,49 @@ void WavefrontRenderer::initialise() {
     fillBuffer(context_, buffers_.pixelStates, 0);
     fillBuffer(context_, buffers_.queueCounters, 0);
     activePixels_ = pixelCount_;
+    if (options_.resume) uploadResumedStates();
+    if (options_.resume || !(plan_.crop == fullFrame(camera_.width, camera_.height)))
+        uploadActiveList();
+}
+
+void WavefrontRenderer::uploadResumedStates() {
+    const std::vector<PixelRecord>& records = *options_.resume;
+    VKPT_ASSERT(records.size() == plan_.crop.area(), "resume records cover the crop");
+    std::vector<gpu::PixelState> pixels(pixelCount_, gpu::PixelState{});
+    std::size_t i = 0;
+    for (std::uint32_t y = plan_.crop.y0; y < plan_.crop.y1; ++y)
+        for (std::uint32_t x = plan_.crop.x0; x < plan_.crop.x1; ++x, ++i) {
+            pixels[std::size_t(y) * camera_.width + x] = pixelStateFromRecord(records[i]);
+            resumedSamples_ += records[i].samplesTaken;
+        }
+    upload(context_, buffers_.pixelStates, std::span<const gpu::PixelState>(pixels));
+}
+
+// A crop or a resumed render starts from a list of the pixels that go on, instead of "every
+// pixel" (useActiveList 0); all of them have taken the same number of samples, which is where
+// the passes start.
+void WavefrontRenderer::uploadActiveList() {
+    const std::vector<PixelRecord>* resume = options_.resume;
+    std::vector<std::uint32_t> active;
+    std::optional<std::uint32_t> taken;
+    std::size_t i = 0;
+    for (std::uint32_t y = plan_.crop.y0; y < plan_.crop.y1; ++y)
+        for (std::uint32_t x = plan_.crop.x0; x < plan_.crop.x1; ++x, ++i) {
+            const PixelRecord record = resume ? (*resume)[i] : PixelRecord{};
+            if (record.converged || record.samplesTaken >= budget_) continue;
+            if (taken && *taken != record.samplesTaken)
+                throw InputError("the state to resume has pixels at " + std::to_string(*taken) +
+                                 " and at " + std::to_string(record.samplesTaken) +
+                                 " samples; vkpt resumes only a state whose unfinished pixels "
+                                 "all have the same count (vkpt-ref resumes any)");
+            taken = record.samplesTaken;
+            active.push_back(y * camera_.width + x);
+        }
+    samplesDone_ = taken.value_or(budget_);
+    activePixels_ = std::uint32_t(active.size());
+    if (!active.empty()) upload(context_, buffers_.activePixels, std::span<const std::uint32_t>(active));
+    activeParity_ = 0;
+    useActiveList_ = true;
 }
 
 void WavefrontRenderer::submit(const std::string& label, const std::function<void()>& record) {
@@ -240,14 +298,14 @@ void WavefrontRenderer::runChunk(const gpu::PassParams& params, bool firstChunk)
 
 ScheduleInputs WavefrontRenderer::schedule() const {
     const AdaptiveSettings& adaptive = settings_.adaptive;
-    return {settings_.samplesPerPixel, samplesDone_,       activePixels_,      buffers_.slotCount,
+    return {budget_,          samplesDone_,       activePixels_,      buffers_.slotCount,
             adaptive.enabled,          adaptive.batchSize, adaptive.minSamples};
 }
 
 gpu::PassParams WavefrontRenderer::chunkParams(std::uint32_t samplesPerPass, std::uint32_t start,
                                                std::uint32_t pixels) const {
     gpu::PassParams params{};
-    params.sampleBase = samplesDone_;
+    params.sampleBase = plan_.range.begin + samplesDone_;
     params.samplesPerPass = samplesPerPass;
     params.chunkStart = start;
     params.chunkPixels = pixels;
@@ -259,6 +317,11 @@ gpu::PassParams WavefrontRenderer::chunkParams(std::uint32_t samplesPerPass, std
 std::uint32_t WavefrontRenderer::samplesForNextPass() const {
     std::uint32_t k = samplesForPass(schedule());
     if (options_.readPixelsAfterPass) k = samplesForGeometricGrowth(k, samplesDone_);
+    if (options_.checkpoint && options_.checkpointSeconds > 0.0) {
+        const double sinceCheckpoint = secondsBetween(lastCheckpoint_, Clock::now());
+        k = samplesWithinTime(k, activePixels_, secondsPerPixelSample_,
+                              options_.checkpointSeconds - sinceCheckpoint);
+    }
     if (!(options_.timeLimitSeconds > 0.0)) return k;
     return samplesWithinTime(k, activePixels_, secondsPerPixelSample_,
                              options_.timeLimitSeconds - elapsed());
@@ -279,19 +342,33 @@ bool WavefrontRenderer::runPass() {
     ++passes_;
     progress_->setStatus("active pixels " + std::to_string(activePixels_));
     progress_->advance(k);
-    return samplesDone_ < settings_.samplesPerPixel && activePixels_ > 0;
+    return samplesDone_ < budget_ && activePixels_ > 0;
+}
+
+std::vector<gpu::PixelState> WavefrontRenderer::downloadPixelStates() {
+    return download<gpu::PixelState>(context_, buffers_.pixelStates, pixelCount_);
+}
+
+// A checkpoint downloads the pixel states (consistent at a pass end) and hands the crop's
+// records to the caller, who writes them.
+bool WavefrontRenderer::checkpointIfDue() {
+    if (!options_.checkpoint || !(options_.checkpointSeconds > 0.0)) return false;
+    if (secondsBetween(lastCheckpoint_, Clock::now()) < options_.checkpointSeconds) return false;
+    options_.checkpoint(cropRecords(downloadPixelStates(), camera_.width, plan_.crop));
+    lastCheckpoint_ = Clock::now();
+    return true;
 }
 
 WavefrontResult WavefrontRenderer::finish(double seconds) {
-    std::vector<gpu::PixelState> pixels =
-        download<gpu::PixelState>(context_, buffers_.pixelStates, pixelCount_);
+    std::vector<gpu::PixelState> pixels = downloadPixelStates();
     WavefrontResult result;
     result.output = makeRenderOutput(pixels, camera_.width, camera_.height);
+    result.records = cropRecords(pixels, camera_.width, plan_.crop);
     DeviceCounters counters = readCounters(buffers_.countersReadback);
     addCounterStats(counters, result.stats);
     result.stats.seconds = seconds;
-    result.stats.samplesTaken = totalSamplesTaken(pixels);
-    result.stats.uniformBudget = std::uint64_t(pixelCount_) * settings_.samplesPerPixel;
+    result.stats.samplesTaken = totalSamplesTaken(pixels) - resumedSamples_;
+    result.stats.uniformBudget = std::uint64_t(plan_.crop.area()) * budget_;
     result.kernelTimes = times_.totals();
     result.truncatedTraversals = counters.words[COUNTER_TRUNCATED];
     result.passes = passes_;
@@ -336,10 +413,11 @@ WavefrontStop WavefrontRenderer::runPasses() {
         const bool more = runPass();
         if (observe()) return WavefrontStop::Observer;
         if (!more)
-            return activePixels_ == 0 && samplesDone_ < settings_.samplesPerPixel
+            return activePixels_ == 0 && samplesDone_ < budget_
                        ? WavefrontStop::AllConverged
                        : WavefrontStop::BudgetSpent;
         if (options_.interrupt && options_.interrupt->load()) return WavefrontStop::Interrupted;
+        checkpointIfDue();
         if (options_.timeLimitSeconds > 0.0 && elapsed() >= options_.timeLimitSeconds)
             return WavefrontStop::TimeLimit;
     }
@@ -348,9 +426,13 @@ WavefrontStop WavefrontRenderer::runPasses() {
 WavefrontResult WavefrontRenderer::run() {
     initialise();
     start_ = Clock::now();
+    lastCheckpoint_ = start_;
     startCpu_ = processCpuSeconds();
-    progress_ = makeProgressBar("vkpt", settings_.samplesPerPixel, settings_.quiet);
-    const WavefrontStop stop = runPasses();
+    progress_ = makeProgressBar("vkpt", budget_, settings_.quiet);
+    progress_->advance(samplesDone_);
+    // A resumed render may have nothing left to do.
+    const bool done = activePixels_ == 0 || samplesDone_ >= budget_;
+    const WavefrontStop stop = done ? WavefrontStop::BudgetSpent : runPasses();
     interrupted_ = stop == WavefrontStop::Interrupted;
     progress_->finish();
     WavefrontResult result = finish(elapsed());

@@ -18,6 +18,7 @@
 #include "render/kernel_times.h"
 #include "render/scene_memory.h"
 #include "scene/scene_features.h"
+#include "state/sample_plan.h"
 
 namespace vkpt {
 
@@ -61,10 +62,21 @@ struct WavefrontOptions {
     // all of them after prepareScene(…, {.general = true})). Must include every feature the
     // scene uses (PreparedScene::usedFeatures), or renderWavefront throws InternalError.
     std::optional<SceneFeatures> features;
+    // Which pixels and samples to render (--crop, --task); unset: every pixel, [0, spp).
+    std::optional<SamplePlan> plan;
+    // Records of plan.crop (row-major) to continue from (--resume). The pixels that go on must
+    // all have taken the same number of samples (InputError otherwise), as every state a pass
+    // or a reference round ends on has.
+    const std::vector<PixelRecord>* resume = nullptr;
+    // Called with the records of plan.crop at the first pass end after every
+    // checkpointSeconds; passes are cut short so that one ends in time.
+    double checkpointSeconds = 0.0;
+    std::function<void(const std::vector<PixelRecord>&)> checkpoint;
 };
 
 struct WavefrontResult {
-    RenderOutput output;
+    RenderOutput output;              // the whole frame; 0 outside the crop
+    std::vector<PixelRecord> records; // the plan's crop, row-major
     RenderStats stats;
     std::vector<KernelTimeTotal> kernelTimes; // empty unless timeKernels
     std::uint64_t truncatedTraversals = 0;    // walks a driver loop limit cut short; must be 0

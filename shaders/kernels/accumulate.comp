@@ -62,7 +62,8 @@ bool accumulatePixel(uint activeIndex, out uint pixelIndex, out uint nonFinite) 
         } else {
             ++nonFinite; // discarded: one NaN would poison the pixel for good
         }
-        pixel.samplesTaken = path.sampleIndex + 1u;
+        // A count, not the sample index + 1: a task's samples start at its share's first index.
+        pixel.samplesTaken += 1u;
         // A converged pixel ignores the rest of the pass, so it takes the reference's samples.
         if (batchConverged(pixel)) {
             pixel.converged = 1u;

@@ -3,57 +3,18 @@
 #include <gtest/gtest.h>
 
 #include <csignal>
-#include <cstdio>
 #include <filesystem>
 #include <string>
-#include <vector>
 
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
+#include "../support/child_process.h"
 #include "image/image_io.h"
-
-extern char** environ;
 
 namespace vkpt {
 namespace {
 
-struct Child {
-    pid_t pid = -1;
-    int stderrFd = -1;
-};
-
-Child spawnWithStderrPipe(const std::vector<std::string>& arguments) {
-    int fds[2];
-    if (pipe(fds) != 0) return {};
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_adddup2(&actions, fds[1], STDERR_FILENO);
-    posix_spawn_file_actions_addclose(&actions, fds[0]);
-    std::vector<char*> argv;
-    for (const std::string& a : arguments)
-        argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    Child child;
-    if (posix_spawn(&child.pid, argv[0], &actions, nullptr, argv.data(), environ) != 0)
-        child.pid = -1;
-    posix_spawn_file_actions_destroy(&actions);
-    close(fds[1]);
-    child.stderrFd = fds[0];
-    return child;
-}
-
-// Reads until `marker` appears (true) or the stream ends (false); everything read is kept.
-bool readUntil(int fd, const std::string& marker, std::string& text) {
-    char buffer[4096];
-    while (text.find(marker) == std::string::npos) {
-        ssize_t n = read(fd, buffer, sizeof(buffer));
-        if (n <= 0) return false;
-        text.append(buffer, std::size_t(n));
-    }
-    return true;
-}
+using test::Child;
+using test::readUntil;
+using test::spawnWithStderrPipe;
 
 TEST(VkptInterrupt, CtrlCFinishesThePassWritesTheImageAndExits130) {
     const std::string output = (std::filesystem::current_path() / "interrupted.pfm").string();
