@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# slurm_check.sh — the Slurm recipe (farm/slurm) end to end on this one machine: starts a
+# slurm_check.sh — the Slurm recipe (ci/farm/slurm) end to end on this one machine: starts a
 # private single-node Slurm (munged with its own key and socket, slurmctld and slurmd on
 # 127.0.0.1, no accounting, state and logs in a temporary folder), submits the Cornell box as
 # an array job of 4 vkpt tasks plus the dependent merge job, compares the merged image with a
@@ -10,7 +10,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build="$(cd "${1:-build/ci}" && pwd)"
-recipe="$(pwd)/farm/slurm"
+recipe="$(pwd)/ci/farm/slurm"
 scene="$(pwd)/scenes/cornell-box.gltf"
 
 for tool in munged slurmctld slurmd sbatch scontrol sinfo oiiotool; do

@@ -4,7 +4,7 @@
 #
 #   VKPT=/opt/vkpt/bin/vkpt VKPT_MERGE=/opt/vkpt/bin/vkpt-merge \
 #   SCENE=/shared/scene.glb SPP=4096 TASKS=16 OUT_DIR=/shared/render \
-#   RENDER_ARGS="--res 3840 2160" bash farm/slurm/submit.sh [extra sbatch options...]
+#   RENDER_ARGS="--res 3840 2160" bash ci/farm/slurm/submit.sh [extra sbatch options...]
 #
 # Extra arguments go to both sbatch calls (--partition, --time, --gres=gpu:1 for the tasks...).
 # The job environment is this one (sbatch's default --export=ALL), so the variables above reach
