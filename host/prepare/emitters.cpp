@@ -159,10 +159,4 @@ EmitterList buildEmitters(std::span<gpu::Triangle> primitives,
     return builder.finish();
 }
 
-std::uint32_t selectEmitter(std::span<const float> cdf, float u) {
-    auto it = std::upper_bound(cdf.begin(), cdf.end(), u);
-    if (it == cdf.end()) --it;
-    return std::uint32_t(it - cdf.begin());
-}
-
 } // namespace vkpt

@@ -33,9 +33,6 @@ struct EmitterSources {
 EmitterList buildEmitters(std::span<gpu::Triangle> primitives,
                           std::span<const gpu::Material> materials, const EmitterSources& sources);
 
-// The emitter whose inclusive cdf interval contains u in [0, 1): the first i with u < cdf[i].
-std::uint32_t selectEmitter(std::span<const float> cdf, float u);
-
 float triangleArea(const gpu::Triangle& triangle);
 
 } // namespace vkpt

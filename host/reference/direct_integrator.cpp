@@ -2,12 +2,13 @@
 #include "reference/integrators.h"
 
 #include "reference/direct_lighting.h"
-#include "reference/light_sampling.h"
-#include "reference/surface.h"
+#include "shared/materials.h"
 #include "shared/path_rules.h"
 #include "shared/ray_offset.h"
 #include "shared/rng.h"
 #include "shared/sampling.h"
+#include "shared/scene_environment.h"
+#include "shared/surface.h"
 
 namespace vkpt {
 
@@ -15,7 +16,7 @@ namespace {
 
 // Σ f·Le·cos / p over N uniform directions: a direction counts when it reaches an emitter.
 glm::vec3 directByHemisphere(IntegratorContext& context, const SampleKey& key,
-                             const SurfacePoint& s) {
+                             const gpu::SurfacePoint& s) {
     gpu::Basis basis = gpu::makeBasis(s.shadingNormal);
     glm::vec3 origin = gpu::offsetFromSurface(s.position, s.geometricNormal, s.coordinateScale);
     glm::vec3 sum(0.0f);
@@ -25,21 +26,24 @@ glm::vec3 directByHemisphere(IntegratorContext& context, const SampleKey& key,
         glm::vec3 local = gpu::sampleUniformHemisphere(glm::vec2(u.y, u.z));
         glm::vec3 direction = gpu::basisToWorld(basis, local);
         if (glm::dot(direction, s.geometricNormal) <= 0.0f) continue;
-        glm::vec3 f = evaluateSurfaceBsdf(s, direction).f;
+        glm::vec3 f = gpu::evaluateSurfaceBsdf(s, direction).f;
         ClosestHit hit = context.tracer.closest(origin, direction, RayKind::Extension);
         // Emission reached, or the environment when the probe leaves the scene; punctual
         // lights cannot be hit, so this estimator does not see them.
+        const gpu::SceneView& view = context.tracer.view();
         glm::vec3 found =
             hit.hit
-                ? emittedRadiance(makeSurfacePoint(context.tracer.scene(), hit, origin, direction))
-                : environmentRadianceAlong(context.tracer.scene(), direction);
+                ? gpu::emissionTowards(hit.triangle, gpu::TriangleHit{hit.t, hit.u, hit.v, true},
+                                       origin, direction, view)
+                : gpu::environmentRadianceAlong(direction, view);
         sum += f * found * (local.z / gpu::uniformHemispherePdf());
     }
     return sum / float(context.settings.lightSamples);
 }
 
 // Σ f·Le·cos / p over N points chosen on the emitters by power.
-glm::vec3 directByLights(IntegratorContext& context, const SampleKey& key, const SurfacePoint& s) {
+glm::vec3 directByLights(IntegratorContext& context, const SampleKey& key,
+                         const gpu::SurfacePoint& s) {
     glm::vec3 sum(0.0f);
     for (std::uint32_t i = 0; i < context.settings.lightSamples; ++i) {
         glm::vec4 u =
@@ -57,11 +61,11 @@ glm::vec3 integrateDirect(IntegratorContext& context, const SampleKey& key, cons
     ClosestHit hit = context.tracer.closest(ray.origin, ray.direction, RayKind::Camera);
     if (!hit.hit) {
         if (!gpu::pathFilterKeeps(filter, 0)) return glm::vec3(0.0f);
-        return environmentRadianceAlong(context.tracer.scene(), glm::normalize(ray.direction));
+        return gpu::environmentRadianceAlong(glm::normalize(ray.direction), context.tracer.view());
     }
-    SurfacePoint surface = makeSurfacePoint(context.tracer.scene(), hit, ray.origin, ray.direction);
+    gpu::SurfacePoint surface = context.tracer.surfaceAt(hit, ray.origin, ray.direction);
     glm::vec3 radiance(0.0f);
-    if (gpu::pathFilterKeeps(filter, 0)) radiance += emittedRadiance(surface);
+    if (gpu::pathFilterKeeps(filter, 0)) radiance += gpu::emittedRadiance(surface);
     if (context.settings.maxDepth == 0 || context.settings.lightSamples == 0 ||
         !gpu::pathFilterKeeps(filter, 1))
         return radiance;

@@ -1,9 +1,10 @@
 // direct_lighting.h — one shadow-tested light sample at a surface point, the building block
-// of both the path integrator's NEE and CS184's light-sampling direct integrator.
+// of both the path integrator's NEE and CS184's light-sampling direct integrator: the shared
+// light connection (shaders/shared/light_connection.h), traced at once.
 #pragma once
 
 #include "reference/scene_tracer.h"
-#include "reference/surface.h"
+#include "shared/surface.h"
 
 namespace vkpt {
 
@@ -15,7 +16,7 @@ struct DirectLightSample {
 };
 
 // u.x picks the emitter, u.yz the point on it (see shared/rng.h, DIM_LIGHT_FIRST).
-DirectLightSample sampleDirectLight(SceneTracer& tracer, const SurfacePoint& surface,
+DirectLightSample sampleDirectLight(SceneTracer& tracer, const gpu::SurfacePoint& surface,
                                     const glm::vec4& u);
 
 } // namespace vkpt

@@ -8,7 +8,6 @@
 #include <thread>
 
 #include "reference/scene_tracer.h"
-#include "reference/surface.h"
 #include "shared/camera.h"
 #include "shared/rng.h"
 
@@ -38,8 +37,7 @@ FeatureRecord pixelFeatures(FeatureJob& job, SceneTracer& tracer, std::uint32_t 
         const glm::vec3 direction = gpu::cameraRayDirection(job.camera, film);
         const ClosestHit hit = tracer.closest(job.camera.position, direction, RayKind::Camera);
         if (!hit.hit) continue;
-        const SurfacePoint surface =
-            makeSurfacePoint(job.scene, hit, job.camera.position, direction);
+        const gpu::SurfacePoint surface = tracer.surfaceAt(hit, job.camera.position, direction);
         f.albedo += surface.shading.baseColor;
         f.normal += surface.shadingNormal;
         f.depth = std::min(f.depth, hit.t * glm::dot(direction, job.camera.forward));

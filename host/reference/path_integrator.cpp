@@ -3,9 +3,8 @@
 #include "reference/integrators.h"
 
 #include "reference/direct_lighting.h"
-#include "reference/light_sampling.h"
-#include "reference/surface.h"
 #include "shared/bsdf.h"
+#include "shared/lights.h"
 #include "shared/path_rules.h"
 #include "shared/ray_offset.h"
 #include "shared/rng.h"
@@ -16,7 +15,7 @@ namespace vkpt {
 namespace {
 
 struct PathVertex {
-    const SurfacePoint& surface;
+    const gpu::SurfacePoint& surface;
     std::uint32_t bounce; // scattering events before this vertex
 };
 
@@ -48,7 +47,7 @@ struct ScatterSample {
 // DIM_BSDF: u.xy the direction, u.z the roulette, u.w the lobe (docs/integrator.md).
 ScatterSample sampleScatter(const SampleKey& key, const PathVertex& vertex) {
     glm::vec4 u = gpu::randomFloats(key.seed, key.pixel, key.sampleIndex, vertex.bounce, DIM_BSDF);
-    const SurfacePoint& s = vertex.surface;
+    const gpu::SurfacePoint& s = vertex.surface;
     gpu::Basis basis = gpu::makeBasis(s.shadingNormal);
     ScatterSample sample;
     sample.bsdf =
@@ -60,12 +59,12 @@ ScatterSample sampleScatter(const SampleKey& key, const PathVertex& vertex) {
 
 // What a ray that leaves the scene brings back: the environment, weighted against light
 // sampling's chance of choosing that direction.
-glm::vec3 environmentSeen(const PreparedScene& scene, const glm::vec3& direction,
+glm::vec3 environmentSeen(const gpu::SceneView& view, const glm::vec3& direction,
                           std::uint32_t bounce, float previousBsdfPdf, float lightSamples) {
     glm::vec3 unit = glm::normalize(direction);
-    glm::vec3 radiance = environmentRadianceAlong(scene, unit);
+    glm::vec3 radiance = gpu::environmentRadianceAlong(unit, view);
     if (bounce == 0 || radiance == glm::vec3(0.0f)) return radiance;
-    float pdfLight = environmentLightPdf(scene, unit);
+    float pdfLight = gpu::environmentLightPdf(unit, view);
     return radiance * gpu::powerHeuristic(1.0f, previousBsdfPdf, lightSamples, pdfLight);
 }
 
@@ -74,6 +73,7 @@ glm::vec3 environmentSeen(const PreparedScene& scene, const glm::vec3& direction
 glm::vec3 integratePath(IntegratorContext& context, const SampleKey& key, const CameraRay& ray) {
     const RenderSettings& settings = context.settings;
     const PreparedScene& scene = context.tracer.scene();
+    const gpu::SceneView& view = context.tracer.view();
     const auto filter = std::uint32_t(settings.pathFilter);
     const float lightSamples = float(settings.lightSamples);
     glm::vec3 radiance(0.0f);
@@ -86,16 +86,16 @@ glm::vec3 integratePath(IntegratorContext& context, const SampleKey& key, const 
         ClosestHit hit = context.tracer.closest(origin, direction, kind);
         if (!hit.hit) {
             if (scene.features.environment && gpu::pathFilterKeeps(filter, bounce))
-                radiance += throughput * environmentSeen(scene, direction, bounce, previousBsdfPdf,
-                                                         lightSamples);
+                radiance += throughput *
+                            environmentSeen(view, direction, bounce, previousBsdfPdf, lightSamples);
             break;
         }
-        SurfacePoint surface = makeSurfacePoint(scene, hit, origin, direction);
-        glm::vec3 emitted = emittedRadiance(surface);
+        gpu::SurfacePoint surface = context.tracer.surfaceAt(hit, origin, direction);
+        glm::vec3 emitted = gpu::emittedRadiance(surface);
         if (emitted != glm::vec3(0.0f) && gpu::pathFilterKeeps(filter, bounce)) {
             float weight = 1.0f;
             if (bounce > 0) {
-                float pdfLight = lightPdf(scene, surface, origin);
+                float pdfLight = gpu::lightPdf(surface, origin, view);
                 weight = gpu::powerHeuristic(1.0f, previousBsdfPdf, lightSamples, pdfLight);
             }
             radiance += throughput * emitted * weight;
@@ -124,7 +124,7 @@ glm::vec3 integratePath(IntegratorContext& context, const SampleKey& key, const 
 glm::vec3 integrateNormals(IntegratorContext& context, const CameraRay& ray) {
     ClosestHit hit = context.tracer.closest(ray.origin, ray.direction, RayKind::Camera);
     if (!hit.hit) return glm::vec3(0.0f);
-    SurfacePoint surface = makeSurfacePoint(context.tracer.scene(), hit, ray.origin, ray.direction);
+    gpu::SurfacePoint surface = context.tracer.surfaceAt(hit, ray.origin, ray.direction);
     return 0.5f * surface.rawShadingNormal + 0.5f;
 }
 

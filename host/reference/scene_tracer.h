@@ -6,7 +6,9 @@
 #include <memory>
 
 #include "common/render_stats.h"
+#include "prepare/scene_view.h"
 #include "reference/scene_intersector.h"
+#include "shared/surface.h"
 
 namespace vkpt {
 
@@ -16,7 +18,8 @@ enum class RayKind { Camera, Extension, Shadow };
 class SceneTracer {
 public:
     SceneTracer(const PreparedScene& scene, const IntersectorFactory& intersectors)
-        : scene_(scene), intersector_(intersectors.makeIntersector()) {}
+        : scene_(scene), view_(makeSceneView(scene)), intersector_(intersectors.makeIntersector()) {
+    }
 
     ClosestHit closest(const glm::vec3& origin, const glm::vec3& direction, RayKind kind) {
         (kind == RayKind::Camera ? rays_.camera : rays_.extension) += 1;
@@ -28,13 +31,23 @@ public:
         return intersector_->occluded(origin, direction, tMax);
     }
 
+    // The surface point of `hit`, found by a ray from `origin` along `direction`.
+    gpu::SurfacePoint surfaceAt(const ClosestHit& hit, const glm::vec3& origin,
+                                const glm::vec3& direction) const {
+        return gpu::makeSurfacePoint(hit.triangle, gpu::TriangleHit{hit.t, hit.u, hit.v, true},
+                                     origin, direction, view_);
+    }
+
     const PreparedScene& scene() const { return scene_; }
+    // The scene as the shared surface, material and light code reads it.
+    const gpu::SceneView& view() const { return view_; }
     SceneIntersector& intersector() { return *intersector_; }
     const RayCounts& rays() const { return rays_; }
     TraversalCounters traversal() const { return intersector_->traversal(); }
 
 private:
     const PreparedScene& scene_;
+    gpu::SceneView view_;
     std::unique_ptr<SceneIntersector> intersector_;
     RayCounts rays_;
 };

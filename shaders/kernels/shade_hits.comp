@@ -217,7 +217,8 @@ Shading shadeRay(uint i) {
         Vertex vertex;
         vertex.ray = i;
         vertex.record = record;
-        vertex.surface = makeSurfacePoint(hit, record.origin, record.direction);
+        vertex.surface =
+            makeSurfacePoint(hit.triangle, triangleHitOf(hit), record.origin, record.direction);
         PathState before = fetchPathState(record.slot);
         PathState state = before;
         if (frame.integrator == INTEGRATOR_NORMALS) {

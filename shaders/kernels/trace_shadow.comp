@@ -44,7 +44,8 @@ RecordWork traceRecord(uint index) {
         // The emission reached, or the environment when the probe leaves the scene.
         bool hit = work.walk.hit.triangle != NO_HIT;
         if (hit || hasEnvironment()) {
-            vec3 found = hit ? emissionTowards(work.walk.hit, record.origin, record.direction)
+            vec3 found = hit ? emissionTowards(work.walk.hit.triangle, triangleHitOf(work.walk.hit),
+                                               record.origin, record.direction)
                              : environmentRadianceAlong(record.direction);
             shadowRays[index].contribution = record.contribution * found * record.factor;
             shadowRays[index].flags = record.flags | SHADOW_VISIBLE;

@@ -1,9 +1,9 @@
 // traverse.glsl — the kernels' BVH walk: shared/wide_bvh.h's stackless walk of the 8-wide
 // compressed nodes, reading nodes and primitives as texels (lib/records.glsl). A
 // leaf's primitives are triangles or spheres (FEATURE_SPHERES); a crossing of an alpha-masked
-// material's cut-out (FEATURE_ALPHA_MASK) is no hit, for every kind of ray, as the
-// reference's AlphaMaskFilter decides, in the same order of crossings. Needs what
-// lib/materials.glsl needs.
+// material's cut-out (FEATURE_ALPHA_MASK, shared/materials.h's isCutOut, which the
+// reference's AlphaMaskFilter asks too) is no hit, for every kind of ray, in the same order of
+// crossings. Needs what lib/materials.glsl needs.
 #ifndef VKPT_TRAVERSE_GLSL
 #define VKPT_TRAVERSE_GLSL
 
@@ -33,15 +33,6 @@ struct Traversal {
     uint nodesVisited;
     uint triangleTests;
 };
-
-// Whether crossing `h` of primitive `index` lies in an alpha-masked material's cut-out.
-bool isCutOut(uint index, TriangleHit h, vec3 origin, vec3 direction) {
-    Triangle primitive = fetchTriangle(index);
-    bool sphere = featureSpheres && isSpherePrimitive(primitive);
-    vec3 sphereNormal =
-        sphere ? sphereNormalAt(origin + h.t * direction, primitive.v0) : vec3(0.0);
-    return alphaMasked(index, primitive, h.u, h.v, sphereNormal);
-}
 
 // The walk. A crossing of an alpha-masked material is not tested inside the walk's loops:
 // the walk stops there, the test runs once outside, and the walk resumes where it stopped, so

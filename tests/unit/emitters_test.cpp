@@ -8,10 +8,10 @@
 #include "../support/chi_square.h"
 #include "prepare/emitters.h"
 #include "prepare/prepared_scene.h"
-#include "reference/light_sampling.h"
+#include "prepare/scene_view.h"
 #include "reference/scene_tracer.h"
 #include "reference/stack_intersector.h"
-#include "reference/surface.h"
+#include "shared/lights.h"
 #include "shared/rng.h"
 #include "shared/sampling.h"
 
@@ -91,11 +91,11 @@ TEST(Emitters, ListHoldsEmittingTrianglesWithPowerProportionalProbabilities) {
 
 TEST(Emitters, SelectionFrequenciesMatchProbabilitiesByChiSquare) {
     PreparedScene prepared = prepareScene(threeEmitterScene());
+    const gpu::SceneView view = makeSceneView(prepared);
     const int n = 100000;
     std::vector<double> observed(prepared.emitters.size(), 0.0), expected(observed.size());
     for (uint32_t i = 0; i < uint32_t(n); ++i)
-        observed[selectEmitter(prepared.emitterCdf,
-                               gpu::randomFloats(9, i, 0, 0, DIM_LIGHT_FIRST).x)] += 1;
+        observed[gpu::selectEmitter(gpu::randomFloats(9, i, 0, 0, DIM_LIGHT_FIRST).x, view)] += 1;
     for (std::size_t i = 0; i < expected.size(); ++i)
         expected[i] = n * double(prepared.emitters[i].selectProbability);
     test::ChiSquareResult r = test::chiSquareTest(observed, expected);
@@ -104,9 +104,10 @@ TEST(Emitters, SelectionFrequenciesMatchProbabilitiesByChiSquare) {
 
 TEST(Emitters, SelectionCoversTheUnitIntervalEnds) {
     PreparedScene prepared = prepareScene(threeEmitterScene());
-    EXPECT_EQ(selectEmitter(prepared.emitterCdf, 0.0f), 0u);
-    EXPECT_EQ(selectEmitter(prepared.emitterCdf, std::nextafter(1.0f, 0.0f)),
-              prepared.emitters.size() - 1);
+    const gpu::SceneView view = makeSceneView(prepared);
+    EXPECT_EQ(gpu::selectEmitter(0.0f, view), 0u);
+    EXPECT_EQ(gpu::selectEmitter(std::nextafter(1.0f, 0.0f), view), prepared.emitters.size() - 1);
+    EXPECT_EQ(gpu::selectEmitter(1.0f, view), prepared.emitters.size() - 1);
 }
 
 struct PdfMean {
@@ -129,8 +130,8 @@ PdfMean integrateLightPdf(const PreparedScene& prepared, const glm::vec3& origin
         glm::vec3 d(r * std::cos(phi), r * std::sin(phi), z);
         ClosestHit hit = tracer.closest(origin, d, RayKind::Extension);
         if (!hit.hit) continue;
-        SurfacePoint s = makeSurfacePoint(prepared, hit, origin, d);
-        double value = 4.0 * kPi * lightPdf(prepared, s, origin);
+        gpu::SurfacePoint s = tracer.surfaceAt(hit, origin, d);
+        double value = 4.0 * kPi * gpu::lightPdf(s, origin, tracer.view());
         sum += value;
         sumSq += value * value;
     }
@@ -179,7 +180,8 @@ TEST(Emitters, SingleEmitterHasNoCdf) {
     PreparedScene prepared = prepareScene(scene);
     ASSERT_EQ(prepared.emitters.size(), 1u);
     EXPECT_TRUE(prepared.emitterCdf.empty());
-    LightSample light = sampleLight(prepared, glm::vec3(0.0f), glm::vec4(0.9f, 0.3f, 0.3f, 0.0f));
+    gpu::LightSample light = gpu::sampleLight(glm::vec3(0.0f), glm::vec4(0.9f, 0.3f, 0.3f, 0.0f),
+                                              makeSceneView(prepared));
     EXPECT_TRUE(light.valid);
     PreparedScene general = prepareScene(scene, {{}, true});
     EXPECT_EQ(general.emitterCdf.size(), 1u);
@@ -201,14 +203,14 @@ TEST(Emitters, SampledPdfEqualsEvaluatedPdf) {
     SceneTracer tracer(prepared, intersectors);
     const glm::vec3 origin(0.1f, 0.05f, -0.3f);
     for (uint32_t i = 0; i < 2000; ++i) {
-        LightSample light =
-            sampleLight(prepared, origin, gpu::randomFloats(6, i, 0, 0, DIM_LIGHT_FIRST));
+        gpu::LightSample light =
+            gpu::sampleLight(origin, gpu::randomFloats(6, i, 0, 0, DIM_LIGHT_FIRST), tracer.view());
         ASSERT_TRUE(light.valid);
         if (light.delta) continue;
         ClosestHit hit = tracer.closest(origin, light.direction, RayKind::Extension);
         ASSERT_TRUE(hit.hit);
-        SurfacePoint s = makeSurfacePoint(prepared, hit, origin, light.direction);
-        EXPECT_NEAR(lightPdf(prepared, s, origin), light.pdfSolidAngle,
+        gpu::SurfacePoint s = tracer.surfaceAt(hit, origin, light.direction);
+        EXPECT_NEAR(gpu::lightPdf(s, origin, tracer.view()), light.pdfSolidAngle,
                     1e-3f * light.pdfSolidAngle);
     }
 }

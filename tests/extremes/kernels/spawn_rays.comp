@@ -22,7 +22,7 @@ void main() {
     if (i >= params.count) return;
     SpawnInput s = spawnInputs[i];
     vec3 v0 = s.v0.xyz, v1 = s.v1.xyz, v2 = s.v2.xyz;
-    // As lib/surface.glsl computes the hit point and the normal.
+    // As shared/surface.h computes the hit point and the normal.
     vec3 p = v0 * s.barycentrics.x + v1 * s.barycentrics.y + v2 * s.barycentrics.z;
     vec3 normal = unitFaceNormal(v0, v1, v2) * s.barycentrics.w;
     vec3 origin = offsetFromSurface(p, normal, triangleCoordinateScale(v0, v1, v2));

@@ -1,0 +1,118 @@
+// scene_view.h — how the shared surface, material and light code (materials.h, surface.h,
+// lights.h, light_connection.h) reaches the prepared scene, so that the kernels and the CPU
+// reference run that very code: the pattern of wide_bvh.h.
+//
+// Every function of that code takes VKPT_SCENE_PARAM last. On the C++ side it is a SceneView,
+// spans over the arrays of a PreparedScene (host/prepare/scene_view.h makes one), and the
+// accessors below read them. On the GLSL side it is empty: the includer defines the same
+// accessors over its texel fetches and storage buffers before including the shared code
+// (lib/materials.glsl, lib/surface.glsl, lib/lights.glsl), and the sceneHas* switches return
+// the kernel's specialisation constants (lib/features.glsl), so that code for a feature the
+// scene lacks folds away.
+//
+//   Triangle scenePrimitive(uint i)         TriangleNormals sceneNormals(uint i)
+//   vec2 sceneUv(uint k)  (3 per primitive) Material sceneMaterial(uint i)
+//   TextureInfo sceneTexture(uint i)        textureTexels[] (texture_sampling.h)
+//   Emitter sceneEmitter(uint i)            uint sceneEmitterCount()
+//   float sceneEmitterCdf(uint i)           EnvironmentParams sceneEnvironment()
+//   environmentTexels[], environmentCdf[] (environment.h)
+//   bool sceneHasMetallicRoughness(), sceneHasTextures(), sceneHasSpheres(),
+//        sceneHasPunctualLights(), sceneHasEnvironment(), sceneHasEmitterCdf(),
+//        sceneHasDoubleSided()
+#ifndef VKPT_SCENE_VIEW_H
+#define VKPT_SCENE_VIEW_H
+
+#include "host_device.h"
+
+#ifdef __cplusplus
+#include <array>
+#include <span>
+
+namespace vkpt::gpu {
+
+// The scene as the shared code reads it on the CPU. An array the scene's features do not need
+// may be empty; the code reads it only behind the matching feature.
+struct SceneView {
+    std::span<const Triangle> primitives; // triangles and spheres, BVH order
+    std::span<const TriangleNormals> normals;
+    std::span<const vec2> uvs; // 3 per primitive
+    std::span<const Material> materials;
+    std::span<const TextureInfo> textures;
+    std::span<const uint> textureTexels;
+    std::span<const Emitter> emitters;
+    std::span<const float> emitterCdf;
+    EnvironmentParams environment;
+    std::span<const vec4> environmentTexels;
+    std::span<const float> environmentCdf;
+    std::array<bool, FEATURE_COUNT> features; // FEATURE_*, as the kernels are specialised
+};
+
+#define VKPT_SCENE_PARAM , const SceneView& scene
+#define VKPT_SCENE_PARAM_ONLY const SceneView& scene
+#define VKPT_SCENE_ARG , scene
+#define VKPT_SCENE_ARG_ONLY scene
+// The extra parameters of texture_sampling.h and environment.h.
+#define VKPT_SCENE_TEXELS_ARG , scene.textureTexels.data()
+#define VKPT_SCENE_ENVIRONMENT_ARG , scene.environmentTexels.data(), scene.environmentCdf.data()
+
+VKPT_FN Triangle scenePrimitive(uint i VKPT_SCENE_PARAM) {
+    return scene.primitives[i];
+}
+VKPT_FN TriangleNormals sceneNormals(uint i VKPT_SCENE_PARAM) {
+    return scene.normals[i];
+}
+VKPT_FN vec2 sceneUv(uint k VKPT_SCENE_PARAM) {
+    return scene.uvs[k];
+}
+VKPT_FN Material sceneMaterial(uint i VKPT_SCENE_PARAM) {
+    return scene.materials[i];
+}
+VKPT_FN TextureInfo sceneTexture(uint i VKPT_SCENE_PARAM) {
+    return scene.textures[i];
+}
+VKPT_FN Emitter sceneEmitter(uint i VKPT_SCENE_PARAM) {
+    return scene.emitters[i];
+}
+VKPT_FN uint sceneEmitterCount(VKPT_SCENE_PARAM_ONLY) {
+    return uint(scene.emitters.size());
+}
+VKPT_FN float sceneEmitterCdf(uint i VKPT_SCENE_PARAM) {
+    return scene.emitterCdf[i];
+}
+VKPT_FN EnvironmentParams sceneEnvironment(VKPT_SCENE_PARAM_ONLY) {
+    return scene.environment;
+}
+
+VKPT_FN bool sceneHasMetallicRoughness(VKPT_SCENE_PARAM_ONLY) {
+    return scene.features[FEATURE_METALLIC_ROUGHNESS];
+}
+VKPT_FN bool sceneHasTextures(VKPT_SCENE_PARAM_ONLY) {
+    return scene.features[FEATURE_TEXTURES];
+}
+VKPT_FN bool sceneHasSpheres(VKPT_SCENE_PARAM_ONLY) {
+    return scene.features[FEATURE_SPHERES];
+}
+VKPT_FN bool sceneHasPunctualLights(VKPT_SCENE_PARAM_ONLY) {
+    return scene.features[FEATURE_PUNCTUAL_LIGHTS];
+}
+VKPT_FN bool sceneHasEnvironment(VKPT_SCENE_PARAM_ONLY) {
+    return scene.features[FEATURE_ENVIRONMENT];
+}
+VKPT_FN bool sceneHasEmitterCdf(VKPT_SCENE_PARAM_ONLY) {
+    return scene.features[FEATURE_EMITTER_CDF];
+}
+VKPT_FN bool sceneHasDoubleSided(VKPT_SCENE_PARAM_ONLY) {
+    return scene.features[FEATURE_DOUBLE_SIDED];
+}
+
+} // namespace vkpt::gpu
+#else
+#define VKPT_SCENE_PARAM
+#define VKPT_SCENE_PARAM_ONLY
+#define VKPT_SCENE_ARG
+#define VKPT_SCENE_ARG_ONLY
+#define VKPT_SCENE_TEXELS_ARG
+#define VKPT_SCENE_ENVIRONMENT_ARG
+#endif
+
+#endif // VKPT_SCENE_VIEW_H

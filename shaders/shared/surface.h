@@ -1,0 +1,133 @@
+// surface.h — a hit turned into what shading needs, for both executors: the point (from
+// barycentrics on a triangle, put back on a sphere along its normal), the geometric and shading
+// normals turned towards the incoming ray, the material with its textures applied, the
+// emission, and the BSDF at the point for a world direction. Reaches the scene through
+// scene_view.h.
+#ifndef VKPT_SURFACE_H
+#define VKPT_SURFACE_H
+
+#include "bsdf.h"
+#include "host_device.h"
+#include "intersect.h"
+#include "materials.h"
+#include "ray_offset.h"
+#include "sampling.h"
+#include "scene_view.h"
+#include "sphere.h"
+
+#ifdef __cplusplus
+namespace vkpt::gpu {
+#endif
+
+struct SurfacePoint {
+    vec3 position;
+    vec3 geometricNormal;    // unit, on the side the ray came from
+    vec3 shadingNormal;      // unit, interpolated, on the same side
+    vec3 rawShadingNormal;   // as stored (a sphere's outward normal), for the normals integrator
+    bool frontFace;          // triangle: the counter-clockwise side; sphere: outside
+    bool doubleSided;        // the material emits from both sides
+    float coordinateScale;   // of the primitive, for offsetFromSurface
+    uint triangle;           // the primitive, BVH-ordered
+    ShadingMaterial shading; // the BSDF's parameters, textures applied
+    vec3 emission;           // emissive factor × texture, before the side test
+    vec3 outgoing;           // unit, back along the incoming ray
+};
+
+VKPT_FN void fillTriangle(VKPT_INOUT(SurfacePoint) s, Triangle tri, TriangleHit hit,
+                          vec3 direction VKPT_SCENE_PARAM) {
+    TriangleNormals normals = sceneNormals(s.triangle VKPT_SCENE_ARG);
+    // Barycentric interpolation keeps the point on the triangle's plane, unlike o + t·d.
+    s.position = tri.v0 * (1.0f - hit.u - hit.v) + tri.v1 * hit.u + tri.v2 * hit.v;
+    s.coordinateScale = triangleCoordinateScale(tri.v0, tri.v1, tri.v2);
+    vec3 face = unitFaceNormal(tri.v0, tri.v1, tri.v2);
+    s.frontFace = dot(face, direction) < 0.0f;
+    s.geometricNormal = s.frontFace ? face : -face;
+    s.rawShadingNormal = vec3(normals.n0) * (1.0f - hit.u - hit.v) + vec3(normals.n1) * hit.u +
+                         vec3(normals.n2) * hit.v;
+    float rawLength = length(s.rawShadingNormal);
+    vec3 shading = rawLength > 0.0f ? s.rawShadingNormal / rawLength : s.geometricNormal;
+    s.shadingNormal = dot(shading, s.geometricNormal) < 0.0f ? -shading : shading;
+}
+
+// The point is put back on the sphere along its normal, so that its distance from the surface
+// is the radius' rounding, not o + t·d's.
+VKPT_FN void fillSphere(VKPT_INOUT(SurfacePoint) s, Triangle sphere, TriangleHit hit, vec3 origin,
+                        vec3 direction) {
+    vec3 outward = sphereNormalAt(origin + hit.t * direction, sphere.v0);
+    s.position = sphere.v0 + sphere.v1.x * outward;
+    s.coordinateScale = sphereCoordinateScale(sphere.v0, sphere.v1.x);
+    s.frontFace = dot(outward, direction) < 0.0f;
+    s.geometricNormal = s.frontFace ? outward : -outward;
+    s.rawShadingNormal = outward;
+    s.shadingNormal = s.geometricNormal;
+}
+
+// The material at the point: factors times textures (each read only when present).
+VKPT_FN void fillMaterial(VKPT_INOUT(SurfacePoint) s, Triangle primitive,
+                          TriangleHit hit VKPT_SCENE_PARAM) {
+    Material m = sceneMaterial(primitive.materialIndex VKPT_SCENE_ARG);
+    vec4 baseColor = m.baseColor;
+    float metallic = m.metallic;
+    float roughness = m.roughness;
+    s.emission = m.emission;
+    if (hasAnyTexture(m VKPT_SCENE_ARG)) {
+        vec2 uv =
+            primitiveUv(s.triangle, primitive, hit.u, hit.v, s.rawShadingNormal VKPT_SCENE_ARG);
+        baseColor = m.baseColor * sampleSlot(m.baseColorTexture, uv, true VKPT_SCENE_ARG);
+        vec4 metalRough = sampleSlot(m.metallicRoughnessTexture, uv, false VKPT_SCENE_ARG);
+        metallic = m.metallic * metalRough.z;
+        roughness = m.roughness * metalRough.y;
+        s.emission = emissionAt(m, uv VKPT_SCENE_ARG);
+    }
+    bool metallicRoughness = sceneHasMetallicRoughness(VKPT_SCENE_ARG_ONLY) &&
+                             (m.flags & MATERIAL_METALLIC_ROUGHNESS) != 0u;
+    s.shading = makeShadingMaterial(vec3(baseColor), metallic, roughness, m.specular,
+                                    m.specularColor, metallicRoughness);
+    s.doubleSided =
+        sceneHasDoubleSided(VKPT_SCENE_ARG_ONLY) && (m.flags & MATERIAL_DOUBLE_SIDED) != 0u;
+}
+
+// Hit `hit` of primitive `index` by a ray from `origin` along `direction` (the query that
+// found it).
+VKPT_FN SurfacePoint makeSurfacePoint(uint index, TriangleHit hit, vec3 origin,
+                                      vec3 direction VKPT_SCENE_PARAM) {
+    Triangle primitive = scenePrimitive(index VKPT_SCENE_ARG);
+    SurfacePoint s;
+    s.triangle = index;
+    if (sceneHasSpheres(VKPT_SCENE_ARG_ONLY) && isSpherePrimitive(primitive)) {
+        fillSphere(s, primitive, hit, origin, direction);
+    } else {
+        fillTriangle(s, primitive, hit, direction VKPT_SCENE_ARG);
+    }
+    fillMaterial(s, primitive, hit VKPT_SCENE_ARG);
+    s.outgoing = -normalize(direction);
+    return s;
+}
+
+// Emission leaves the front face only, unless the material is double-sided.
+VKPT_FN vec3 emittedRadiance(SurfacePoint s) {
+    return (s.frontFace || s.doubleSided) ? s.emission : vec3(0.0f);
+}
+
+// The BSDF at a surface point for a world direction: f (no cosine) and the solid-angle pdf with
+// which sampleBsdf would choose wi, both in the shading normal's frame.
+struct BsdfValue {
+    vec3 f;
+    float pdf;
+};
+
+VKPT_FN BsdfValue evaluateSurfaceBsdf(SurfacePoint s, vec3 wi) {
+    Basis basis = makeBasis(s.shadingNormal);
+    vec3 wo = worldToBasis(basis, s.outgoing);
+    vec3 wiLocal = worldToBasis(basis, wi);
+    BsdfValue value;
+    value.f = evaluateBsdf(s.shading, wo, wiLocal);
+    value.pdf = bsdfPdf(s.shading, wo, wiLocal);
+    return value;
+}
+
+#ifdef __cplusplus
+} // namespace vkpt::gpu
+#endif
+
+#endif // VKPT_SURFACE_H
