@@ -15,6 +15,7 @@ packages=(
     # Tests only: oiiotool reads the EXR layers as compositors do (label farm); a private Slurm
     # runs the array-job recipe (label slurm); python3-yaml parses the OpenJD template (farm).
     openimageio-tools slurm-wlm munge python3-yaml
+    clang-format # ci/format_check.sh: the C++ sources against .clang-format
 )
 
 missing=()

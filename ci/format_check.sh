@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# format_check.sh — every tracked C++ source (.cpp, .h: host/, tests/, and the headers under
+# shaders/ that GLSL and C++ both compile) against .clang-format, with Debian 12's
+# clang-format. Prints one line per file that differs and the command that fixes it; exit 1 if
+# any does. GLSL files (.comp, .glsl) are not checked: clang-format has no GLSL mode, and
+# formatting them as C++ would break layout qualifiers.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+command -v clang-format >/dev/null || {
+    echo "format_check: clang-format is not installed (bash ci/install_deps.sh)" >&2
+    exit 1
+}
+
+mapfile -t files < <(git ls-files '*.cpp' '*.h')
+differ=()
+for file in "${files[@]}"; do
+    clang-format --dry-run --Werror "$file" >/dev/null 2>&1 || differ+=("$file")
+done
+
+if [ ${#differ[@]} -gt 0 ]; then
+    for file in "${differ[@]}"; do
+        echo "format_check: $file: not formatted as .clang-format says (clang-format -i $file)" >&2
+    done
+    echo "format_check: ${#differ[@]} of ${#files[@]} files differ" >&2
+    exit 1
+fi
+echo "format_check: ${#files[@]} files formatted"
