@@ -4,7 +4,7 @@
 #pragma once
 
 #include "app/command_line.h"
-#include "study/convergence.h"
+#include "convergence/convergence.h"
 
 namespace vkpt {
 

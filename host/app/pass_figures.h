@@ -2,8 +2,8 @@
 // the curve's render time leaves out the readbacks and measurements made for the curve itself.
 #pragma once
 
+#include "convergence/convergence.h"
 #include "render/wavefront.h"
-#include "study/convergence.h"
 
 namespace vkpt {
 

@@ -9,8 +9,8 @@
 #include "bvh/bvh_build.h"
 #include "common/render_settings.h"
 #include "common/render_stats.h"
+#include "convergence/convergence.h"
 #include "scene/scene_features.h"
-#include "study/convergence.h"
 
 namespace vkpt {
 

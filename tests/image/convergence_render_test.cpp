@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "app/pass_figures.h"
+#include "convergence/convergence.h"
 #include "image/error_metrics.h"
-#include "study/convergence.h"
 #include "wavefront_test_support.h"
 
 namespace vkpt::test {

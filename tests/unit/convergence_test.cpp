@@ -1,7 +1,7 @@
 // convergence_test.cpp — the curve that --reference, --target-error and --time-limit report:
 // points measured from a render, the rule that stops at a target error, the reference file's
 // checks and the JSON.
-#include "study/convergence.h"
+#include "convergence/convergence.h"
 
 #include <cmath>
 #include <filesystem>

@@ -1,6 +1,6 @@
 // convergence.cpp — points of the error curve, the target-error rule, the JSON and the
 // summary lines.
-#include "study/convergence.h"
+#include "convergence/convergence.h"
 
 #include <cmath>
 #include <cstdio>

@@ -11,10 +11,10 @@
 
 #include "app/command_line.h"
 #include "app/scene_setup.h"
-#include "app/study_runner.h"
 #include "common/errors.h"
 #include "gpu/device_list.h"
 #include "gpu/vk_check.h"
+#include "study/study_runner.h"
 
 namespace {
 

@@ -1,5 +1,5 @@
 // study_runner.cpp — references, runs and outputs of the trade study.
-#include "app/study_runner.h"
+#include "study/study_runner.h"
 
 #include <algorithm>
 #include <chrono>
