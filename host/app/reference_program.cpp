@@ -69,7 +69,7 @@ std::optional<ConvergenceReport> finalError(const ConvergenceSettings& convergen
     figures.samplesPerPixel = spp;
     figures.samplesTaken = stats.samplesTaken;
     tracker.record(figures, &output);
-    return ConvergenceReport{convergence, ConvergenceStop::Budget, false, tracker.curve()};
+    return ConvergenceReport{convergence, RenderStop::Budget, false, tracker.curve()};
 }
 
 ReferenceOptions referenceOptions(RenderPart& part, const IntersectorFactory& intersectors) {

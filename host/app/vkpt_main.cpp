@@ -11,7 +11,6 @@
 #include "app/farm_options.h"
 #include "app/interrupt.h"
 #include "app/output_checks.h"
-#include "app/pass_figures.h"
 #include "app/render_options.h"
 #include "app/render_part.h"
 #include "app/render_report.h"
@@ -100,12 +99,10 @@ DeviceRunReport deviceRunReport(const WavefrontResult& result, double setupSecon
     d.setupSeconds = setupSeconds;
     d.truncatedTraversals = result.truncatedTraversals;
     d.interrupted = result.interrupted;
-    for (const KernelTimeTotal& t : result.kernelTimes)
-        d.kernelTimes.push_back({t.kernel, t.dispatches, double(t.nanoseconds) * 1e-9});
+    d.kernelTimes = result.kernelTimes;
     d.pipelineCreationSeconds = result.pipelineCreationSeconds;
     d.sceneBufferBytes = result.sceneBufferBytes;
-    for (const SceneBufferBytes& b : result.sceneBuffers)
-        d.sceneBuffers.push_back({b.name, b.bytes});
+    d.sceneBuffers = result.sceneBuffers;
     return d;
 }
 
@@ -131,35 +128,20 @@ WavefrontOptions wavefrontOptions(const Invocation& invocation, ConvergenceTrack
     if (!convergence.any()) return options;
     options.readPixelsAfterPass = convergence.needsPixels();
     const bool printLines = printsPassLines(invocation);
-    options.afterPass = [&tracker, printLines](const PassProgress& progress) {
-        const ConvergencePoint& point = tracker.record(passFigures(progress), progress.output);
+    options.afterPass = [&tracker, printLines](const PassFigures& figures,
+                                               const RenderOutput* output) {
+        const ConvergencePoint& point = tracker.record(figures, output);
         if (printLines) std::fprintf(stderr, "%s: %s\n", kProgram, describePoint(point).c_str());
         return tracker.targetReached();
     };
     return options;
 }
 
-ConvergenceStop convergenceStop(WavefrontStop stop) {
-    switch (stop) {
-    case WavefrontStop::BudgetSpent:
-        return ConvergenceStop::Budget;
-    case WavefrontStop::AllConverged:
-        return ConvergenceStop::Converged;
-    case WavefrontStop::Interrupted:
-        return ConvergenceStop::Interrupted;
-    case WavefrontStop::TimeLimit:
-        return ConvergenceStop::TimeLimit;
-    case WavefrontStop::Observer:
-        return ConvergenceStop::TargetError;
-    }
-    return ConvergenceStop::Budget;
-}
-
 std::optional<ConvergenceReport> convergenceReport(const Invocation& invocation,
                                                    const ConvergenceTracker& tracker,
-                                                   WavefrontStop stop) {
+                                                   RenderStop stop) {
     if (!invocation.convergence.any()) return std::nullopt;
-    return ConvergenceReport{invocation.convergence, convergenceStop(stop), tracker.targetReached(),
+    return ConvergenceReport{invocation.convergence, stop, tracker.targetReached(),
                              tracker.curve()};
 }
 
