@@ -118,6 +118,20 @@ void printDeviceRun(const RenderReport& r, const DeviceRunReport& d) {
 
 } // namespace
 
+RenderReport sceneReport(const std::string& program, const RenderSettings& settings,
+                         const SceneSetup& setup) {
+    RenderReport report;
+    report.program = program;
+    report.settings = &settings;
+    report.bvh = setup.prepared.bvhStats;
+    report.triangles = setup.prepared.triangles.size();
+    report.emitters = setup.prepared.emitters.size();
+    report.features = setup.prepared.usedFeatures;
+    report.generalPipelines = settings.general;
+    report.loadSeconds = setup.loadSeconds;
+    return report;
+}
+
 void printRenderSummary(const RenderReport& r) {
     const RenderStats& st = r.stats;
     std::printf("%s: %s, %ux%u, %.3f s, %.2f Mrays/s on %s\n", r.program.c_str(),
@@ -157,6 +171,12 @@ void writeStatsJson(const RenderReport& r, const std::string& path) {
     json.endObject();
     out << "\n";
     if (!out) throw InputError(path + ": write failed");
+}
+
+void writeRenderReport(const RenderReport& report) {
+    printRenderSummary(report);
+    if (!report.settings->statsJsonPath.empty())
+        writeStatsJson(report, report.settings->statsJsonPath);
 }
 
 } // namespace vkpt

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "app/scene_setup.h"
 #include "bvh/bvh_build.h"
 #include "common/device_stats.h"
 #include "common/render_settings.h"
@@ -44,7 +45,14 @@ struct RenderReport {
     std::optional<ConvergenceReport> convergence; // --reference, --target-error, --time-limit
 };
 
+// What both programs know once the scene is set up: program, settings, BVH, scene counts,
+// features and load time; the caller adds the device, the render's figures and the rest.
+RenderReport sceneReport(const std::string& program, const RenderSettings& settings,
+                         const SceneSetup& setup);
+
 void printRenderSummary(const RenderReport& report);
 void writeStatsJson(const RenderReport& report, const std::string& path);
+// The summary on stdout, and the statistics JSON when --stats-json asked for it.
+void writeRenderReport(const RenderReport& report);
 
 } // namespace vkpt
