@@ -16,7 +16,7 @@ cd "$(dirname "$0")/.."
 which="${1:-all}"
 [ $# -gt 0 ] && shift
 build="${VKPT_BUILD_DIR:-build/release}"
-study="$build/host/app/vkpt-study"
+study="$build/tests/study/vkpt-study"
 
 if ! command -v gnuplot >/dev/null; then
     echo "trade_study: gnuplot is not installed; bash ci/install_deps.sh installs it (gnuplot-nox)" >&2

@@ -37,4 +37,10 @@ void addConvergenceOptions(CommandLine& cl, ConvergenceSettings& s, ConvergenceO
             [&s](auto v) { s.timeLimitSeconds = parsePositive("time-limit", v[0]); }});
 }
 
+std::optional<Image> loadReferenceFor(const ConvergenceSettings& convergence,
+                                      const RenderSettings& settings) {
+    if (convergence.referencePath.empty()) return std::nullopt;
+    return loadReference(convergence.referencePath, settings.width, settings.height);
+}
+
 } // namespace vkpt

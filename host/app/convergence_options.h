@@ -3,8 +3,11 @@
 // pass loop).
 #pragma once
 
+#include <optional>
+
 #include "app/command_line.h"
-#include "study/convergence.h"
+#include "common/render_settings.h"
+#include "convergence/convergence.h"
 
 namespace vkpt {
 
@@ -12,5 +15,9 @@ enum class ConvergenceOptionSet { ReferenceOnly, All };
 
 void addConvergenceOptions(CommandLine& commandLine, ConvergenceSettings& settings,
                            ConvergenceOptionSet set);
+
+// The --reference image at the render's size (loadReference), or none without --reference.
+std::optional<Image> loadReferenceFor(const ConvergenceSettings& convergence,
+                                      const RenderSettings& settings);
 
 } // namespace vkpt

@@ -7,16 +7,14 @@
 #include <thread>
 #include <vector>
 
-#include "app/command_line.h"
 #include "app/convergence_options.h"
-#include "app/farm_options.h"
 #include "app/interrupt.h"
 #include "app/output_checks.h"
+#include "app/program_options.h"
 #include "app/render_part.h"
-#include "app/render_options.h"
 #include "app/render_report.h"
+#include "app/run_program.h"
 #include "app/scene_setup.h"
-#include "common/errors.h"
 #include "image/image_io.h"
 #include "reference/reference_renderer.h"
 
@@ -24,31 +22,11 @@ namespace vkpt {
 
 namespace {
 
-struct Invocation {
-    RenderSettings settings;
-    ConvergenceSettings convergence; // --reference only: the CPU renders each pixel to the end
-    FarmSettings farm;
-    bool showHelp = false;
-};
-
-Invocation parseArguments(const std::string& program, int argc, char** argv) {
-    Invocation invocation;
-    CommandLine commandLine(program);
-    addRenderOptions(commandLine, invocation.settings);
-    addConvergenceOptions(commandLine, invocation.convergence, ConvergenceOptionSet::ReferenceOnly);
-    addFarmOptions(commandLine, invocation.farm);
-    commandLine.add(
-        {"help", {'h'}, "", "show this help", [&](auto) { invocation.showHelp = true; }});
-    std::vector<std::string> arguments(argv + 1, argv + argc);
-    std::vector<std::string> positional = commandLine.parse(arguments);
-    if (invocation.showHelp) {
-        std::fputs(commandLine.usage("scene.gltf|scene.glb").c_str(), stdout);
-        return invocation;
-    }
-    if (positional.size() > 1) throw InputError("more than one scene file given");
-    if (!positional.empty()) invocation.settings.scenePath = positional[0];
-    validateRenderSettings(invocation.settings);
-    validateFarmSettings(invocation.farm, invocation.settings);
+// --reference only of the convergence options: the CPU renders each pixel to the end.
+ProgramOptions parseArguments(const std::string& program, int argc, char** argv) {
+    ProgramOptions invocation;
+    parseProgramOptions({program, ConvergenceOptionSet::ReferenceOnly, {}, {}}, invocation, argc,
+                        argv);
     return invocation;
 }
 
@@ -69,7 +47,7 @@ std::optional<ConvergenceReport> finalError(const ConvergenceSettings& convergen
     figures.samplesPerPixel = spp;
     figures.samplesTaken = stats.samplesTaken;
     tracker.record(figures, &output);
-    return ConvergenceReport{convergence, ConvergenceStop::Budget, false, tracker.curve()};
+    return ConvergenceReport{convergence, RenderStop::Budget, false, tracker.curve()};
 }
 
 ReferenceOptions referenceOptions(RenderPart& part, const IntersectorFactory& intersectors) {
@@ -84,7 +62,7 @@ ReferenceOptions referenceOptions(RenderPart& part, const IntersectorFactory& in
 }
 
 // Returns the exit code: 0, or 128 + the signal that stopped the render.
-int run(const ReferenceProgram& program, const Invocation& invocation) {
+int run(const ReferenceProgram& program, const ProgramOptions& invocation) {
     const RenderSettings& settings = invocation.settings;
     const ConvergenceSettings& convergence = invocation.convergence;
     // Every output path and a resumed state first: a typo costs a second, not the render.
@@ -92,46 +70,31 @@ int run(const ReferenceProgram& program, const Invocation& invocation) {
     RenderPart part(program.name, settings, invocation.farm);
     // Before the load, so that a stop during it still ends with the image and the state.
     installStopHandlers();
-    std::optional<Image> reference;
-    if (!convergence.referencePath.empty())
-        reference = loadReference(convergence.referencePath, settings.width, settings.height);
+    const std::optional<Image> reference = loadReferenceFor(convergence, settings);
     SceneSetup setup = setUpScene(settings, program.name);
     part.attachScene(setup);
     std::unique_ptr<IntersectorFactory> intersectors =
         program.makeIntersectors(setup.prepared, settings);
-    RenderReport report;
-    report.program = program.name;
-    report.settings = &settings;
+    RenderReport report = sceneReport(program.name, settings, setup);
     const ReferenceResult result =
         renderReferenceParts(setup.prepared, setup.camera, settings, report.stats,
                              referenceOptions(part, *intersectors));
     const RenderOutput& output = result.output;
     part.writeResults(output, result.records, result.interrupted);
     report.device = deviceDescription(settings);
-    report.bvh = setup.prepared.bvhStats;
-    report.triangles = setup.prepared.triangles.size();
-    report.emitters = setup.prepared.emitters.size();
-    report.features = setup.prepared.usedFeatures;
-    report.generalPipelines = settings.general;
-    report.loadSeconds = setup.loadSeconds;
     report.convergence = finalError(convergence, reference ? &*reference : nullptr, output,
                                     report.stats, settings.samplesPerPixel);
-    printRenderSummary(report);
-    if (!settings.statsJsonPath.empty()) writeStatsJson(report, settings.statsJsonPath);
+    writeRenderReport(report);
     return result.interrupted ? exitCodeForStop() : 0;
 }
 
 } // namespace
 
 int runReferenceProgram(const ReferenceProgram& program, int argc, char** argv) {
-    try {
-        Invocation invocation = parseArguments(program.name, argc, argv);
+    return runProgram(program.name, [&program, argc, argv] {
+        const ProgramOptions invocation = parseArguments(program.name, argc, argv);
         return invocation.showHelp ? 0 : run(program, invocation);
-    } catch (const InputError& error) {
-        return reportFailure(program.name, error, 1);
-    } catch (const std::exception& error) {
-        return reportFailure(program.name, error, 3);
-    }
+    });
 }
 
 } // namespace vkpt

@@ -92,13 +92,13 @@ void writeDeviceRun(JsonWriter& json, const DeviceRunReport& d) {
     json.field("pipelineCreationSeconds", d.pipelineCreationSeconds);
     json.field("sceneBufferBytes", d.sceneBufferBytes);
     json.key("sceneBuffers").beginArray();
-    for (const SceneBufferReport& b : d.sceneBuffers)
+    for (const SceneBufferBytes& b : d.sceneBuffers)
         json.beginObject().field("name", b.name).field("bytes", b.bytes).endObject();
     json.endArray();
     json.key("kernels").beginArray();
-    for (const KernelTiming& k : d.kernelTimes) {
+    for (const KernelTimeTotal& k : d.kernelTimes) {
         json.beginObject().field("name", k.kernel).field("dispatches", k.dispatches);
-        json.field("seconds", k.seconds).endObject();
+        json.field("seconds", k.seconds()).endObject();
     }
     json.endArray();
     json.endObject();
@@ -110,13 +110,27 @@ void printDeviceRun(const RenderReport& r, const DeviceRunReport& d) {
     std::printf("  pipelines %.3f s to create; scene buffers %.1f KiB in %zu buffers\n",
                 d.pipelineCreationSeconds, double(d.sceneBufferBytes) / 1024.0,
                 d.sceneBuffers.size());
-    for (const KernelTiming& k : d.kernelTimes)
+    for (const KernelTimeTotal& k : d.kernelTimes)
         std::printf("  kernel %-20s %9.3f ms in %llu dispatches\n", k.kernel.c_str(),
-                    k.seconds * 1e3, (unsigned long long)k.dispatches);
+                    k.seconds() * 1e3, (unsigned long long)k.dispatches);
     if (d.interrupted) std::printf("  interrupted: the image holds the passes finished so far\n");
 }
 
 } // namespace
+
+RenderReport sceneReport(const std::string& program, const RenderSettings& settings,
+                         const SceneSetup& setup) {
+    RenderReport report;
+    report.program = program;
+    report.settings = &settings;
+    report.bvh = setup.prepared.bvhStats;
+    report.triangles = setup.prepared.triangles.size();
+    report.emitters = setup.prepared.emitters.size();
+    report.features = setup.prepared.usedFeatures;
+    report.generalPipelines = settings.general;
+    report.loadSeconds = setup.loadSeconds;
+    return report;
+}
 
 void printRenderSummary(const RenderReport& r) {
     const RenderStats& st = r.stats;
@@ -157,6 +171,12 @@ void writeStatsJson(const RenderReport& r, const std::string& path) {
     json.endObject();
     out << "\n";
     if (!out) throw InputError(path + ": write failed");
+}
+
+void writeRenderReport(const RenderReport& report) {
+    printRenderSummary(report);
+    if (!report.settings->statsJsonPath.empty())
+        writeStatsJson(report, report.settings->statsJsonPath);
 }
 
 } // namespace vkpt

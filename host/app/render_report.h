@@ -6,38 +6,27 @@
 #include <string>
 #include <vector>
 
+#include "app/scene_setup.h"
 #include "bvh/bvh_build.h"
+#include "common/device_stats.h"
 #include "common/render_settings.h"
 #include "common/render_stats.h"
+#include "convergence/convergence.h"
 #include "scene/scene_features.h"
-#include "study/convergence.h"
 
 namespace vkpt {
-
-// GPU time of one kernel over the render (vkpt --stats, from timestamp queries).
-struct KernelTiming {
-    std::string kernel;
-    std::uint64_t dispatches = 0;
-    double seconds = 0.0;
-};
-
-// Device memory of one scene buffer (vkpt uploads only the arrays the scene has).
-struct SceneBufferReport {
-    std::string name;
-    std::uint64_t bytes = 0;
-};
 
 // What only the device executor (vkpt) has to report.
 struct DeviceRunReport {
     std::uint32_t passes = 0;
     std::uint32_t pathSlots = 0;
-    double setupSeconds = 0.0;            // upload, buffers and pipelines, before the first pass
+    double setupSeconds = 0.0;             // upload, buffers and pipelines, before the first pass
     std::uint64_t truncatedTraversals = 0; // BVH walks a driver loop limit cut short
-    std::vector<KernelTiming> kernelTimes; // empty unless --stats
-    double pipelineCreationSeconds = 0.0;  // Σ over kernels of the driver's pipeline compile
-    std::uint64_t sceneBufferBytes = 0;    // Σ sceneBuffers
-    std::vector<SceneBufferReport> sceneBuffers;
-    bool interrupted = false;              // Ctrl-C: the image holds the passes done
+    std::vector<KernelTimeTotal> kernelTimes;   // empty unless --stats
+    double pipelineCreationSeconds = 0.0;       // Σ over kernels of the driver's pipeline compile
+    std::uint64_t sceneBufferBytes = 0;         // Σ sceneBuffers
+    std::vector<SceneBufferBytes> sceneBuffers; // vkpt uploads only the arrays the scene has
+    bool interrupted = false;                   // Ctrl-C: the image holds the passes done
 };
 
 struct RenderReport {
@@ -56,7 +45,14 @@ struct RenderReport {
     std::optional<ConvergenceReport> convergence; // --reference, --target-error, --time-limit
 };
 
+// What both programs know once the scene is set up: program, settings, BVH, scene counts,
+// features and load time; the caller adds the device, the render's figures and the rest.
+RenderReport sceneReport(const std::string& program, const RenderSettings& settings,
+                         const SceneSetup& setup);
+
 void printRenderSummary(const RenderReport& report);
 void writeStatsJson(const RenderReport& report, const std::string& path);
+// The summary on stdout, and the statistics JSON when --stats-json asked for it.
+void writeRenderReport(const RenderReport& report);
 
 } // namespace vkpt

@@ -8,13 +8,12 @@
 
 #include "app/command_line.h"
 #include "app/convergence_options.h"
-#include "app/farm_options.h"
 #include "app/interrupt.h"
 #include "app/output_checks.h"
-#include "app/pass_figures.h"
-#include "app/render_options.h"
+#include "app/program_options.h"
 #include "app/render_part.h"
 #include "app/render_report.h"
+#include "app/run_program.h"
 #include "app/scene_setup.h"
 #include "common/errors.h"
 #include "gpu/context.h"
@@ -29,15 +28,12 @@ using namespace vkpt;
 
 const char* const kProgram = "vkpt";
 
-struct Invocation {
-    RenderSettings settings;
-    ConvergenceSettings convergence;
-    FarmSettings farm;
+// The options vkpt-ref takes too, and the device's own.
+struct Invocation : ProgramOptions {
     GpuOptions gpu;
     bool listDevices = false;
     bool kernelStats = false;
     std::uint32_t pathSlots = 0; // 0: chosen from the device
-    bool showHelp = false;
 };
 
 void addDeviceOptions(CommandLine& commandLine, Invocation& invocation) {
@@ -64,24 +60,11 @@ void addDeviceOptions(CommandLine& commandLine, Invocation& invocation) {
 
 Invocation parseArguments(int argc, char** argv) {
     Invocation invocation;
-    CommandLine commandLine(kProgram);
-    addRenderOptions(commandLine, invocation.settings);
-    addConvergenceOptions(commandLine, invocation.convergence, ConvergenceOptionSet::All);
-    addFarmOptions(commandLine, invocation.farm);
-    addDeviceOptions(commandLine, invocation);
-    commandLine.add(
-        {"help", {'h'}, "", "show this help", [&](auto) { invocation.showHelp = true; }});
-    std::vector<std::string> arguments(argv + 1, argv + argc);
-    std::vector<std::string> positional = commandLine.parse(arguments);
-    if (invocation.showHelp) {
-        std::fputs(commandLine.usage("scene.gltf|scene.glb").c_str(), stdout);
-        return invocation;
-    }
-    if (invocation.listDevices) return invocation;
-    if (positional.size() > 1) throw InputError("more than one scene file given");
-    if (!positional.empty()) invocation.settings.scenePath = positional[0];
-    validateRenderSettings(invocation.settings);
-    validateFarmSettings(invocation.farm, invocation.settings);
+    const ProgramCommandLine commandLine{
+        kProgram, ConvergenceOptionSet::All,
+        [&invocation](CommandLine& own) { addDeviceOptions(own, invocation); },
+        [&invocation] { return invocation.listDevices; }};
+    parseProgramOptions(commandLine, invocation, argc, argv);
     return invocation;
 }
 
@@ -100,12 +83,10 @@ DeviceRunReport deviceRunReport(const WavefrontResult& result, double setupSecon
     d.setupSeconds = setupSeconds;
     d.truncatedTraversals = result.truncatedTraversals;
     d.interrupted = result.interrupted;
-    for (const KernelTimeTotal& t : result.kernelTimes)
-        d.kernelTimes.push_back({t.kernel, t.dispatches, double(t.nanoseconds) * 1e-9});
+    d.kernelTimes = result.kernelTimes;
     d.pipelineCreationSeconds = result.pipelineCreationSeconds;
     d.sceneBufferBytes = result.sceneBufferBytes;
-    for (const SceneBufferBytes& b : result.sceneBuffers)
-        d.sceneBuffers.push_back({b.name, b.bytes});
+    d.sceneBuffers = result.sceneBuffers;
     return d;
 }
 
@@ -131,58 +112,29 @@ WavefrontOptions wavefrontOptions(const Invocation& invocation, ConvergenceTrack
     if (!convergence.any()) return options;
     options.readPixelsAfterPass = convergence.needsPixels();
     const bool printLines = printsPassLines(invocation);
-    options.afterPass = [&tracker, printLines](const PassProgress& progress) {
-        const ConvergencePoint& point = tracker.record(passFigures(progress), progress.output);
+    options.afterPass = [&tracker, printLines](const PassFigures& figures,
+                                               const RenderOutput* output) {
+        const ConvergencePoint& point = tracker.record(figures, output);
         if (printLines) std::fprintf(stderr, "%s: %s\n", kProgram, describePoint(point).c_str());
         return tracker.targetReached();
     };
     return options;
 }
 
-ConvergenceStop convergenceStop(WavefrontStop stop) {
-    switch (stop) {
-    case WavefrontStop::BudgetSpent:
-        return ConvergenceStop::Budget;
-    case WavefrontStop::AllConverged:
-        return ConvergenceStop::Converged;
-    case WavefrontStop::Interrupted:
-        return ConvergenceStop::Interrupted;
-    case WavefrontStop::TimeLimit:
-        return ConvergenceStop::TimeLimit;
-    case WavefrontStop::Observer:
-        return ConvergenceStop::TargetError;
-    }
-    return ConvergenceStop::Budget;
-}
-
 std::optional<ConvergenceReport> convergenceReport(const Invocation& invocation,
                                                    const ConvergenceTracker& tracker,
-                                                   WavefrontStop stop) {
+                                                   RenderStop stop) {
     if (!invocation.convergence.any()) return std::nullopt;
-    return ConvergenceReport{invocation.convergence, convergenceStop(stop), tracker.targetReached(),
+    return ConvergenceReport{invocation.convergence, stop, tracker.targetReached(),
                              tracker.curve()};
-}
-
-std::optional<Image> loadReferenceFor(const Invocation& invocation) {
-    const std::string& path = invocation.convergence.referencePath;
-    if (path.empty()) return std::nullopt;
-    return loadReference(path, invocation.settings.width, invocation.settings.height);
 }
 
 RenderReport makeReport(const Invocation& invocation, const SceneSetup& setup,
                         const GpuContext& context, const WavefrontResult& result,
                         double setupSeconds) {
-    RenderReport report;
-    report.program = kProgram;
+    RenderReport report = sceneReport(kProgram, invocation.settings, setup);
     report.device = context.deviceInfo().name;
-    report.settings = &invocation.settings;
-    report.bvh = setup.prepared.bvhStats;
-    report.triangles = setup.prepared.triangles.size();
-    report.emitters = setup.prepared.emitters.size();
-    report.features = setup.prepared.usedFeatures;
-    report.generalPipelines = invocation.settings.general;
     report.stats = result.stats;
-    report.loadSeconds = setup.loadSeconds;
     report.deviceMemoryBytes = context.memoryStats().peakBytes;
     report.deviceRun = deviceRunReport(result, setupSeconds);
     return report;
@@ -204,7 +156,7 @@ int render(const Invocation& invocation) {
     RenderPart part(kProgram, settings, invocation.farm);
     // The device next: without one, the user hears that (one line) before a long load.
     GpuContext context(invocation.gpu);
-    const std::optional<Image> reference = loadReferenceFor(invocation);
+    const std::optional<Image> reference = loadReferenceFor(invocation.convergence, settings);
     SceneSetup setup = setUpScene(settings, kProgram);
     part.attachScene(setup);
     const auto start = std::chrono::steady_clock::now();
@@ -221,8 +173,7 @@ int render(const Invocation& invocation) {
     RenderReport report =
         makeReport(invocation, setup, context, result, total.count() - result.stats.seconds);
     report.convergence = convergenceReport(invocation, tracker, result.stop);
-    printRenderSummary(report);
-    if (!settings.statsJsonPath.empty()) writeStatsJson(report, settings.statsJsonPath);
+    writeRenderReport(report);
     warnAboutTruncation(result);
     if (context.validationMessageCount() > 0)
         throw InternalError("the validation layer reported " +
@@ -233,16 +184,10 @@ int render(const Invocation& invocation) {
 } // namespace
 
 int main(int argc, char** argv) {
-    try {
-        Invocation invocation = parseArguments(argc, argv);
+    return vkpt::runProgram(kProgram, [argc, argv] {
+        const Invocation invocation = parseArguments(argc, argv);
         if (invocation.showHelp) return 0;
         if (invocation.listDevices) return printDevices();
         return render(invocation);
-    } catch (const vkpt::InputError& error) {
-        return vkpt::reportFailure(kProgram, error, 1);
-    } catch (const vkpt::VulkanError& error) {
-        return vkpt::reportFailure(kProgram, error, 2);
-    } catch (const std::exception& error) {
-        return vkpt::reportFailure(kProgram, error, 3);
-    }
+    });
 }

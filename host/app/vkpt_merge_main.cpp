@@ -8,6 +8,7 @@
 
 #include "app/command_line.h"
 #include "app/output_checks.h"
+#include "app/run_program.h"
 #include "app/scene_setup.h"
 #include "common/errors.h"
 #include "image/image_file.h"
@@ -94,12 +95,8 @@ int run(const Invocation& invocation) {
 } // namespace
 
 int main(int argc, char** argv) {
-    try {
-        Invocation invocation = parseArguments(argc, argv);
+    return vkpt::runProgram(kProgram, [argc, argv] {
+        const Invocation invocation = parseArguments(argc, argv);
         return invocation.showHelp ? 0 : run(invocation);
-    } catch (const vkpt::InputError& error) {
-        return vkpt::reportFailure(kProgram, error, 1);
-    } catch (const std::exception& error) {
-        return vkpt::reportFailure(kProgram, error, 3);
-    }
+    });
 }

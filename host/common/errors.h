@@ -14,6 +14,13 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// The compute device failed or none fits (VulkanError, host/gpu/vk_check.h, is one). Declared
+// here so that main() can tell it from other failures without knowing Vulkan. Exit code 2.
+class DeviceError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
 // A programmer error caught by VKPT_ASSERT. Exit code 3.
 class InternalError : public std::logic_error {
 public:

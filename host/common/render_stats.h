@@ -1,4 +1,5 @@
-// render_stats.h — what a render did: rays by kind, traversal work, samples and time.
+// render_stats.h — what a render did: rays by kind, traversal work, samples and time; where it
+// stands after a pass, and why it ended. Both executors report in these terms.
 #pragma once
 
 #include <cstdint>
@@ -37,5 +38,39 @@ struct RenderStats {
         return rays.total() ? double(triangleTests) / double(rays.total()) : 0.0;
     }
 };
+
+// Where a render stands after a pass: what an observer of the pass loop sees (vkpt's
+// --reference, --target-error, the trade study) and what a point of the error curve records.
+struct PassFigures {
+    std::uint32_t pass = 0;            // passes finished
+    double seconds = 0.0;              // wall time since the first pass began, reporting included
+    double renderSeconds = 0.0;        // the same less the time spent measuring and reporting
+    double cpuSeconds = 0.0;           // the process's CPU time over renderSeconds (0: unknown)
+    std::uint32_t samplesPerPixel = 0; // samples each still-active pixel has taken
+    std::uint64_t samplesTaken = 0;    // Σ over the pixels (0 when the pixels were not read)
+    std::uint32_t activePixels = 0;
+};
+
+// Why a render ended: its sample budget spent, every pixel converged (adaptive sampling),
+// --target-error reached (vkpt's observer of the pass loop asked to stop), --time-limit, or a
+// stop signal.
+enum class RenderStop { Budget, Converged, TargetError, TimeLimit, Interrupted };
+
+// The stop's name in the statistics JSON: "budget", "converged", "target-error", ...
+inline const char* stopName(RenderStop stop) {
+    switch (stop) {
+    case RenderStop::Budget:
+        return "budget";
+    case RenderStop::Converged:
+        return "converged";
+    case RenderStop::TargetError:
+        return "target-error";
+    case RenderStop::TimeLimit:
+        return "time-limit";
+    case RenderStop::Interrupted:
+        return "interrupted";
+    }
+    return "?";
+}
 
 } // namespace vkpt

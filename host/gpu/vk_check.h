@@ -6,13 +6,15 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/errors.h"
+
 namespace vkpt {
 
 // A Vulkan call failed or no usable device exists. main() prints the message and exits with 2.
-class VulkanError : public std::runtime_error {
+class VulkanError : public DeviceError {
 public:
     explicit VulkanError(const std::string& message, VkResult result = VK_ERROR_UNKNOWN)
-        : std::runtime_error(message), result_(result) {}
+        : DeviceError(message), result_(result) {}
     VkResult result() const { return result_; }
 
 private:

@@ -132,7 +132,7 @@ DeviceScene uploadScene(GpuContext& context, const PreparedScene& scene) {
     checkScene(scene);
     DeviceScene d{makeAbsentData(context)};
     // Records of 16-byte multiples are fetched as texels (lib/records.glsl), the rest read as
-    // storage buffers (wavefront_kernels.cpp, bindingKind).
+    // storage buffers (lib/kernel_bindings.h).
     constexpr VkBufferUsageFlags texels = VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
     d.bvhNodes = uploadArray(context, "bvhNodes", scene.nodes, texels);
     d.triangles = uploadArray(context, "triangles", scene.triangles, texels);

@@ -9,9 +9,9 @@
 #include <optional>
 #include <vector>
 
+#include "common/device_stats.h"
 #include "gpu/buffer.h"
 #include "prepare/prepared_scene.h"
-#include "render/scene_memory.h"
 #include "render/wavefront_kernels.h"
 
 namespace vkpt {

@@ -6,15 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "common/device_stats.h"
 #include "gpu/timestamps.h"
 
 namespace vkpt {
-
-struct KernelTimeTotal {
-    std::string kernel;
-    std::uint64_t dispatches = 0;
-    std::uint64_t nanoseconds = 0;
-};
 
 class KernelTimeTotals {
 public:

@@ -19,6 +19,7 @@
 #include "gpu/upload.h"
 #include "render/accumulation.h"
 #include "render/device_scene.h"
+#include "render/kernel_times.h"
 #include "render/pass_recorder.h"
 #include "render/pass_schedule.h"
 #include "render/wavefront_kernels.h"
@@ -169,7 +170,7 @@ private:
     std::uint32_t samplesForNextPass() const;
     bool runPass(); // false once nothing is left to sample
     bool observe(); // true when the observer asks to stop
-    WavefrontStop runPasses();
+    RenderStop runPasses();
     double elapsed() const { return secondsBetween(start_, Clock::now()); }
     void runChunk(const gpu::PassParams& params, bool firstChunk);
     void submit(const std::string& label, const std::function<void()>& record);
@@ -386,40 +387,40 @@ bool WavefrontRenderer::observe() {
     if (!options_.afterPass) return false;
     const Clock::time_point begin = Clock::now();
     const double beginCpu = processCpuSeconds();
-    PassProgress progress;
-    progress.passes = passes_;
-    progress.samplesPerPixel = samplesDone_;
-    progress.activePixels = activePixels_;
-    progress.seconds = secondsBetween(start_, begin);
-    progress.observerSeconds = observerSeconds_;
-    progress.cpuSeconds = beginCpu - startCpu_;
-    progress.observerCpuSeconds = observerCpuSeconds_;
+    PassFigures figures;
+    figures.pass = passes_;
+    figures.samplesPerPixel = samplesDone_;
+    figures.activePixels = activePixels_;
+    figures.seconds = secondsBetween(start_, begin);
+    figures.renderSeconds = figures.seconds - observerSeconds_;
+    const double cpuSeconds = beginCpu - startCpu_;
+    figures.cpuSeconds = cpuSeconds - observerCpuSeconds_;
     RenderOutput output;
+    const RenderOutput* shown = nullptr;
     if (options_.readPixelsAfterPass) {
         std::vector<gpu::PixelState> pixels =
             download<gpu::PixelState>(context_, buffers_.pixelStates, pixelCount_);
         output = makeRenderOutput(pixels, camera_.width, camera_.height);
-        progress.output = &output;
-        progress.samplesTaken = totalSamplesTaken(pixels);
+        shown = &output;
+        figures.samplesTaken = totalSamplesTaken(pixels);
     }
-    const bool stop = options_.afterPass(progress);
+    const bool stop = options_.afterPass(figures, shown);
     observerSeconds_ += secondsBetween(begin, Clock::now());
     observerCpuSeconds_ += processCpuSeconds() - beginCpu;
     return stop;
 }
 
-WavefrontStop WavefrontRenderer::runPasses() {
+RenderStop WavefrontRenderer::runPasses() {
     while (true) {
         const bool more = runPass();
-        if (observe()) return WavefrontStop::Observer;
+        if (observe()) return RenderStop::TargetError;
         if (!more)
-            return activePixels_ == 0 && samplesDone_ < budget_
-                       ? WavefrontStop::AllConverged
-                       : WavefrontStop::BudgetSpent;
-        if (options_.interrupt && options_.interrupt->load()) return WavefrontStop::Interrupted;
+            return activePixels_ == 0 && samplesDone_ < budget_ ? RenderStop::Converged
+                                                                 : RenderStop::Budget;
+        if (options_.interrupt && options_.interrupt->load()) return RenderStop::Interrupted;
         checkpointIfDue();
         if (options_.timeLimitSeconds > 0.0 && elapsed() >= options_.timeLimitSeconds)
-            return WavefrontStop::TimeLimit;
+            return RenderStop::TimeLimit;
     }
 }
 
@@ -432,8 +433,8 @@ WavefrontResult WavefrontRenderer::run() {
     progress_->advance(samplesDone_);
     // A resumed render may have nothing left to do.
     const bool done = activePixels_ == 0 || samplesDone_ >= budget_;
-    const WavefrontStop stop = done ? WavefrontStop::BudgetSpent : runPasses();
-    interrupted_ = stop == WavefrontStop::Interrupted;
+    const RenderStop stop = done ? RenderStop::Budget : runPasses();
+    interrupted_ = stop == RenderStop::Interrupted;
     progress_->finish();
     WavefrontResult result = finish(elapsed());
     result.stop = stop;

@@ -11,38 +11,17 @@
 #include <optional>
 #include <vector>
 
+#include "common/device_stats.h"
 #include "common/render_settings.h"
 #include "common/render_stats.h"
 #include "image/render_output.h"
 #include "prepare/prepared_scene.h"
-#include "render/kernel_times.h"
-#include "render/scene_memory.h"
 #include "scene/scene_features.h"
 #include "state/sample_plan.h"
 
 namespace vkpt {
 
 class GpuContext;
-
-// Where a render stands after a pass, for an observer (WavefrontOptions::afterPass).
-struct PassProgress {
-    std::uint32_t passes = 0;          // passes finished, this one included
-    std::uint32_t samplesPerPixel = 0; // samples each still-active pixel has taken
-    std::uint32_t activePixels = 0;    // pixels that go on sampling
-    double seconds = 0.0;              // wall time since the first pass began
-    double observerSeconds = 0.0;      // of which spent in earlier readbacks and observer calls
-    // The process's CPU time (all threads) over the same span, and the observer's share. On a
-    // CPU device (lavapipe) this is the render's cost whatever else loads the machine.
-    double cpuSeconds = 0.0;
-    double observerCpuSeconds = 0.0;
-    // With readPixelsAfterPass: the image and statistics so far (one readback of the pixel
-    // states) and Σ samples taken over the pixels; otherwise null and 0.
-    const RenderOutput* output = nullptr;
-    std::uint64_t samplesTaken = 0;
-};
-
-// Why the pass loop ended.
-enum class WavefrontStop { BudgetSpent, AllConverged, Interrupted, TimeLimit, Observer };
 
 struct WavefrontOptions {
     std::uint32_t slotCount = 0; // path slots; 0: chosen from the device (chooseSlotCount)
@@ -53,8 +32,13 @@ struct WavefrontOptions {
     // While a limit is set, a pass (after the first) takes no more samples per pixel than the
     // previous pass's rate says fit in the time left, and at least one.
     double timeLimitSeconds = 0.0;
-    // Called after every pass; returning true stops the render there (--target-error).
-    std::function<bool(const PassProgress&)> afterPass;
+    // Called after every pass; returning true stops the render there (RenderStop::TargetError:
+    // vkpt's --target-error). The figures' renderSeconds and cpuSeconds leave out the time of
+    // earlier readbacks and calls (the process's CPU time, all threads: on a CPU device such as
+    // lavapipe, the render's cost whatever else loads the machine). With readPixelsAfterPass
+    // the output is the image and statistics so far (one readback of the pixel states) and
+    // samplesTaken their Σ; otherwise the output is null and samplesTaken 0.
+    std::function<bool(const PassFigures&, const RenderOutput*)> afterPass;
     // Give afterPass the image so far, and grow passes geometrically so that it sees the error
     // at log-spaced sample counts (samplesForGeometricGrowth).
     bool readPixelsAfterPass = false;
@@ -83,7 +67,7 @@ struct WavefrontResult {
     std::uint32_t passes = 0;
     std::uint32_t slotCount = 0;
     bool interrupted = false;
-    WavefrontStop stop = WavefrontStop::BudgetSpent;
+    RenderStop stop = RenderStop::Budget;
     // Σ over the kernels of vkCreateShaderModule + vkCreateComputePipelines, before the first
     // pass: what specialisation costs or saves (lavapipe compiles its LLVM code at the first
     // dispatch, so there it measures the SPIR-V → NIR stage only).

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "common/errors.h"
+#include "lib/kernel_bindings.h"
 #include "lib/wavefront.h"
 #include "vkpt_kernels.h"
 
@@ -16,42 +17,28 @@ namespace {
 
 struct KernelInfo {
     std::string_view name;
-    std::vector<std::uint32_t> bindings;
+    std::vector<KernelBinding> bindings;
     bool specialised = false; // includes lib/features.glsl
 };
 
-// Must list exactly the buffers each .comp file declares (a missing one is a validation error).
+// The entries of a lib/kernel_bindings.h list as KernelBindings, in the list's order.
+#define VKPT_UNIFORM_BINDING(binding) {binding, DescriptorKind::UniformBuffer},
+#define VKPT_TEXEL_BINDING(binding) {binding, DescriptorKind::UniformTexelBuffer},
+#define VKPT_STORAGE_BINDING(binding, access, Type, name) {binding, DescriptorKind::StorageBuffer},
+#define VKPT_KERNEL_BINDINGS(LIST)                                                                 \
+    std::vector<KernelBinding> {                                                                   \
+        LIST(VKPT_UNIFORM_BINDING, VKPT_TEXEL_BINDING, VKPT_STORAGE_BINDING)                       \
+    }
+
 const std::array<KernelInfo, kWavefrontKernelCount>& kernelTable() {
     static const std::array<KernelInfo, kWavefrontKernelCount> table = {{
-        {kernels::kGenerateCameraRaysName,
-         {BINDING_FRAME_PARAMS, BINDING_ACTIVE_PIXELS, BINDING_PATH_STATES, BINDING_RAYS,
-          BINDING_QUEUE_COUNTERS}},
-        {kernels::kPrepareDispatchesName,
-         {BINDING_FRAME_PARAMS, BINDING_QUEUE_COUNTERS, BINDING_DISPATCH_ARGS}},
-        {kernels::kTraceClosestName,
-         {BINDING_FRAME_PARAMS, BINDING_BVH_NODES, BINDING_TRIANGLES, BINDING_TRIANGLE_UVS,
-          BINDING_MATERIALS, BINDING_TEXTURES, BINDING_TEXTURE_TEXELS, BINDING_RAY_TEXELS,
-          BINDING_HITS, BINDING_QUEUE_COUNTERS},
-         true},
-        {kernels::kShadeHitsName,
-         {BINDING_FRAME_PARAMS, BINDING_TRIANGLES, BINDING_TRIANGLE_NORMALS, BINDING_TRIANGLE_UVS,
-          BINDING_MATERIALS, BINDING_TEXTURES, BINDING_TEXTURE_TEXELS, BINDING_EMITTERS,
-          BINDING_EMITTER_CDF, BINDING_ENVIRONMENT_TEXELS, BINDING_ENVIRONMENT_CDF,
-          BINDING_PATH_STATES, BINDING_PATH_STATE_TEXELS, BINDING_RAYS, BINDING_RAY_TEXELS,
-          BINDING_HIT_TEXELS, BINDING_SHADOW_RAYS, BINDING_QUEUE_COUNTERS},
-         true},
-        {kernels::kTraceShadowName,
-         {BINDING_FRAME_PARAMS, BINDING_BVH_NODES, BINDING_TRIANGLES, BINDING_TRIANGLE_UVS,
-          BINDING_MATERIALS, BINDING_TEXTURES, BINDING_TEXTURE_TEXELS, BINDING_ENVIRONMENT_TEXELS,
-          BINDING_ENVIRONMENT_CDF, BINDING_SHADOW_RAYS, BINDING_SHADOW_RAY_TEXELS,
-          BINDING_QUEUE_COUNTERS},
-         true},
-        {kernels::kAddLightSamplesName,
-         {BINDING_FRAME_PARAMS, BINDING_PATH_STATES, BINDING_PATH_STATE_TEXELS,
-          BINDING_RAY_TEXELS, BINDING_SHADOW_RAY_TEXELS, BINDING_QUEUE_COUNTERS}},
-        {kernels::kAccumulateName,
-         {BINDING_FRAME_PARAMS, BINDING_PATH_STATE_TEXELS, BINDING_PIXEL_STATES,
-          BINDING_ACTIVE_PIXELS, BINDING_QUEUE_COUNTERS}},
+        {kernels::kGenerateCameraRaysName, VKPT_KERNEL_BINDINGS(GENERATE_CAMERA_RAYS_BINDINGS)},
+        {kernels::kPrepareDispatchesName, VKPT_KERNEL_BINDINGS(PREPARE_DISPATCHES_BINDINGS)},
+        {kernels::kTraceClosestName, VKPT_KERNEL_BINDINGS(TRACE_CLOSEST_BINDINGS), true},
+        {kernels::kShadeHitsName, VKPT_KERNEL_BINDINGS(SHADE_HITS_BINDINGS), true},
+        {kernels::kTraceShadowName, VKPT_KERNEL_BINDINGS(TRACE_SHADOW_BINDINGS), true},
+        {kernels::kAddLightSamplesName, VKPT_KERNEL_BINDINGS(ADD_LIGHT_SAMPLES_BINDINGS)},
+        {kernels::kAccumulateName, VKPT_KERNEL_BINDINGS(ACCUMULATE_BINDINGS)},
     }};
     return table;
 }
@@ -66,28 +53,8 @@ std::string_view kernelName(WavefrontKernel kernel) {
     return info(kernel).name;
 }
 
-std::span<const std::uint32_t> kernelBindings(WavefrontKernel kernel) {
+std::span<const KernelBinding> kernelBindings(WavefrontKernel kernel) {
     return info(kernel).bindings;
-}
-
-DescriptorKind bindingKind(std::uint32_t binding) {
-    switch (binding) {
-    case BINDING_FRAME_PARAMS:
-        return DescriptorKind::UniformBuffer;
-    case BINDING_BVH_NODES:
-    case BINDING_TRIANGLES:
-    case BINDING_TRIANGLE_NORMALS:
-    case BINDING_MATERIALS:
-    case BINDING_EMITTERS:
-    case BINDING_TEXTURES:
-    case BINDING_RAY_TEXELS:
-    case BINDING_HIT_TEXELS:
-    case BINDING_SHADOW_RAY_TEXELS:
-    case BINDING_PATH_STATE_TEXELS:
-        return DescriptorKind::UniformTexelBuffer;
-    default:
-        return DescriptorKind::StorageBuffer;
-    }
 }
 
 std::vector<SpecializationConstant> featureConstants(const SceneFeatures& features) {
@@ -108,8 +75,7 @@ Kernel makeWavefrontKernel(const GpuContext& context, WavefrontKernel kernel,
     KernelDesc desc;
     desc.name = std::string(embedded.name);
     desc.spirv = embedded.spirv;
-    for (std::uint32_t binding : info(kernel).bindings)
-        desc.bindings.push_back({binding, bindingKind(binding)});
+    desc.bindings = info(kernel).bindings;
     desc.pushConstantSize = sizeof(gpu::PassParams);
     if (isSpecialised(kernel)) desc.specializationConstants = featureConstants(features);
     return Kernel(context, std::move(desc));
@@ -118,11 +84,11 @@ Kernel makeWavefrontKernel(const GpuContext& context, WavefrontKernel kernel,
 DescriptorSet bindWavefrontKernel(const Kernel& kernel, WavefrontKernel id,
                                   const BufferTable& table) {
     std::vector<BufferBinding> bindings;
-    for (std::uint32_t binding : kernelBindings(id)) {
-        const Buffer* buffer = table.buffers.at(binding);
+    for (const KernelBinding& declared : kernelBindings(id)) {
+        const Buffer* buffer = table.buffers.at(declared.binding);
         VKPT_ASSERT(buffer != nullptr, "kernel '" + std::string(kernelName(id)) +
-                                           "' needs binding " + std::to_string(binding));
-        bindings.push_back({binding, buffer});
+                                           "' needs binding " + std::to_string(declared.binding));
+        bindings.push_back({declared.binding, buffer});
     }
     return DescriptorSet(kernel, bindings);
 }

@@ -32,11 +32,9 @@ inline constexpr std::size_t kWavefrontKernelCount = 7;
 
 std::string_view kernelName(WavefrontKernel kernel);
 
-// The bindings (BINDING_* of lib/wavefront.h) the kernel declares.
-std::span<const std::uint32_t> kernelBindings(WavefrontKernel kernel);
-
-// How every kernel that declares `binding` sees it (the comments of lib/wavefront.h).
-DescriptorKind bindingKind(std::uint32_t binding);
+// The bindings (BINDING_* of lib/wavefront.h) the kernel declares and how it sees each one, from
+// its list in lib/kernel_bindings.h.
+std::span<const KernelBinding> kernelBindings(WavefrontKernel kernel);
 
 inline constexpr std::uint32_t kWavefrontBindingCount = 24; // BINDING_COUNT of lib/wavefront.h
 

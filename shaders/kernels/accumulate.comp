@@ -9,9 +9,9 @@
 
 layout(local_size_x = WORKGROUP_SIZE) in;
 
-VKPT_BUFFER(BINDING_PIXEL_STATES, PixelState, pixelStates)
-VKPT_WRITEONLY_BUFFER(BINDING_ACTIVE_PIXELS, uint, activePixels)
-VKPT_BUFFER(BINDING_QUEUE_COUNTERS, uint, queueCounters)
+#include "lib/kernel_bindings.h"
+
+VKPT_DECLARE_BUFFERS(ACCUMULATE_BINDINGS)
 
 #include "lib/counters.glsl"
 #include "lib/records.glsl"

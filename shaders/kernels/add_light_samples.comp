@@ -8,8 +8,9 @@
 
 layout(local_size_x = WORKGROUP_SIZE) in;
 
-VKPT_WRITEONLY_BUFFER(BINDING_PATH_STATES, PathState, pathStates)
-VKPT_READONLY_BUFFER(BINDING_QUEUE_COUNTERS, uint, queueCounters)
+#include "lib/kernel_bindings.h"
+
+VKPT_DECLARE_BUFFERS(ADD_LIGHT_SAMPLES_BINDINGS)
 
 #include "lib/records.glsl"
 

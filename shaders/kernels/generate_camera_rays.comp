@@ -8,10 +8,9 @@
 
 layout(local_size_x = WORKGROUP_SIZE) in;
 
-VKPT_READONLY_BUFFER(BINDING_ACTIVE_PIXELS, uint, activePixels)
-VKPT_WRITEONLY_BUFFER(BINDING_PATH_STATES, PathState, pathStates)
-VKPT_WRITEONLY_BUFFER(BINDING_RAYS, RayRecord, rays)
-VKPT_BUFFER(BINDING_QUEUE_COUNTERS, uint, queueCounters)
+#include "lib/kernel_bindings.h"
+
+VKPT_DECLARE_BUFFERS(GENERATE_CAMERA_RAYS_BINDINGS)
 
 uint activePixel(uint activeIndex) {
     if (passParams.useActiveList == 0u) return activeIndex;

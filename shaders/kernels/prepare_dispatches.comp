@@ -8,8 +8,9 @@
 
 layout(local_size_x = 1) in;
 
-VKPT_BUFFER(BINDING_QUEUE_COUNTERS, uint, queueCounters)
-VKPT_WRITEONLY_BUFFER(BINDING_DISPATCH_ARGS, uint, dispatchArgs)
+#include "lib/kernel_bindings.h"
+
+VKPT_DECLARE_BUFFERS(PREPARE_DISPATCHES_BINDINGS)
 
 #include "lib/counters.glsl"
 

@@ -8,15 +8,9 @@
 
 layout(local_size_x = WORKGROUP_SIZE) in;
 
-VKPT_READONLY_BUFFER(BINDING_TRIANGLE_UVS, vec2, triangleUvs)
-VKPT_READONLY_BUFFER(BINDING_TEXTURE_TEXELS, uint, textureTexels)
-VKPT_READONLY_BUFFER(BINDING_EMITTER_CDF, float, emitterCdf)
-VKPT_READONLY_BUFFER(BINDING_ENVIRONMENT_TEXELS, vec4, environmentTexels)
-VKPT_READONLY_BUFFER(BINDING_ENVIRONMENT_CDF, float, environmentCdf)
-VKPT_WRITEONLY_BUFFER(BINDING_PATH_STATES, PathState, pathStates)
-VKPT_WRITEONLY_BUFFER(BINDING_RAYS, RayRecord, rays)
-VKPT_WRITEONLY_BUFFER(BINDING_SHADOW_RAYS, ShadowRay, shadowRays)
-VKPT_BUFFER(BINDING_QUEUE_COUNTERS, uint, queueCounters)
+#include "lib/kernel_bindings.h"
+
+VKPT_DECLARE_BUFFERS(SHADE_HITS_BINDINGS)
 
 #include "lib/counters.glsl"
 #include "lib/lights.glsl"

@@ -6,10 +6,9 @@
 
 layout(local_size_x = WORKGROUP_SIZE) in;
 
-VKPT_READONLY_BUFFER(BINDING_TRIANGLE_UVS, vec2, triangleUvs)
-VKPT_READONLY_BUFFER(BINDING_TEXTURE_TEXELS, uint, textureTexels)
-VKPT_WRITEONLY_BUFFER(BINDING_HITS, HitRecord, hits)
-VKPT_BUFFER(BINDING_QUEUE_COUNTERS, uint, queueCounters)
+#include "lib/kernel_bindings.h"
+
+VKPT_DECLARE_BUFFERS(TRACE_CLOSEST_BINDINGS)
 
 #include "lib/traversal_stats.glsl"
 #include "lib/traverse.glsl"

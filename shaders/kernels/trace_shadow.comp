@@ -8,12 +8,9 @@
 
 layout(local_size_x = WORKGROUP_SIZE) in;
 
-VKPT_READONLY_BUFFER(BINDING_TRIANGLE_UVS, vec2, triangleUvs)
-VKPT_READONLY_BUFFER(BINDING_TEXTURE_TEXELS, uint, textureTexels)
-VKPT_READONLY_BUFFER(BINDING_ENVIRONMENT_TEXELS, vec4, environmentTexels)
-VKPT_READONLY_BUFFER(BINDING_ENVIRONMENT_CDF, float, environmentCdf)
-VKPT_WRITEONLY_BUFFER(BINDING_SHADOW_RAYS, ShadowRay, shadowRays)
-VKPT_BUFFER(BINDING_QUEUE_COUNTERS, uint, queueCounters)
+#include "lib/kernel_bindings.h"
+
+VKPT_DECLARE_BUFFERS(TRACE_SHADOW_BINDINGS)
 
 #include "lib/environment.glsl"
 #include "lib/materials.glsl"

@@ -7,7 +7,8 @@
 // Every record here is a multiple of 16 bytes (shared/host_device.h, lib/wavefront.h).
 //
 // The texel views are declared here for every includer; a kernel binds those it fetches from
-// (host/render/wavefront_kernels.cpp), and one it never fetches from is not statically used.
+// (its TEXELS entries in lib/kernel_bindings.h), and one it never fetches from is not
+// statically used.
 #ifndef VKPT_RECORDS_GLSL
 #define VKPT_RECORDS_GLSL
 

@@ -20,7 +20,7 @@ namespace vkpt::gpu {
 // read (host/render/device_scene.h). frameParams is a uniform buffer; the read-only records
 // (scene arrays, and the work arrays where a kernel only reads them) are uniform texel buffers
 // fetched as 16-byte texels (lib/records.glsl); the rest are storage buffers
-// (host/render/wavefront_kernels.cpp, bindingKind; docs/gpu.md).
+// (lib/kernel_bindings.h lists each kernel's; docs/gpu.md).
 #define BINDING_FRAME_PARAMS 0     // uniform buffer
 #define BINDING_BVH_NODES 1        // uniform texel buffer, as all scene records up to 5
 #define BINDING_TRIANGLES 2

@@ -14,6 +14,8 @@
 #include <thread>
 #include <vector>
 
+#include "app/run_program.h"
+#include "bench_options.h"
 #include "bench_statistics.h"
 #include "bvh/bvh_traverse.h"
 #include "bvh/bvh_wide.h"
@@ -243,14 +245,17 @@ std::vector<std::string> defaultScenePaths() {
 
 int main(int argc, char** argv) {
     using namespace vkpt;
-    std::vector<std::string> paths(argv + 1, argv + argc);
-    if (paths.empty()) {
-        benchScene(syntheticSphere());
-        paths = defaultScenePaths();
-    }
-    for (const std::string& path : paths) {
-        BenchScene scene;
-        if (loadBenchScene(path, scene)) benchScene(scene);
-    }
-    return 0;
+    return runProgram("bvh_build_bench", [argc, argv] {
+        CommandLine commandLine("bvh_build_bench");
+        std::vector<std::string> paths = bench::parseBenchArguments(commandLine, argc, argv);
+        if (paths.empty()) {
+            benchScene(syntheticSphere());
+            paths = defaultScenePaths();
+        }
+        for (const std::string& path : paths) {
+            BenchScene scene;
+            if (loadBenchScene(path, scene)) benchScene(scene);
+        }
+        return 0;
+    });
 }

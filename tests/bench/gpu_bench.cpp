@@ -5,11 +5,11 @@
 //   gpu_bench [--quick] [--spp N] [--res W H] [--runs N] [--device N|NAME] [scene ...]
 //
 // Defaults: 64 spp at 512 × 512, 3 runs. --quick (2 spp at 128 × 128) suits lavapipe in CI.
-#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <vector>
 
+#include "bench_options.h"
 #include "bench_statistics.h"
 #include "common/errors.h"
 #include "gpu/context.h"
@@ -22,7 +22,9 @@
 
 namespace {
 
+using vkpt::bench::addRenderBenchOptions;
 using vkpt::bench::median;
+using vkpt::bench::parseBenchArguments;
 
 using namespace vkpt;
 
@@ -37,24 +39,17 @@ struct BenchOptions {
 
 BenchOptions parse(int argc, char** argv) {
     BenchOptions o;
-    for (int i = 1; i < argc; ++i) {
-        std::string a = argv[i];
-        if (a == "--quick") {
-            o.spp = 2;
-            o.width = o.height = 128;
-        } else if (a == "--spp" && i + 1 < argc) {
-            o.spp = std::uint32_t(std::stoul(argv[++i]));
-        } else if (a == "--runs" && i + 1 < argc) {
-            o.runs = std::max(1, std::stoi(argv[++i]));
-        } else if (a == "--device" && i + 1 < argc) {
-            o.gpu.device = parseDeviceSelection(argv[++i]);
-        } else if (a == "--res" && i + 2 < argc) {
-            o.width = std::uint32_t(std::stoul(argv[++i]));
-            o.height = std::uint32_t(std::stoul(argv[++i]));
-        } else {
-            o.scenes.push_back(a);
-        }
-    }
+    CommandLine commandLine("gpu_bench");
+    commandLine.add({"quick", {}, "", "2 spp at 128 x 128: seconds on lavapipe", [&o](auto) {
+                         o.spp = 2;
+                         o.width = o.height = 128;
+                     }});
+    addRenderBenchOptions(commandLine, o.spp, o.width, o.height, o.runs);
+    commandLine.add(
+        {"device", {}, "N|NAME", "Vulkan device by index or name substring", [&o](auto v) {
+             o.gpu.device = parseDeviceSelection(v[0]);
+         }});
+    o.scenes = parseBenchArguments(commandLine, argc, argv);
     if (o.scenes.empty())
         o.scenes = {std::string(VKPT_SCENES_DIR) + "/cornell-box.gltf",
                     std::string(VKPT_SCENES_DIR) +

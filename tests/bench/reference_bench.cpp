@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_options.h"
 #include "bench_statistics.h"
 #include "common/errors.h"
 #include "prepare/prepared_scene.h"
@@ -17,7 +18,9 @@
 
 namespace {
 
+using vkpt::bench::addRenderBenchOptions;
 using vkpt::bench::median;
+using vkpt::bench::parseBenchArguments;
 
 using namespace vkpt;
 
@@ -31,18 +34,13 @@ struct BenchOptions {
 
 BenchOptions parse(int argc, char** argv) {
     BenchOptions o;
-    for (int i = 1; i < argc; ++i) {
-        std::string a = argv[i];
-        if (a == "--spp" && i + 1 < argc) o.spp = std::uint32_t(std::stoul(argv[++i]));
-        else if (a == "--runs" && i + 1 < argc) o.runs = std::stoi(argv[++i]);
-        else if (a == "--res" && i + 2 < argc) {
-            o.width = std::uint32_t(std::stoul(argv[++i]));
-            o.height = std::uint32_t(std::stoul(argv[++i]));
-        } else o.scenes.push_back(a);
-    }
+    CommandLine commandLine("reference_bench");
+    addRenderBenchOptions(commandLine, o.spp, o.width, o.height, o.runs);
+    o.scenes = parseBenchArguments(commandLine, argc, argv);
     if (o.scenes.empty())
         o.scenes = {std::string(VKPT_SCENES_DIR) + "/cornell-box.gltf",
-                    std::string(VKPT_SCENES_DIR) + "/../../shared/scenes/TransmissionTest/TransmissionTest.glb"};
+                    std::string(VKPT_SCENES_DIR) +
+                        "/../../shared/scenes/TransmissionTest/TransmissionTest.glb"};
     return o;
 }
 

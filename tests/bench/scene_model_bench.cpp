@@ -9,15 +9,16 @@
 //                     [--env-color R G B] [scene ...]
 //
 // Defaults: 16 spp at 256 × 256, 5 runs; the Cornell box and DamagedHelmet (lit by a constant
-// environment of 1 when no --env-color is given for it). "first run" includes what a driver
-// compiles at the first dispatch (lavapipe compiles its LLVM code then, not at pipeline
-// creation); the other times are medians.
+// environment of 1 when no --env-color is given). --env-color lights every scene given. "first run"
+// includes what a driver compiles at the first dispatch (lavapipe compiles its LLVM code then, not
+// at pipeline creation); the other times are medians.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
 
+#include "bench_options.h"
 #include "bench_statistics.h"
 #include "common/errors.h"
 #include "gpu/context.h"
@@ -29,7 +30,9 @@
 
 namespace {
 
+using vkpt::bench::addRenderBenchOptions;
 using vkpt::bench::median;
+using vkpt::bench::parseBenchArguments;
 
 using namespace vkpt;
 
@@ -50,26 +53,19 @@ struct BenchOptions {
 
 BenchOptions parse(int argc, char** argv) {
     BenchOptions o;
-    for (int i = 1; i < argc; ++i) {
-        std::string a = argv[i];
-        if (a == "--spp" && i + 1 < argc) {
-            o.spp = std::uint32_t(std::stoul(argv[++i]));
-        } else if (a == "--runs" && i + 1 < argc) {
-            o.runs = std::max(1, std::stoi(argv[++i]));
-        } else if (a == "--device" && i + 1 < argc) {
-            o.gpu.device = parseDeviceSelection(argv[++i]);
-        } else if (a == "--res" && i + 2 < argc) {
-            o.width = std::uint32_t(std::stoul(argv[++i]));
-            o.height = std::uint32_t(std::stoul(argv[++i]));
-        } else if (a == "--env-color" && i + 3 < argc) {
-            glm::vec3 c;
-            for (int k = 0; k < 3; ++k)
-                c[k] = std::stof(argv[++i]);
-            o.environment = c;
-        } else {
-            o.scenes.push_back({a, o.environment.value_or(glm::vec3(0.0f))});
-        }
-    }
+    CommandLine commandLine("scene_model_bench");
+    addRenderBenchOptions(commandLine, o.spp, o.width, o.height, o.runs);
+    commandLine.add(
+        {"device", {}, "N|NAME", "Vulkan device by index or name substring", [&o](auto v) {
+             o.gpu.device = parseDeviceSelection(v[0]);
+         }});
+    commandLine.add(
+        {"env-color", {}, "R G B", "constant environment of the scenes given", [&o](auto v) {
+             o.environment = glm::vec3(parseFloat("env-color", v[0]), parseFloat("env-color", v[1]),
+                                       parseFloat("env-color", v[2]));
+         }});
+    for (const std::string& path : parseBenchArguments(commandLine, argc, argv))
+        o.scenes.push_back({path, o.environment.value_or(glm::vec3(0.0f))});
     if (o.scenes.empty()) {
         const std::string shared = std::string(VKPT_SCENES_DIR) + "/../../shared/scenes/";
         o.scenes = {

@@ -8,10 +8,10 @@
 #include <mutex>
 #include <thread>
 
+#include "../support/ray_queries.h"
 #include "bvh/bvh_traverse.h"
 #include "bvh/wide_traverse.h"
 #include "reference/alpha_mask_filter.h"
-#include "render/ray_queries.h"
 #ifdef VKPT_HAVE_EMBREE
 #include "embree/embree_intersectors.h"
 #endif

@@ -5,9 +5,9 @@
 
 #include <cmath>
 
+#include "../support/ray_queries.h"
 #include "bvh/bvh_traverse.h"
 #include "extremes_support.h"
-#include "render/ray_queries.h"
 #include "shared/camera.h"
 #include "shared/intersect.h"
 #include "shared/ray_offset.h"

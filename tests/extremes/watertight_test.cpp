@@ -7,10 +7,10 @@
 #include <algorithm>
 #include <set>
 
+#include "../support/ray_queries.h"
 #include "../support/meshes.h"
 #include "bvh/bvh_traverse.h"
 #include "extremes_support.h"
-#include "render/ray_queries.h"
 #include "shared/rng.h"
 
 namespace vkpt {

@@ -5,6 +5,7 @@
 #include "gpu/barriers.h"
 #include "gpu/submit.h"
 #include "gpu/timestamps.h"
+#include "kernel_test_io.h"
 
 #include <chrono>
 #include <cstdio>
@@ -95,10 +96,13 @@ TEST_F(Dispatch, ReportsPipelineCreationTimes) {
         std::uint32_t buffers;
         std::uint32_t pushConstantSize;
     };
-    const Layout layouts[] = {{"count_loop_iterations", 1, 32}, {"read_layouts", 9, 0},
-                              {"run_intersect", 2, 4},          {"run_rng", 2, 4},
-                              {"run_sampling", 2, 4},           {"write_indices", 1, 4},
-                              {"write_layouts", 9, 0}};
+    const Layout layouts[] = {{"count_loop_iterations", 1, 32},
+                              {"read_layouts", LAYOUT_BUFFER_COUNT, 0},
+                              {"run_intersect", 2, 4},
+                              {"run_rng", 2, 4},
+                              {"run_sampling", 2, 4},
+                              {"write_indices", 1, 4},
+                              {"write_layouts", LAYOUT_BUFFER_COUNT, 0}};
     for (const Layout& layout : layouts) {
         const Kernel kernel = makeKernel(layout.name, layout.buffers, layout.pushConstantSize);
         std::printf("%-22s pipeline created in %7.3f ms\n", layout.name,

@@ -1,8 +1,8 @@
 // layout_round_trip_test.cpp — the GLSL (std430) and C++ layouts of every struct in
-// shared/host_device.h agree byte for byte: the device reads each field of C++-written structs
-// and writes it out as words in declaration order, and writes each field of structs from
-// words; both must match the C++ bytes exactly. Every word is distinct, so a swapped or
-// shifted field cannot go unnoticed.
+// shared/host_device.h and of the wavefront records in lib/wavefront.h agree byte for byte: the
+// device reads each field of C++-written structs and writes it out as words in declaration order,
+// and writes each field of structs from words; both must match the C++ bytes exactly. Every word is
+// distinct, so a swapped or shifted field cannot go unnoticed.
 #include "gpu_test_support.h"
 #include "kernel_test_io.h"
 
@@ -36,10 +36,29 @@ struct SharedStructs {
     std::vector<Emitter> emitters;
     std::vector<EnvironmentParams> environments;
     std::vector<Camera> cameras;
+    std::vector<FrameParams> frames;
+    std::vector<PathState> pathStates;
+    std::vector<ShadowRay> shadowRays;
+    std::vector<PixelState> pixelStates;
 };
 
 TextureSlot makeTextureSlot(Values& x) {
     return {x.v3(), x.u(), x.v3(), x.u()};
+}
+
+Camera makeCamera(Values& x) {
+    return {x.v3(), x.f(), x.v3(), x.f(), x.v3(), x.u(), x.v3(), x.u()};
+}
+
+EnvironmentParams makeEnvironment(Values& x) {
+    return {x.v3(), x.u(), x.u(), x.u(), x.u(), x.u()};
+}
+
+// camera, seed ... adaptiveMinSamples, adaptiveTolerance, adaptiveDarkFloor, slotCount,
+// pixelCount, unused0, sampleClamp, environment.
+FrameParams makeFrameParams(Values& x) {
+    return {makeCamera(x), x.u(), x.u(), x.u(), x.u(), x.u(), x.u(), x.u(), x.u(),
+            x.u(),         x.u(), x.f(), x.f(), x.u(), x.u(), x.u(), x.f(), makeEnvironment(x)};
 }
 
 // Field by field in declaration order (designated initialisers would let a field be missed).
@@ -61,8 +80,12 @@ SharedStructs makeStructs() {
         s.textures.push_back({x.u(), x.u(), x.u(), x.u()});
         s.emitters.push_back(
             {x.v3(), x.u(), x.v3(), x.u(), x.v3(), x.f(), x.f(), x.f(), x.f(), x.f()});
-        s.environments.push_back({x.v3(), x.u(), x.u(), x.u(), x.u(), x.u()});
-        s.cameras.push_back({x.v3(), x.f(), x.v3(), x.f(), x.v3(), x.u(), x.v3(), x.u()});
+        s.environments.push_back(makeEnvironment(x));
+        s.cameras.push_back(makeCamera(x));
+        s.frames.push_back(makeFrameParams(x));
+        s.pathStates.push_back({x.v3(), x.u(), x.v3(), x.u(), x.v3(), x.f()});
+        s.shadowRays.push_back({x.v3(), x.u(), x.v3(), x.f(), x.v3(), x.f()});
+        s.pixelStates.push_back({x.v3(), x.u(), x.v3(), x.u(), x.f(), x.f(), x.u(), x.u()});
     }
     return s;
 }
@@ -84,6 +107,10 @@ std::vector<uint> flatten(const SharedStructs& s) {
     appendWords(words, s.emitters);
     appendWords(words, s.environments);
     appendWords(words, s.cameras);
+    appendWords(words, s.frames);
+    appendWords(words, s.pathStates);
+    appendWords(words, s.shadowRays);
+    appendWords(words, s.pixelStates);
     return words;
 }
 
@@ -117,10 +144,14 @@ TEST_F(LayoutRoundTrip, DeviceReadsEveryFieldAtItsCppOffset) {
     const Buffer environments = structBuffer("environments", s.environments);
     const Buffer cameras = structBuffer("cameras", s.cameras);
     const Buffer words = makeStorageBuffer("words", LAYOUT_TOTAL_WORDS * sizeof(uint));
-    const Kernel kernel = makeKernel("read_layouts", 9, 0);
+    const Buffer frames = structBuffer("frames", s.frames);
+    const Buffer pathStates = structBuffer("pathStates", s.pathStates);
+    const Buffer shadowRays = structBuffer("shadowRays", s.shadowRays);
+    const Buffer pixelStates = structBuffer("pixelStates", s.pixelStates);
+    const Kernel kernel = makeKernel("read_layouts", LAYOUT_BUFFER_COUNT, 0);
     runKernel(kernel,
               {&bvhNodes, &triangles, &triangleNormals, &materials, &textures, &emitters,
-               &environments, &cameras, &words},
+               &environments, &cameras, &words, &frames, &pathStates, &shadowRays, &pixelStates},
               LAYOUT_COUNT);
 
     const std::vector<uint> expected = flatten(s);
@@ -145,10 +176,14 @@ TEST_F(LayoutRoundTrip, DeviceWritesEveryFieldAtItsCppOffset) {
     const Buffer environments =
         makeStorageBuffer("environments", LAYOUT_COUNT * sizeof(EnvironmentParams));
     const Buffer cameras = makeStorageBuffer("cameras", LAYOUT_COUNT * sizeof(Camera));
-    const Kernel kernel = makeKernel("write_layouts", 9, 0);
+    const Buffer frames = makeStorageBuffer("frames", LAYOUT_COUNT * sizeof(FrameParams));
+    const Buffer pathStates = makeStorageBuffer("pathStates", LAYOUT_COUNT * sizeof(PathState));
+    const Buffer shadowRays = makeStorageBuffer("shadowRays", LAYOUT_COUNT * sizeof(ShadowRay));
+    const Buffer pixelStates = makeStorageBuffer("pixelStates", LAYOUT_COUNT * sizeof(PixelState));
+    const Kernel kernel = makeKernel("write_layouts", LAYOUT_BUFFER_COUNT, 0);
     runKernel(kernel,
               {&bvhNodes, &triangles, &triangleNormals, &materials, &textures, &emitters,
-               &environments, &cameras, &words},
+               &environments, &cameras, &words, &frames, &pathStates, &shadowRays, &pixelStates},
               LAYOUT_COUNT);
 
     expectSameBytes(download<WideBvhNode>(context(), bvhNodes, LAYOUT_COUNT), s.bvhNodes,
@@ -165,6 +200,13 @@ TEST_F(LayoutRoundTrip, DeviceWritesEveryFieldAtItsCppOffset) {
     expectSameBytes(download<EnvironmentParams>(context(), environments, LAYOUT_COUNT),
                     s.environments, "environments");
     expectSameBytes(download<Camera>(context(), cameras, LAYOUT_COUNT), s.cameras, "cameras");
+    expectSameBytes(download<FrameParams>(context(), frames, LAYOUT_COUNT), s.frames, "frames");
+    expectSameBytes(download<PathState>(context(), pathStates, LAYOUT_COUNT), s.pathStates,
+                    "pathStates");
+    expectSameBytes(download<ShadowRay>(context(), shadowRays, LAYOUT_COUNT), s.shadowRays,
+                    "shadowRays");
+    expectSameBytes(download<PixelState>(context(), pixelStates, LAYOUT_COUNT), s.pixelStates,
+                    "pixelStates");
 }
 
 } // namespace

@@ -5,9 +5,8 @@
 #include <cmath>
 #include <vector>
 
-#include "app/pass_figures.h"
+#include "convergence/convergence.h"
 #include "image/error_metrics.h"
-#include "study/convergence.h"
 #include "wavefront_test_support.h"
 
 namespace vkpt::test {
@@ -31,8 +30,8 @@ protected:
     static WavefrontOptions tracked(ConvergenceTracker& tracker) {
         WavefrontOptions options;
         options.readPixelsAfterPass = true;
-        options.afterPass = [&tracker](const PassProgress& progress) {
-            tracker.record(passFigures(progress), progress.output);
+        options.afterPass = [&tracker](const PassFigures& figures, const RenderOutput* output) {
+            tracker.record(figures, output);
             return tracker.targetReached();
         };
         return options;
@@ -44,15 +43,15 @@ protected:
 TEST_F(ConvergenceRender, ATimeLimitStopsAtAPassEndWithTheImageSoFar) {
     constexpr double kLimit = 0.5;
     const RenderSettings settings = testSettings(32, 1u << 20); // a budget no test waits for
-    std::vector<PassProgress> passes;
+    std::vector<PassFigures> passes;
     WavefrontOptions options;
     options.timeLimitSeconds = kLimit;
-    options.afterPass = [&passes](const PassProgress& progress) {
-        passes.push_back(progress);
+    options.afterPass = [&passes](const PassFigures& figures, const RenderOutput*) {
+        passes.push_back(figures);
         return false;
     };
     const WavefrontResult result = render(settings, options);
-    EXPECT_EQ(result.stop, WavefrontStop::TimeLimit);
+    EXPECT_EQ(result.stop, RenderStop::TimeLimit);
     ASSERT_GE(passes.size(), 2u);
     EXPECT_LT(passes[passes.size() - 2].seconds, kLimit) << "it stopped at the first pass end";
     EXPECT_GE(passes.back().seconds, kLimit);
@@ -67,7 +66,7 @@ TEST_F(ConvergenceRender, ATargetErrorStopsOnceTheEstimateCrossesIt) {
     const RenderSettings settings = testSettings(32, 4096);
     ConvergenceTracker tracker(nullptr, kTarget);
     const WavefrontResult result = render(settings, tracked(tracker));
-    EXPECT_EQ(result.stop, WavefrontStop::Observer);
+    EXPECT_EQ(result.stop, RenderStop::TargetError);
     const std::vector<ConvergencePoint>& curve = tracker.curve();
     ASSERT_GE(curve.size(), 2u);
     EXPECT_LE(tracker.trackedError(curve.back()), kTarget);
@@ -90,7 +89,7 @@ TEST_F(ConvergenceRender, AReferenceGivesTheErrorAfterEveryPassAtLogSpacedCounts
     const Image truth = reference(32, 1024);
     ConvergenceTracker tracker(&truth, 0.0);
     const WavefrontResult result = render(testSettings(32, 64), tracked(tracker));
-    EXPECT_EQ(result.stop, WavefrontStop::BudgetSpent);
+    EXPECT_EQ(result.stop, RenderStop::Budget);
     std::vector<std::uint32_t> spp;
     for (const ConvergencePoint& point : tracker.curve()) {
         spp.push_back(point.figures.samplesPerPixel);

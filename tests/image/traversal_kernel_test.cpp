@@ -10,12 +10,12 @@
 #include <iomanip>
 #include <sstream>
 
+#include "../support/ray_queries.h"
 #include "bvh/bvh_traverse.h"
 #include "bvh/wide_traverse.h"
 #include "bvh/synthetic_scenes.h"
 #include "feature_scenes.h"
 #include "reference/alpha_mask_filter.h"
-#include "render/ray_queries.h"
 #include "shared/camera.h"
 #include "shared/intersect.h"
 #include "shared/sphere.h"

@@ -1,7 +1,7 @@
 // convergence_test.cpp — the curve that --reference, --target-error and --time-limit report:
 // points measured from a render, the rule that stops at a target error, the reference file's
 // checks and the JSON.
-#include "study/convergence.h"
+#include "convergence/convergence.h"
 
 #include <cmath>
 #include <filesystem>
@@ -147,7 +147,7 @@ TEST(ConvergenceJson, HoldsTheSettingsTheStopAndEveryPoint) {
     tracker.record(pass(1, 1), nullptr);
     tracker.record(pass(2, 16), &output);
     ConvergenceReport report{
-        {"ref.pfm", 0.02, 0.0}, ConvergenceStop::TargetError, true, tracker.curve()};
+        {"ref.pfm", 0.02, 0.0}, RenderStop::TargetError, true, tracker.curve()};
     std::ostringstream out;
     JsonWriter json(out, 0);
     json.beginObject();
@@ -161,12 +161,12 @@ TEST(ConvergenceJson, HoldsTheSettingsTheStopAndEveryPoint) {
         EXPECT_NE(text.find(expected), std::string::npos) << expected << " in " << text;
 }
 
-TEST(ConvergenceStops, HaveTheNamesTheJsonUses) {
-    EXPECT_STREQ(stopName(ConvergenceStop::Budget), "budget");
-    EXPECT_STREQ(stopName(ConvergenceStop::Converged), "converged");
-    EXPECT_STREQ(stopName(ConvergenceStop::TargetError), "target-error");
-    EXPECT_STREQ(stopName(ConvergenceStop::TimeLimit), "time-limit");
-    EXPECT_STREQ(stopName(ConvergenceStop::Interrupted), "interrupted");
+TEST(RenderStops, HaveTheNamesTheJsonUses) {
+    EXPECT_STREQ(stopName(RenderStop::Budget), "budget");
+    EXPECT_STREQ(stopName(RenderStop::Converged), "converged");
+    EXPECT_STREQ(stopName(RenderStop::TargetError), "target-error");
+    EXPECT_STREQ(stopName(RenderStop::TimeLimit), "time-limit");
+    EXPECT_STREQ(stopName(RenderStop::Interrupted), "interrupted");
 }
 
 } // namespace

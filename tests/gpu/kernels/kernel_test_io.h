@@ -4,6 +4,7 @@
 #ifndef VKPT_KERNEL_TEST_IO_H
 #define VKPT_KERNEL_TEST_IO_H
 
+#include "lib/wavefront.h"
 #include "shared/host_device.h"
 
 #ifdef __cplusplus
@@ -60,9 +61,11 @@ struct IntersectOutput {
     vec4 faceNormal;       // triangleFaceNormal
 };
 
-// read_layouts / write_layouts: each shared struct flattened to 32-bit words in declaration
-// order, one region per struct type, LAYOUT_COUNT records per region.
+// read_layouts / write_layouts: each struct of shared/host_device.h and each wavefront record of
+// lib/wavefront.h flattened to 32-bit words in declaration order, one region per struct type,
+// LAYOUT_COUNT records per region.
 #define LAYOUT_COUNT 5u
+#define LAYOUT_BUFFER_COUNT 13u // one per struct type, and the words (binding 8)
 #define LAYOUT_WORDS_BVH_NODE 20u
 #define LAYOUT_WORDS_TRIANGLE 12u
 #define LAYOUT_WORDS_TRIANGLE_NORMALS 12u
@@ -71,6 +74,10 @@ struct IntersectOutput {
 #define LAYOUT_WORDS_EMITTER 16u
 #define LAYOUT_WORDS_ENVIRONMENT 8u
 #define LAYOUT_WORDS_CAMERA 16u
+#define LAYOUT_WORDS_FRAME_PARAMS 40u
+#define LAYOUT_WORDS_PATH_STATE 12u
+#define LAYOUT_WORDS_SHADOW_RAY 12u
+#define LAYOUT_WORDS_PIXEL_STATE 12u
 #define LAYOUT_OFFSET_BVH_NODES 0u
 #define LAYOUT_OFFSET_TRIANGLES (LAYOUT_OFFSET_BVH_NODES + LAYOUT_COUNT * LAYOUT_WORDS_BVH_NODE)
 #define LAYOUT_OFFSET_TRIANGLE_NORMALS                                                             \
@@ -81,7 +88,14 @@ struct IntersectOutput {
 #define LAYOUT_OFFSET_EMITTERS (LAYOUT_OFFSET_TEXTURES + LAYOUT_COUNT * LAYOUT_WORDS_TEXTURE_INFO)
 #define LAYOUT_OFFSET_ENVIRONMENTS (LAYOUT_OFFSET_EMITTERS + LAYOUT_COUNT * LAYOUT_WORDS_EMITTER)
 #define LAYOUT_OFFSET_CAMERAS (LAYOUT_OFFSET_ENVIRONMENTS + LAYOUT_COUNT * LAYOUT_WORDS_ENVIRONMENT)
-#define LAYOUT_TOTAL_WORDS (LAYOUT_OFFSET_CAMERAS + LAYOUT_COUNT * LAYOUT_WORDS_CAMERA)
+#define LAYOUT_OFFSET_FRAME_PARAMS (LAYOUT_OFFSET_CAMERAS + LAYOUT_COUNT * LAYOUT_WORDS_CAMERA)
+#define LAYOUT_OFFSET_PATH_STATES                                                                  \
+    (LAYOUT_OFFSET_FRAME_PARAMS + LAYOUT_COUNT * LAYOUT_WORDS_FRAME_PARAMS)
+#define LAYOUT_OFFSET_SHADOW_RAYS                                                                  \
+    (LAYOUT_OFFSET_PATH_STATES + LAYOUT_COUNT * LAYOUT_WORDS_PATH_STATE)
+#define LAYOUT_OFFSET_PIXEL_STATES                                                                 \
+    (LAYOUT_OFFSET_SHADOW_RAYS + LAYOUT_COUNT * LAYOUT_WORDS_SHADOW_RAY)
+#define LAYOUT_TOTAL_WORDS (LAYOUT_OFFSET_PIXEL_STATES + LAYOUT_COUNT * LAYOUT_WORDS_PIXEL_STATE)
 
 // count_loop_iterations: per invocation, how many iterations each loop really ran.
 struct LoopCounts {
@@ -114,6 +128,10 @@ static_assert(sizeof(WideBvhNode) == 4 * LAYOUT_WORDS_BVH_NODE &&
               sizeof(Emitter) == 4 * LAYOUT_WORDS_EMITTER &&
               sizeof(EnvironmentParams) == 4 * LAYOUT_WORDS_ENVIRONMENT &&
               sizeof(Camera) == 4 * LAYOUT_WORDS_CAMERA);
+static_assert(sizeof(FrameParams) == 4 * LAYOUT_WORDS_FRAME_PARAMS &&
+              sizeof(PathState) == 4 * LAYOUT_WORDS_PATH_STATE &&
+              sizeof(ShadowRay) == 4 * LAYOUT_WORDS_SHADOW_RAY &&
+              sizeof(PixelState) == 4 * LAYOUT_WORDS_PIXEL_STATE);
 static_assert(sizeof(LoopCounts) == 16 && sizeof(LoopParams) == 32);
 } // namespace vkpt::gpu::test
 #endif

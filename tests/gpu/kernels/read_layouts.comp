@@ -1,6 +1,6 @@
-// read_layouts.comp — reads every field of every shared struct through its GLSL (std430)
-// declaration and writes it as 32-bit words in declaration order, so the host can compare the
-// words with the bytes of its C++ layout.
+// read_layouts.comp — reads every field of every shared struct and wavefront record through its
+// GLSL (std430) declaration and writes it as 32-bit words in declaration order, so the host can
+// compare the words with the bytes of its C++ layout.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "kernel_test_io.h"
@@ -18,6 +18,10 @@ VKPT_READONLY_BUFFER(5, Emitter, emitters)
 VKPT_READONLY_BUFFER(6, EnvironmentParams, environments)
 VKPT_READONLY_BUFFER(7, Camera, cameras)
 VKPT_WRITEONLY_BUFFER(8, uint, words)
+VKPT_READONLY_BUFFER(9, FrameParams, frames)
+VKPT_READONLY_BUFFER(10, PathState, pathStates)
+VKPT_READONLY_BUFFER(11, ShadowRay, shadowRays)
+VKPT_READONLY_BUFFER(12, PixelState, pixelStates)
 
 uint cursor;
 
@@ -50,6 +54,47 @@ void putTextureSlot(TextureSlot slot) {
     putUint(slot.texture);
     putVec3(slot.transformRow1);
     putUint(slot.unused0);
+}
+
+void putCamera(Camera camera) {
+    putVec3(camera.position);
+    putFloat(camera.tanHalfFovY);
+    putVec3(camera.right);
+    putFloat(camera.aspect);
+    putVec3(camera.up);
+    putUint(camera.width);
+    putVec3(camera.forward);
+    putUint(camera.height);
+}
+
+void putEnvironment(EnvironmentParams environment) {
+    putVec3(environment.radiance);
+    putUint(environment.width);
+    putUint(environment.height);
+    putUint(environment.emitterIndex);
+    putUint(environment.unused0);
+    putUint(environment.unused1);
+}
+
+void putFrameParams(FrameParams frame) {
+    putCamera(frame.camera);
+    putUint(frame.seed);
+    putUint(frame.maxDepth);
+    putUint(frame.rrStartDepth);
+    putUint(frame.lightSamples);
+    putUint(frame.integrator);
+    putUint(frame.pathFilter);
+    putUint(frame.emitterCount);
+    putUint(frame.adaptive);
+    putUint(frame.adaptiveBatch);
+    putUint(frame.adaptiveMinSamples);
+    putFloat(frame.adaptiveTolerance);
+    putFloat(frame.adaptiveDarkFloor);
+    putUint(frame.slotCount);
+    putUint(frame.pixelCount);
+    putUint(frame.unused0);
+    putFloat(frame.sampleClamp);
+    putEnvironment(frame.environment);
 }
 
 void main() {
@@ -113,20 +158,37 @@ void main() {
     putFloat(emitters[i].cosOuterCone);
 
     cursor = LAYOUT_OFFSET_ENVIRONMENTS + i * LAYOUT_WORDS_ENVIRONMENT;
-    putVec3(environments[i].radiance);
-    putUint(environments[i].width);
-    putUint(environments[i].height);
-    putUint(environments[i].emitterIndex);
-    putUint(environments[i].unused0);
-    putUint(environments[i].unused1);
+    putEnvironment(environments[i]);
 
     cursor = LAYOUT_OFFSET_CAMERAS + i * LAYOUT_WORDS_CAMERA;
-    putVec3(cameras[i].position);
-    putFloat(cameras[i].tanHalfFovY);
-    putVec3(cameras[i].right);
-    putFloat(cameras[i].aspect);
-    putVec3(cameras[i].up);
-    putUint(cameras[i].width);
-    putVec3(cameras[i].forward);
-    putUint(cameras[i].height);
+    putCamera(cameras[i]);
+
+    cursor = LAYOUT_OFFSET_FRAME_PARAMS + i * LAYOUT_WORDS_FRAME_PARAMS;
+    putFrameParams(frames[i]);
+
+    cursor = LAYOUT_OFFSET_PATH_STATES + i * LAYOUT_WORDS_PATH_STATE;
+    putVec3(pathStates[i].throughput);
+    putUint(pathStates[i].pixel);
+    putVec3(pathStates[i].radiance);
+    putUint(pathStates[i].sampleIndex);
+    putVec3(pathStates[i].lightScale);
+    putFloat(pathStates[i].previousBsdfPdf);
+
+    cursor = LAYOUT_OFFSET_SHADOW_RAYS + i * LAYOUT_WORDS_SHADOW_RAY;
+    putVec3(shadowRays[i].origin);
+    putUint(shadowRays[i].flags);
+    putVec3(shadowRays[i].direction);
+    putFloat(shadowRays[i].tMax);
+    putVec3(shadowRays[i].contribution);
+    putFloat(shadowRays[i].factor);
+
+    cursor = LAYOUT_OFFSET_PIXEL_STATES + i * LAYOUT_WORDS_PIXEL_STATE;
+    putVec3(pixelStates[i].radianceSum);
+    putUint(pixelStates[i].count);
+    putVec3(pixelStates[i].compensation);
+    putUint(pixelStates[i].samplesTaken);
+    putFloat(pixelStates[i].luminanceMean);
+    putFloat(pixelStates[i].luminanceM2);
+    putUint(pixelStates[i].converged);
+    putUint(pixelStates[i].unused0);
 }

@@ -18,6 +18,10 @@ VKPT_WRITEONLY_BUFFER(5, Emitter, emitters)
 VKPT_WRITEONLY_BUFFER(6, EnvironmentParams, environments)
 VKPT_WRITEONLY_BUFFER(7, Camera, cameras)
 VKPT_READONLY_BUFFER(8, uint, words)
+VKPT_WRITEONLY_BUFFER(9, FrameParams, frames)
+VKPT_WRITEONLY_BUFFER(10, PathState, pathStates)
+VKPT_WRITEONLY_BUFFER(11, ShadowRay, shadowRays)
+VKPT_WRITEONLY_BUFFER(12, PixelState, pixelStates)
 
 uint cursor;
 
@@ -53,6 +57,53 @@ TextureSlot takeTextureSlot() {
     slot.transformRow1 = takeVec3();
     slot.unused0 = takeUint();
     return slot;
+}
+
+Camera takeCamera() {
+    Camera camera;
+    camera.position = takeVec3();
+    camera.tanHalfFovY = takeFloat();
+    camera.right = takeVec3();
+    camera.aspect = takeFloat();
+    camera.up = takeVec3();
+    camera.width = takeUint();
+    camera.forward = takeVec3();
+    camera.height = takeUint();
+    return camera;
+}
+
+EnvironmentParams takeEnvironment() {
+    EnvironmentParams environment;
+    environment.radiance = takeVec3();
+    environment.width = takeUint();
+    environment.height = takeUint();
+    environment.emitterIndex = takeUint();
+    environment.unused0 = takeUint();
+    environment.unused1 = takeUint();
+    return environment;
+}
+
+FrameParams takeFrameParams() {
+    FrameParams frame;
+    frame.camera = takeCamera();
+    frame.seed = takeUint();
+    frame.maxDepth = takeUint();
+    frame.rrStartDepth = takeUint();
+    frame.lightSamples = takeUint();
+    frame.integrator = takeUint();
+    frame.pathFilter = takeUint();
+    frame.emitterCount = takeUint();
+    frame.adaptive = takeUint();
+    frame.adaptiveBatch = takeUint();
+    frame.adaptiveMinSamples = takeUint();
+    frame.adaptiveTolerance = takeFloat();
+    frame.adaptiveDarkFloor = takeFloat();
+    frame.slotCount = takeUint();
+    frame.pixelCount = takeUint();
+    frame.unused0 = takeUint();
+    frame.sampleClamp = takeFloat();
+    frame.environment = takeEnvironment();
+    return frame;
 }
 
 void main() {
@@ -116,20 +167,37 @@ void main() {
     emitters[i].cosOuterCone = takeFloat();
 
     cursor = LAYOUT_OFFSET_ENVIRONMENTS + i * LAYOUT_WORDS_ENVIRONMENT;
-    environments[i].radiance = takeVec3();
-    environments[i].width = takeUint();
-    environments[i].height = takeUint();
-    environments[i].emitterIndex = takeUint();
-    environments[i].unused0 = takeUint();
-    environments[i].unused1 = takeUint();
+    environments[i] = takeEnvironment();
 
     cursor = LAYOUT_OFFSET_CAMERAS + i * LAYOUT_WORDS_CAMERA;
-    cameras[i].position = takeVec3();
-    cameras[i].tanHalfFovY = takeFloat();
-    cameras[i].right = takeVec3();
-    cameras[i].aspect = takeFloat();
-    cameras[i].up = takeVec3();
-    cameras[i].width = takeUint();
-    cameras[i].forward = takeVec3();
-    cameras[i].height = takeUint();
+    cameras[i] = takeCamera();
+
+    cursor = LAYOUT_OFFSET_FRAME_PARAMS + i * LAYOUT_WORDS_FRAME_PARAMS;
+    frames[i] = takeFrameParams();
+
+    cursor = LAYOUT_OFFSET_PATH_STATES + i * LAYOUT_WORDS_PATH_STATE;
+    pathStates[i].throughput = takeVec3();
+    pathStates[i].pixel = takeUint();
+    pathStates[i].radiance = takeVec3();
+    pathStates[i].sampleIndex = takeUint();
+    pathStates[i].lightScale = takeVec3();
+    pathStates[i].previousBsdfPdf = takeFloat();
+
+    cursor = LAYOUT_OFFSET_SHADOW_RAYS + i * LAYOUT_WORDS_SHADOW_RAY;
+    shadowRays[i].origin = takeVec3();
+    shadowRays[i].flags = takeUint();
+    shadowRays[i].direction = takeVec3();
+    shadowRays[i].tMax = takeFloat();
+    shadowRays[i].contribution = takeVec3();
+    shadowRays[i].factor = takeFloat();
+
+    cursor = LAYOUT_OFFSET_PIXEL_STATES + i * LAYOUT_WORDS_PIXEL_STATE;
+    pixelStates[i].radianceSum = takeVec3();
+    pixelStates[i].count = takeUint();
+    pixelStates[i].compensation = takeVec3();
+    pixelStates[i].samplesTaken = takeUint();
+    pixelStates[i].luminanceMean = takeFloat();
+    pixelStates[i].luminanceM2 = takeFloat();
+    pixelStates[i].converged = takeUint();
+    pixelStates[i].unused0 = takeUint();
 }

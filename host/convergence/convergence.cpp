@@ -1,6 +1,6 @@
 // convergence.cpp — points of the error curve, the target-error rule, the JSON and the
 // summary lines.
-#include "study/convergence.h"
+#include "convergence/convergence.h"
 
 #include <cmath>
 #include <cstdio>
@@ -42,22 +42,6 @@ void writePoint(JsonWriter& json, const ConvergencePoint& p) {
 }
 
 } // namespace
-
-const char* stopName(ConvergenceStop stop) {
-    switch (stop) {
-    case ConvergenceStop::Budget:
-        return "budget";
-    case ConvergenceStop::Converged:
-        return "converged";
-    case ConvergenceStop::TargetError:
-        return "target-error";
-    case ConvergenceStop::TimeLimit:
-        return "time-limit";
-    case ConvergenceStop::Interrupted:
-        return "interrupted";
-    }
-    return "?";
-}
 
 Image loadReference(const std::string& path, std::uint32_t width, std::uint32_t height) {
     Image reference = readPfm(path);
@@ -147,7 +131,7 @@ void printConvergenceSummary(const ConvergenceReport& r) {
     std::printf("  stopped: %s", stopName(r.stop));
     if (r.settings.targetError > 0.0) {
         const char* outcome = r.targetReached ? "reached"
-                              : r.stop == ConvergenceStop::Budget
+                              : r.stop == RenderStop::Budget
                                   ? "not reached: the --spp budget ran out first"
                                   : "not reached";
         std::printf("; target relMSE %.3g %s", r.settings.targetError, outcome);

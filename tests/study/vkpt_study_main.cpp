@@ -10,11 +10,11 @@
 #include <vector>
 
 #include "app/command_line.h"
+#include "app/run_program.h"
 #include "app/scene_setup.h"
-#include "app/study_runner.h"
 #include "common/errors.h"
 #include "gpu/device_list.h"
-#include "gpu/vk_check.h"
+#include "study/study_runner.h"
 
 namespace {
 
@@ -197,15 +197,9 @@ Parsed parseArguments(int argc, char** argv) {
 } // namespace
 
 int main(int argc, char** argv) {
-    try {
-        Parsed parsed = parseArguments(argc, argv);
+    return vkpt::runProgram(kProgram, [argc, argv] {
+        const Parsed parsed = parseArguments(argc, argv);
         if (parsed.showHelp) return 0;
         return runStudy(parsed.invocation);
-    } catch (const vkpt::InputError& error) {
-        return vkpt::reportFailure(kProgram, error, 1);
-    } catch (const vkpt::VulkanError& error) {
-        return vkpt::reportFailure(kProgram, error, 2);
-    } catch (const std::exception& error) {
-        return vkpt::reportFailure(kProgram, error, 3);
-    }
+    });
 }

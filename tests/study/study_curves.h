@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "study/convergence.h"
+#include "convergence/convergence.h"
 #include "study/study_plan.h"
 
 namespace vkpt {

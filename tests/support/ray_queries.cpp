@@ -1,5 +1,5 @@
 // ray_queries.cpp — uploads rays as queue records, dispatches one traversal kernel, downloads.
-#include "render/ray_queries.h"
+#include "ray_queries.h"
 
 #include <algorithm>
 

@@ -1,5 +1,5 @@
 // study_runner.cpp — references, runs and outputs of the trade study.
-#include "app/study_runner.h"
+#include "study/study_runner.h"
 
 #include <algorithm>
 #include <chrono>
@@ -13,7 +13,6 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "app/pass_figures.h"
 #include "app/scene_setup.h"
 #include "common/errors.h"
 #include "common/progress.h"
@@ -229,10 +228,11 @@ RunResult StudyRunner::measure(const StudyRun& run, const std::string& progressL
     WavefrontOptions options;
     options.slotCount = invocation_.pathSlots;
     options.readPixelsAfterPass = true;
-    options.afterPass = [&tracker, &progressBar](const PassProgress& progress) {
-        tracker.record(passFigures(progress), progress.output);
+    options.afterPass = [&tracker, &progressBar](const PassFigures& figures,
+                                                 const RenderOutput* output) {
+        tracker.record(figures, output);
         progressBar.setStatus("relMSE " + formatRelMse(tracker.curve().back().relMse));
-        progressBar.advance(progress.samplesTaken - progressBar.done());
+        progressBar.advance(figures.samplesTaken - progressBar.done());
         return false;
     };
     const SceneSetup& setup = setupFor(run.settings);

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "common/render_stats.h"
 #include "image/error_metrics.h"
 #include "image/image.h"
 #include "image/render_output.h"
@@ -35,17 +36,6 @@ struct ConvergenceSettings {
 // Cornell box the estimate was 1/1.7 of the true relMSE at 18 spp but 1/1.1 at 64 spp.
 inline constexpr std::uint32_t kMinSamplesForEstimate = 64;
 
-// What the executor knows after a pass.
-struct PassFigures {
-    std::uint32_t pass = 0;            // passes finished
-    double seconds = 0.0;              // wall time since the first pass began, reporting included
-    double renderSeconds = 0.0;        // the same less the time spent measuring and reporting
-    double cpuSeconds = 0.0;           // the process's CPU time over renderSeconds (0: unknown)
-    std::uint32_t samplesPerPixel = 0; // samples each still-active pixel has taken
-    std::uint64_t samplesTaken = 0;    // Σ over the pixels (0 when the pixels were not read)
-    std::uint32_t activePixels = 0;
-};
-
 struct ConvergencePoint {
     static constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
     PassFigures figures;
@@ -55,10 +45,6 @@ struct ConvergencePoint {
     double estimatedRelMse = kUnknown;
     std::uint32_t minSamples = 0; // fewest samples of any pixel
 };
-
-// Why a render ended.
-enum class ConvergenceStop { Budget, Converged, TargetError, TimeLimit, Interrupted };
-const char* stopName(ConvergenceStop stop); // "budget", "converged", "target-error", ...
 
 // The reference a render is measured against: a PFM of exactly width × height whose every
 // value is finite. Throws InputError naming the file and the problem.
@@ -96,7 +82,7 @@ std::string describePoint(const ConvergencePoint& point);
 
 struct ConvergenceReport {
     ConvergenceSettings settings;
-    ConvergenceStop stop = ConvergenceStop::Budget;
+    RenderStop stop = RenderStop::Budget;
     bool targetReached = false;
     std::vector<ConvergencePoint> curve;
 };

@@ -1,0 +1,21 @@
+// run_program.cpp — exceptions to exit codes, most specific first.
+#include "app/run_program.h"
+
+#include "app/scene_setup.h"
+#include "common/errors.h"
+
+namespace vkpt {
+
+int runProgram(const std::string& program, const std::function<int()>& body) {
+    try {
+        return body();
+    } catch (const InputError& error) {
+        return reportFailure(program, error, 1);
+    } catch (const DeviceError& error) {
+        return reportFailure(program, error, 2);
+    } catch (const std::exception& error) {
+        return reportFailure(program, error, 3);
+    }
+}
+
+} // namespace vkpt

@@ -1,0 +1,27 @@
+// device_stats.h — what only a render on a Vulkan device has to report (vkpt --stats): GPU time
+// per kernel and the device memory of each scene buffer. Plain figures without Vulkan, so that
+// the report (host/app) takes them as the executor (host/render) produces them.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace vkpt {
+
+// One kernel's GPU time over a whole render, summed from timestamp queries.
+struct KernelTimeTotal {
+    std::string kernel; // the dispatch label: "trace_closest", ...
+    std::uint64_t dispatches = 0;
+    std::uint64_t nanoseconds = 0;
+
+    double seconds() const { return double(nanoseconds) * 1e-9; }
+};
+
+// The device memory one of a scene's buffers holds, so that a specialised render and a
+// --general one can be compared.
+struct SceneBufferBytes {
+    std::string name;        // the buffer's debug name: "bvhNodes", ..., "absentData"
+    std::uint64_t bytes = 0; // its allocation, alignment included
+};
+
+} // namespace vkpt

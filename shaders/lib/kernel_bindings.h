@@ -1,0 +1,105 @@
+// kernel_bindings.h — the descriptor bindings of each wavefront kernel, listed once: the kernel
+// declares its storage buffers from its list (VKPT_DECLARE_BUFFERS) and host/render builds the
+// kernel's pipeline layout and descriptor set from the same list, so the two cannot drift apart
+// and a buffer added to a kernel needs no second edit on the host.
+//
+// A list is an X-macro of three entry kinds:
+//   UNIFORM(binding)                       frameParams, the uniform block of lib/frame.glsl
+//   TEXELS(binding)                        a uniform texel view of lib/records.glsl it fetches
+//   BUFFER(binding, access, Type, name)    a storage buffer `Type name[]`, access READ, WRITE
+//                                          or READ_WRITE (readonly/writeonly in GLSL)
+// lib/frame.glsl and lib/records.glsl declare the uniform block and the texel views for every
+// kernel (their functions refer to them), so in GLSL only BUFFER entries declare anything; the
+// storage buffers must come before the lib/ code that reads them, in the order listed here.
+#ifndef VKPT_KERNEL_BINDINGS_H
+#define VKPT_KERNEL_BINDINGS_H
+
+#include "lib/wavefront.h"
+
+#define GENERATE_CAMERA_RAYS_BINDINGS(UNIFORM, TEXELS, BUFFER)                                     \
+    UNIFORM(BINDING_FRAME_PARAMS)                                                                  \
+    BUFFER(BINDING_ACTIVE_PIXELS, READ, uint, activePixels)                                        \
+    BUFFER(BINDING_PATH_STATES, WRITE, PathState, pathStates)                                      \
+    BUFFER(BINDING_RAYS, WRITE, RayRecord, rays)                                                   \
+    BUFFER(BINDING_QUEUE_COUNTERS, READ_WRITE, uint, queueCounters)
+
+#define PREPARE_DISPATCHES_BINDINGS(UNIFORM, TEXELS, BUFFER)                                       \
+    UNIFORM(BINDING_FRAME_PARAMS)                                                                  \
+    BUFFER(BINDING_QUEUE_COUNTERS, READ_WRITE, uint, queueCounters)                                \
+    BUFFER(BINDING_DISPATCH_ARGS, WRITE, uint, dispatchArgs)
+
+#define TRACE_CLOSEST_BINDINGS(UNIFORM, TEXELS, BUFFER)                                            \
+    UNIFORM(BINDING_FRAME_PARAMS)                                                                  \
+    TEXELS(BINDING_BVH_NODES)                                                                      \
+    TEXELS(BINDING_TRIANGLES)                                                                      \
+    TEXELS(BINDING_MATERIALS)                                                                      \
+    TEXELS(BINDING_TEXTURES)                                                                       \
+    TEXELS(BINDING_RAY_TEXELS)                                                                     \
+    BUFFER(BINDING_TRIANGLE_UVS, READ, vec2, triangleUvs)                                          \
+    BUFFER(BINDING_TEXTURE_TEXELS, READ, uint, textureTexels)                                      \
+    BUFFER(BINDING_HITS, WRITE, HitRecord, hits)                                                   \
+    BUFFER(BINDING_QUEUE_COUNTERS, READ_WRITE, uint, queueCounters)
+
+#define SHADE_HITS_BINDINGS(UNIFORM, TEXELS, BUFFER)                                               \
+    UNIFORM(BINDING_FRAME_PARAMS)                                                                  \
+    TEXELS(BINDING_TRIANGLES)                                                                      \
+    TEXELS(BINDING_TRIANGLE_NORMALS)                                                               \
+    TEXELS(BINDING_MATERIALS)                                                                      \
+    TEXELS(BINDING_TEXTURES)                                                                       \
+    TEXELS(BINDING_EMITTERS)                                                                       \
+    TEXELS(BINDING_PATH_STATE_TEXELS)                                                              \
+    TEXELS(BINDING_RAY_TEXELS)                                                                     \
+    TEXELS(BINDING_HIT_TEXELS)                                                                     \
+    BUFFER(BINDING_TRIANGLE_UVS, READ, vec2, triangleUvs)                                          \
+    BUFFER(BINDING_TEXTURE_TEXELS, READ, uint, textureTexels)                                      \
+    BUFFER(BINDING_EMITTER_CDF, READ, float, emitterCdf)                                           \
+    BUFFER(BINDING_ENVIRONMENT_TEXELS, READ, vec4, environmentTexels)                              \
+    BUFFER(BINDING_ENVIRONMENT_CDF, READ, float, environmentCdf)                                   \
+    BUFFER(BINDING_PATH_STATES, WRITE, PathState, pathStates)                                      \
+    BUFFER(BINDING_RAYS, WRITE, RayRecord, rays)                                                   \
+    BUFFER(BINDING_SHADOW_RAYS, WRITE, ShadowRay, shadowRays)                                      \
+    BUFFER(BINDING_QUEUE_COUNTERS, READ_WRITE, uint, queueCounters)
+
+#define TRACE_SHADOW_BINDINGS(UNIFORM, TEXELS, BUFFER)                                             \
+    UNIFORM(BINDING_FRAME_PARAMS)                                                                  \
+    TEXELS(BINDING_BVH_NODES)                                                                      \
+    TEXELS(BINDING_TRIANGLES)                                                                      \
+    TEXELS(BINDING_MATERIALS)                                                                      \
+    TEXELS(BINDING_TEXTURES)                                                                       \
+    TEXELS(BINDING_SHADOW_RAY_TEXELS)                                                              \
+    BUFFER(BINDING_TRIANGLE_UVS, READ, vec2, triangleUvs)                                          \
+    BUFFER(BINDING_TEXTURE_TEXELS, READ, uint, textureTexels)                                      \
+    BUFFER(BINDING_ENVIRONMENT_TEXELS, READ, vec4, environmentTexels)                              \
+    BUFFER(BINDING_ENVIRONMENT_CDF, READ, float, environmentCdf)                                   \
+    BUFFER(BINDING_SHADOW_RAYS, WRITE, ShadowRay, shadowRays)                                      \
+    BUFFER(BINDING_QUEUE_COUNTERS, READ_WRITE, uint, queueCounters)
+
+#define ADD_LIGHT_SAMPLES_BINDINGS(UNIFORM, TEXELS, BUFFER)                                        \
+    UNIFORM(BINDING_FRAME_PARAMS)                                                                  \
+    TEXELS(BINDING_PATH_STATE_TEXELS)                                                              \
+    TEXELS(BINDING_RAY_TEXELS)                                                                     \
+    TEXELS(BINDING_SHADOW_RAY_TEXELS)                                                              \
+    BUFFER(BINDING_PATH_STATES, WRITE, PathState, pathStates)                                      \
+    BUFFER(BINDING_QUEUE_COUNTERS, READ, uint, queueCounters)
+
+#define ACCUMULATE_BINDINGS(UNIFORM, TEXELS, BUFFER)                                               \
+    UNIFORM(BINDING_FRAME_PARAMS)                                                                  \
+    TEXELS(BINDING_PATH_STATE_TEXELS)                                                              \
+    BUFFER(BINDING_PIXEL_STATES, READ_WRITE, PixelState, pixelStates)                              \
+    BUFFER(BINDING_ACTIVE_PIXELS, WRITE, uint, activePixels)                                       \
+    BUFFER(BINDING_QUEUE_COUNTERS, READ_WRITE, uint, queueCounters)
+
+#ifndef __cplusplus
+#include "lib/buffers.glsl"
+
+// The GLSL side of a list: one block per BUFFER entry, nothing for the others.
+#define VKPT_NO_DECLARATION(binding)
+#define VKPT_STORAGE_READ(binding, Type, name) VKPT_READONLY_BUFFER(binding, Type, name)
+#define VKPT_STORAGE_WRITE(binding, Type, name) VKPT_WRITEONLY_BUFFER(binding, Type, name)
+#define VKPT_STORAGE_READ_WRITE(binding, Type, name) VKPT_BUFFER(binding, Type, name)
+#define VKPT_DECLARE_STORAGE(binding, access, Type, name) VKPT_STORAGE_##access(binding, Type, name)
+#define VKPT_DECLARE_BUFFERS(LIST)                                                                 \
+    LIST(VKPT_NO_DECLARATION, VKPT_NO_DECLARATION, VKPT_DECLARE_STORAGE)
+#endif
+
+#endif // VKPT_KERNEL_BINDINGS_H

@@ -1,0 +1,57 @@
+// kernel_bindings_test.cpp — the kernels' binding lists (shaders/lib/kernel_bindings.h) as the
+// host builds pipeline layouts from them. What a list can get wrong without the kernel's
+// compiler noticing: a binding given twice, frameParams left out, or one binding seen as a
+// different kind of descriptor by two kernels, though one buffer (BufferTable) serves both.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <set>
+#include <string>
+
+#include "lib/wavefront.h"
+#include "render/wavefront_kernels.h"
+
+namespace vkpt {
+namespace {
+
+std::string nameOf(WavefrontKernel kernel) {
+    return std::string(kernelName(kernel));
+}
+
+WavefrontKernel kernelAt(std::size_t index) {
+    return static_cast<WavefrontKernel>(index);
+}
+
+TEST(KernelBindings, NoKernelListsABindingTwice) {
+    for (std::size_t i = 0; i < kWavefrontKernelCount; ++i) {
+        std::set<std::uint32_t> seen;
+        for (const KernelBinding& binding : kernelBindings(kernelAt(i)))
+            EXPECT_TRUE(seen.insert(binding.binding).second)
+                << nameOf(kernelAt(i)) << ": binding " << binding.binding;
+    }
+}
+
+TEST(KernelBindings, EveryKernelReadsFrameParamsAsAUniformBuffer) {
+    for (std::size_t i = 0; i < kWavefrontKernelCount; ++i) {
+        bool found = false;
+        for (const KernelBinding& binding : kernelBindings(kernelAt(i)))
+            if (binding.binding == BINDING_FRAME_PARAMS)
+                found = binding.kind == DescriptorKind::UniformBuffer;
+        EXPECT_TRUE(found) << nameOf(kernelAt(i));
+    }
+}
+
+TEST(KernelBindings, ABindingIsOneKindOfDescriptorInEveryKernel) {
+    std::map<std::uint32_t, DescriptorKind> kinds;
+    for (std::size_t i = 0; i < kWavefrontKernelCount; ++i) {
+        for (const KernelBinding& binding : kernelBindings(kernelAt(i))) {
+            EXPECT_LT(binding.binding, std::uint32_t(BINDING_COUNT)) << nameOf(kernelAt(i));
+            const auto [it, first] = kinds.emplace(binding.binding, binding.kind);
+            EXPECT_TRUE(first || it->second == binding.kind)
+                << nameOf(kernelAt(i)) << ": binding " << binding.binding;
+        }
+    }
+}
+
+} // namespace
+} // namespace vkpt
