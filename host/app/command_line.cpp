@@ -15,7 +15,8 @@ std::size_t arity(const OptionSpec& spec) {
     if (spec.valueNames.empty()) return 0;
     std::istringstream words(spec.valueNames);
     std::size_t count = 0;
-    for (std::string word; words >> word;) ++count;
+    for (std::string word; words >> word;)
+        ++count;
     return count;
 }
 
@@ -25,7 +26,8 @@ const OptionSpec* CommandLine::find(const std::string& argument) const {
     for (const OptionSpec& spec : options_) {
         if (argument == "--" + spec.longName) return &spec;
         for (char shortName : spec.shortNames)
-            if (argument.size() == 2 && argument[0] == '-' && argument[1] == shortName) return &spec;
+            if (argument.size() == 2 && argument[0] == '-' && argument[1] == shortName)
+                return &spec;
     }
     return nullptr;
 }
@@ -54,7 +56,8 @@ std::string CommandLine::usage(const std::string& positional) const {
     out << "usage: " << program_ << " [options] " << positional << "\n\noptions:\n";
     for (const OptionSpec& spec : options_) {
         std::string names = "  --" + spec.longName;
-        for (char shortName : spec.shortNames) names += std::string(", -") + shortName;
+        for (char shortName : spec.shortNames)
+            names += std::string(", -") + shortName;
         if (!spec.valueNames.empty()) names += " " + spec.valueNames;
         out << names;
         out << std::string(names.size() < 32 ? 32 - names.size() : 1, ' ') << spec.help << "\n";

@@ -10,7 +10,7 @@
 namespace vkpt {
 
 struct OptionSpec {
-    std::string longName;  // without the leading "--"
+    std::string longName; // without the leading "--"
     std::vector<char> shortNames;
     std::string valueNames; // e.g. "W H"; empty for a flag
     std::string help;

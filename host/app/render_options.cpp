@@ -22,47 +22,74 @@ LightSampling parseLightSampling(const std::string& text) {
 }
 
 void addImageOptions(CommandLine& cl, RenderSettings& s) {
-    cl.add({"spp", {'s'}, "N", "samples per pixel (the budget when adaptive)",
-            [&s](auto v) { s.samplesPerPixel = parseUnsigned("spp", v[0], 1); }});
+    cl.add({"spp", {'s'}, "N", "samples per pixel (the budget when adaptive)", [&s](auto v) {
+                s.samplesPerPixel = parseUnsigned("spp", v[0], 1);
+            }});
     cl.add({"res", {'r'}, "W H", "image size in pixels (default 512 512)", [&s](auto v) {
                 s.width = parseUnsigned("res", v[0], 1);
                 s.height = parseUnsigned("res", v[1], 1);
             }});
-    cl.add({"output", {'o', 'f'}, "FILE",
+    cl.add({"output",
+            {'o', 'f'},
+            "FILE",
             ".png (sRGB 8-bit), .pfm, .hdr (linear float), .exr (float, layers and state)",
             [&s](auto v) { s.outputPath = v[0]; }});
-    cl.add({"exposure", {}, "EV", "scale by 2^EV before 8-bit output (default 0)",
-            [&s](auto v) { s.exposure = parseFloat("exposure", v[0]); }});
-    cl.add({"camera", {}, "N", "render from the scene's camera N (default: the first)",
-            [&s](auto v) { s.cameraIndex = int(parseUnsigned("camera", v[0])); }});
-    cl.add({"seed", {}, "N", "random seed (same seed, same image)",
-            [&s](auto v) { s.seed = parseUnsigned("seed", v[0]); }});
+    cl.add({"exposure", {}, "EV", "scale by 2^EV before 8-bit output (default 0)", [&s](auto v) {
+                s.exposure = parseFloat("exposure", v[0]);
+            }});
+    cl.add(
+        {"camera", {}, "N", "render from the scene's camera N (default: the first)", [&s](auto v) {
+             s.cameraIndex = int(parseUnsigned("camera", v[0]));
+         }});
+    cl.add({"seed", {}, "N", "random seed (same seed, same image)", [&s](auto v) {
+                s.seed = parseUnsigned("seed", v[0]);
+            }});
 }
 
 void addIntegratorOptions(CommandLine& cl, RenderSettings& s) {
-    cl.add({"integrator", {}, "NAME", "path (default), direct or normals",
-            [&s](auto v) { s.integrator = parseIntegrator(v[0]); }});
-    cl.add({"max-depth", {'m'}, "N", "scattering events: 0 emitters only, 1 direct (default 16)",
+    cl.add({"integrator", {}, "NAME", "path (default), direct or normals", [&s](auto v) {
+                s.integrator = parseIntegrator(v[0]);
+            }});
+    cl.add({"max-depth",
+            {'m'},
+            "N",
+            "scattering events: 0 emitters only, 1 direct (default 16)",
             [&s](auto v) { s.maxDepth = parseUnsigned("max-depth", v[0]); }});
-    cl.add({"rr-depth", {}, "N", "Russian roulette from the Nth scattering event (default 3)",
+    cl.add({"rr-depth",
+            {},
+            "N",
+            "Russian roulette from the Nth scattering event (default 3)",
             [&s](auto v) { s.rrStartDepth = parseUnsigned("rr-depth", v[0], 1); }});
-    cl.add({"light-sampling", {}, "KIND", "direct integrator: light (default) or hemisphere",
+    cl.add({"light-sampling",
+            {},
+            "KIND",
+            "direct integrator: light (default) or hemisphere",
             [&s](auto v) { s.lightSampling = parseLightSampling(v[0]); }});
-    cl.add({"hemisphere", {'H'}, "", "same as --light-sampling hemisphere",
-            [&s](auto) { s.lightSampling = LightSampling::Hemisphere; }});
-    cl.add({"light-samples", {'l'}, "N", "light samples per shading point (default 1)",
-            [&s](auto v) { s.lightSamples = parseUnsigned("light-samples", v[0]); }});
-    cl.add({"direct-only", {}, "", "keep paths with at most one scattering event",
-            [&s](auto) { s.pathFilter = PathFilter::DirectOnly; }});
-    cl.add({"indirect-only", {}, "", "keep paths with two or more scattering events",
-            [&s](auto) { s.pathFilter = PathFilter::IndirectOnly; }});
+    cl.add({"hemisphere", {'H'}, "", "same as --light-sampling hemisphere", [&s](auto) {
+                s.lightSampling = LightSampling::Hemisphere;
+            }});
+    cl.add(
+        {"light-samples", {'l'}, "N", "light samples per shading point (default 1)", [&s](auto v) {
+             s.lightSamples = parseUnsigned("light-samples", v[0]);
+         }});
+    cl.add({"direct-only", {}, "", "keep paths with at most one scattering event", [&s](auto) {
+                s.pathFilter = PathFilter::DirectOnly;
+            }});
+    cl.add({"indirect-only", {}, "", "keep paths with two or more scattering events", [&s](auto) {
+                s.pathFilter = PathFilter::IndirectOnly;
+            }});
 }
 
 void addSceneOptions(CommandLine& cl, RenderSettings& s) {
-    cl.add({"env", {}, "FILE",
+    cl.add({"env",
+            {},
+            "FILE",
             "environment: an equirectangular .hdr image, +Y up (importance sampled)",
             [&s](auto v) { s.environmentPath = v[0]; }});
-    cl.add({"env-color", {}, "R G B", "environment: a constant radiance (default black)",
+    cl.add({"env-color",
+            {},
+            "R G B",
+            "environment: a constant radiance (default black)",
             [&s](auto v) {
                 for (int c = 0; c < 3; ++c) {
                     s.environmentColor[c] = parseFloat("env-color", v[std::size_t(c)]);
@@ -76,33 +103,45 @@ void addSceneOptions(CommandLine& cl, RenderSettings& s) {
                 if (!(s.environmentScale >= 0.0f))
                     throw InputError("option --env-scale: X must be >= 0");
             }});
-    cl.add({"general", {}, "",
+    cl.add({"general",
+            {},
+            "",
             "build the all-features pipelines and buffers instead of the scene's own set",
             [&s](auto) { s.general = true; }});
-    cl.add({"verbose", {'v'}, "", "print the scene's feature set and setup details",
-            [&s](auto) { s.verbose = true; }});
+    cl.add({"verbose", {'v'}, "", "print the scene's feature set and setup details", [&s](auto) {
+                s.verbose = true;
+            }});
 }
 
 void addRunOptions(CommandLine& cl, RenderSettings& s) {
-    cl.add({"adaptive", {'a'}, "BATCH TOL",
+    cl.add({"adaptive",
+            {'a'},
+            "BATCH TOL",
             "stop a pixel when 1.96 sigma/sqrt(n) <= TOL mean, tested every BATCH samples",
             [&s](auto v) {
                 s.adaptive.enabled = true;
                 s.adaptive.batchSize = parseUnsigned("adaptive", v[0], 1);
                 s.adaptive.tolerance = parseFloat("adaptive", v[1]);
             }});
-    cl.add({"adaptive-min", {}, "N", "adaptive: no pixel stops before N samples (default 64)",
+    cl.add({"adaptive-min",
+            {},
+            "N",
+            "adaptive: no pixel stops before N samples (default 64)",
             [&s](auto v) { s.adaptive.minSamples = parseUnsigned("adaptive-min", v[0], 2); }});
-    cl.add({"clamp", {}, "X",
+    cl.add({"clamp",
+            {},
+            "X",
             "scale each sample down so no component exceeds X (biased: loses energy; default off)",
             [&s](auto v) {
                 s.clamp = parseFloat("clamp", v[0]);
                 if (!(s.clamp > 0.0f)) throw InputError("option --clamp: X must be positive");
             }});
-    cl.add({"threads", {'t'}, "N", "CPU threads (default: all cores)",
-            [&s](auto v) { s.threads = parseUnsigned("threads", v[0], 1); }});
-    cl.add({"stats-json", {}, "FILE", "write the render statistics as JSON",
-            [&s](auto v) { s.statsJsonPath = v[0]; }});
+    cl.add({"threads", {'t'}, "N", "CPU threads (default: all cores)", [&s](auto v) {
+                s.threads = parseUnsigned("threads", v[0], 1);
+            }});
+    cl.add({"stats-json", {}, "FILE", "write the render statistics as JSON", [&s](auto v) {
+                s.statsJsonPath = v[0];
+            }});
     cl.add({"quiet", {'q'}, "", "no progress bar", [&s](auto) { s.quiet = true; }});
 }
 

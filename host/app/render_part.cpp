@@ -85,9 +85,9 @@ void RenderPart::checkResumable(const RenderState& resumed) {
 RenderState RenderPart::stateOf(const std::vector<PixelRecord>& records) {
     VKPT_ASSERT(setup_ != nullptr, "attachScene comes first");
     if (features_.empty())
-        features_ = renderFirstHitFeatures(setup_->prepared, StackIntersectors(setup_->prepared),
-                                           setup_->camera, settings_.seed, plan_.crop,
-                                           settings_.threads);
+        features_ =
+            renderFirstHitFeatures(setup_->prepared, StackIntersectors(setup_->prepared),
+                                   setup_->camera, settings_.seed, plan_.crop, settings_.threads);
     RenderState state;
     state.identity = identity_;
     state.origin.program = program_;

@@ -13,9 +13,12 @@ namespace {
 
 const char* integratorName(Integrator integrator) {
     switch (integrator) {
-    case Integrator::Path: return "path";
-    case Integrator::Direct: return "direct";
-    case Integrator::Normals: return "normals";
+    case Integrator::Path:
+        return "path";
+    case Integrator::Direct:
+        return "direct";
+    case Integrator::Normals:
+        return "normals";
     }
     return "?";
 }
@@ -147,11 +150,12 @@ void printRenderSummary(const RenderReport& r) {
                     st.trianglesPerRay());
     else
         std::printf("traversal work not counted\n");
-    double share = st.uniformBudget ? 100.0 * double(st.samplesTaken) / double(st.uniformBudget) : 0;
-    std::printf("  samples: %llu of a uniform budget of %llu (%.1f %%)", (unsigned long long)st.samplesTaken,
-                (unsigned long long)st.uniformBudget, share);
-    if (st.nonFiniteSamples) std::printf("; %llu non-finite samples discarded",
-                                         (unsigned long long)st.nonFiniteSamples);
+    double share =
+        st.uniformBudget ? 100.0 * double(st.samplesTaken) / double(st.uniformBudget) : 0;
+    std::printf("  samples: %llu of a uniform budget of %llu (%.1f %%)",
+                (unsigned long long)st.samplesTaken, (unsigned long long)st.uniformBudget, share);
+    if (st.nonFiniteSamples)
+        std::printf("; %llu non-finite samples discarded", (unsigned long long)st.nonFiniteSamples);
     std::printf("\n");
     if (r.deviceRun) printDeviceRun(r, *r.deviceRun);
     if (r.convergence) printConvergenceSummary(*r.convergence);

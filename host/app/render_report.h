@@ -30,18 +30,18 @@ struct DeviceRunReport {
 };
 
 struct RenderReport {
-    std::string program;      // "vkpt-ref" or "vkpt"
-    std::string device;       // "CPU, 2 threads" or the Vulkan device name
+    std::string program; // "vkpt-ref" or "vkpt"
+    std::string device;  // "CPU, 2 threads" or the Vulkan device name
     const RenderSettings* settings = nullptr;
     BvhStats bvh;
     std::size_t triangles = 0;
     std::size_t emitters = 0;
-    SceneFeatures features;      // what the scene uses
+    SceneFeatures features;        // what the scene uses
     bool generalPipelines = false; // --general: built for every feature instead
     RenderStats stats;
     double loadSeconds = 0.0;
-    std::uint64_t deviceMemoryBytes = 0; // peak device memory held; 0 on the CPU
-    std::optional<DeviceRunReport> deviceRun; // vkpt only
+    std::uint64_t deviceMemoryBytes = 0;          // peak device memory held; 0 on the CPU
+    std::optional<DeviceRunReport> deviceRun;     // vkpt only
     std::optional<ConvergenceReport> convergence; // --reference, --target-error, --time-limit
 };
 

@@ -4,8 +4,8 @@
 #include <chrono>
 #include <cstdio>
 
-#include "scene/camera.h"
 #include "prepare/environment_map.h"
+#include "scene/camera.h"
 #include "scene/gltf_loader.h"
 
 namespace vkpt {
@@ -17,8 +17,7 @@ SceneEnvironment loadEnvironment(const RenderSettings& settings) {
         return readEnvironmentMap(settings.environmentPath, glm::vec3(settings.environmentScale));
     SceneEnvironment environment;
     if (settings.environmentColorSet)
-        environment.radiance = glm::vec3(settings.environmentColor[0],
-                                         settings.environmentColor[1],
+        environment.radiance = glm::vec3(settings.environmentColor[0], settings.environmentColor[1],
                                          settings.environmentColor[2]);
     return environment;
 }
@@ -41,8 +40,8 @@ SceneSetup setUpScene(const RenderSettings& settings, const std::string& program
                  "%s: %s: %zu triangles, %zu spheres, %zu emitters; BVH %u nodes, depth %u, "
                  "SAH cost %.2f, built in %.3f s\n",
                  program.c_str(), settings.scenePath.c_str(), scene.triangleCount(),
-                 scene.spheres.size(), setup.prepared.emitters.size(), bvh.nodeCount, bvh.maxDepth, double(bvh.sahCost),
-                 bvh.buildSeconds);
+                 scene.spheres.size(), setup.prepared.emitters.size(), bvh.nodeCount, bvh.maxDepth,
+                 double(bvh.sahCost), bvh.buildSeconds);
     if (settings.verbose)
         std::fprintf(stderr, "%s: features: %s%s\n", program.c_str(),
                      describeFeatures(setup.prepared.usedFeatures).c_str(),

@@ -53,10 +53,10 @@ struct Walk {
         ++primitiveTests;
         const gpu::Triangle& tri = triangles[index];
         const float tMax = best.hit ? gpu::nextFloatUp(best.t) : best.t;
-        gpu::TriangleHit h = gpu::isSpherePrimitive(tri)
-                                 ? gpu::intersectSphere(ray.origin, ray.direction, tri.v0, tri.v1.x,
-                                                        ray.tMin, tMax)
-                                 : triangleTest.intersect(tri.v0, tri.v1, tri.v2, ray.tMin, tMax);
+        gpu::TriangleHit h =
+            gpu::isSpherePrimitive(tri)
+                ? gpu::intersectSphere(ray.origin, ray.direction, tri.v0, tri.v1.x, ray.tMin, tMax)
+                : triangleTest.intersect(tri.v0, tri.v1, tri.v2, ray.tMin, tMax);
         if (!h.hit) return false;
         if (!gpu::crossingPrecedes(h.t, index, best.t, best.hit ? best.triangle : NO_PRIMITIVE))
             return false;

@@ -22,8 +22,7 @@ std::vector<std::uint32_t> subtreeHeights(const BvhTree& tree) {
     std::vector<std::uint32_t> heights(tree.nodes.size(), 0);
     for (std::size_t i = tree.nodes.size(); i-- > 0;) {
         const BvhBuildNode& n = tree.nodes[i];
-        if (!n.isLeaf())
-            heights[i] = 1 + std::max(heights[n.leftChild], heights[n.rightChild]);
+        if (!n.isLeaf()) heights[i] = 1 + std::max(heights[n.leftChild], heights[n.rightChild]);
     }
     return heights;
 }

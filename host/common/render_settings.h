@@ -13,9 +13,9 @@ enum class PathFilter : std::uint32_t { All = 0, DirectOnly = 1, IndirectOnly = 
 
 struct AdaptiveSettings {
     bool enabled = false;
-    std::uint32_t batchSize = 32;   // test convergence every batchSize samples (CS184's default)
-    float tolerance = 0.05f;        // relative half-width of the 95 % interval
-    std::uint32_t minSamples = 64;  // no pixel stops before this many samples
+    std::uint32_t batchSize = 32;  // test convergence every batchSize samples (CS184's default)
+    float tolerance = 0.05f;       // relative half-width of the 95 % interval
+    std::uint32_t minSamples = 64; // no pixel stops before this many samples
 };
 
 struct RenderSettings {
@@ -24,16 +24,16 @@ struct RenderSettings {
     std::uint32_t width = 512;
     std::uint32_t height = 512;
     std::uint32_t samplesPerPixel = 16;
-    std::uint32_t maxDepth = 16;        // scattering events: 0 = emitters only, 1 = direct
-    std::uint32_t rrStartDepth = 3;     // Russian roulette from this scattering event on
+    std::uint32_t maxDepth = 16;    // scattering events: 0 = emitters only, 1 = direct
+    std::uint32_t rrStartDepth = 3; // Russian roulette from this scattering event on
     std::uint32_t seed = 0;
-    std::uint32_t threads = 0;          // 0 = all cores
+    std::uint32_t threads = 0; // 0 = all cores
     Integrator integrator = Integrator::Path;
     LightSampling lightSampling = LightSampling::Light;
     std::uint32_t lightSamples = 1;
     PathFilter pathFilter = PathFilter::All;
     AdaptiveSettings adaptive;
-    float exposure = 0.0f;              // EV applied to 8-bit output only
+    float exposure = 0.0f; // EV applied to 8-bit output only
     // --clamp X: a sample's largest component is limited to X (biased; 0 = off, the default).
     float clamp = 0.0f;
     std::optional<int> cameraIndex;
@@ -46,7 +46,7 @@ struct RenderSettings {
     bool general = false; // --general: the all-features pipelines and buffers
     bool verbose = false; // --verbose: the scene's feature set and more on stderr
     std::string statsJsonPath;
-    bool quiet = false;                 // no progress bar
+    bool quiet = false; // no progress bar
 };
 
 } // namespace vkpt

@@ -26,14 +26,18 @@ struct RenderStats {
     // while other processes hold the cores, so it compares renders on a shared machine.
     double cpuSeconds = 0.0;
     RayCounts rays;
-    std::uint64_t nodesVisited = 0;  // BVH nodes whose box was tested
+    std::uint64_t nodesVisited = 0; // BVH nodes whose box was tested
     std::uint64_t triangleTests = 0;
     std::uint64_t samplesTaken = 0;
-    std::uint64_t uniformBudget = 0; // pixels × spp: what uniform sampling would have taken
+    std::uint64_t uniformBudget = 0;    // pixels × spp: what uniform sampling would have taken
     std::uint64_t nonFiniteSamples = 0; // discarded, never accumulated
 
-    double megaRaysPerSecond() const { return seconds > 0.0 ? double(rays.total()) / seconds * 1e-6 : 0.0; }
-    double nodesPerRay() const { return rays.total() ? double(nodesVisited) / double(rays.total()) : 0.0; }
+    double megaRaysPerSecond() const {
+        return seconds > 0.0 ? double(rays.total()) / seconds * 1e-6 : 0.0;
+    }
+    double nodesPerRay() const {
+        return rays.total() ? double(nodesVisited) / double(rays.total()) : 0.0;
+    }
     double trianglesPerRay() const {
         return rays.total() ? double(triangleTests) / double(rays.total()) : 0.0;
     }

@@ -31,7 +31,7 @@ struct DeviceLimits {
     std::uint32_t maxPerStageDescriptorStorageBuffers = 0;
     VkDeviceSize maxUniformBufferRange = 0;
     std::uint32_t maxPerStageDescriptorUniformBuffers = 0;
-    std::uint32_t maxTexelBufferElements = 0;            // elements one texel view may see
+    std::uint32_t maxTexelBufferElements = 0;             // elements one texel view may see
     std::uint32_t maxPerStageDescriptorSampledImages = 0; // uniform texel buffers count here
     std::uint32_t maxComputeWorkGroupInvocations = 0;
     std::array<std::uint32_t, 3> maxComputeWorkGroupCount{};

@@ -54,8 +54,7 @@ VkBufferUsageFlags usageFor(DescriptorKind kind) {
 } // namespace
 
 DescriptorSet::DescriptorSet(const Kernel& kernel, const std::vector<BufferBinding>& bindings)
-    : context_(&kernel.context()), kernelName_(kernel.name()),
-      kernelBindings_(kernel.bindings()) {
+    : context_(&kernel.context()), kernelName_(kernel.name()), kernelBindings_(kernel.bindings()) {
     checkBindings(bindings);
     pool_ = createPool(*context_, kernelBindings_);
     context_->setDebugName(pool_, kernel.name() + ".pool");
@@ -98,9 +97,10 @@ void DescriptorSet::checkBindings(const std::vector<BufferBinding>& bindings) co
                 "kernel '" + kernelName_ + "' has " + std::to_string(kernelBindings_.size()) +
                     " bindings, " + std::to_string(bindings.size()) + " given");
     for (const BufferBinding& binding : bindings) {
-        const auto named = std::count_if(
-            bindings.begin(), bindings.end(),
-            [&binding](const BufferBinding& other) { return other.binding == binding.binding; });
+        const auto named =
+            std::count_if(bindings.begin(), bindings.end(), [&binding](const BufferBinding& other) {
+                return other.binding == binding.binding;
+            });
         VKPT_ASSERT(named == 1, "kernel '" + kernelName_ + "': binding " +
                                     std::to_string(binding.binding) + " given more than once");
         const DescriptorKind kind = kindOf(binding.binding);

@@ -45,7 +45,7 @@ private:
     DescriptorKind kindOf(std::uint32_t binding) const;
 
     const GpuContext* context_;
-    std::string kernelName_;                   // for messages
+    std::string kernelName_;                    // for messages
     std::vector<KernelBinding> kernelBindings_; // what update() must be given
     VkDescriptorPool pool_ = VK_NULL_HANDLE;
     VkDescriptorSet set_ = VK_NULL_HANDLE;

@@ -45,9 +45,9 @@ void readDriverProperties(VkPhysicalDevice device, DeviceInfo& info) {
 
 // The subgroup operations every kernel uses to count and append once per subgroup
 // (shaders/lib/counters.glsl); Vulkan 1.1 guarantees only the basic ones.
-constexpr VkSubgroupFeatureFlags kRequiredSubgroupOperations =
-    VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_BALLOT_BIT |
-    VK_SUBGROUP_FEATURE_ARITHMETIC_BIT;
+constexpr VkSubgroupFeatureFlags kRequiredSubgroupOperations = VK_SUBGROUP_FEATURE_BASIC_BIT |
+                                                               VK_SUBGROUP_FEATURE_BALLOT_BIT |
+                                                               VK_SUBGROUP_FEATURE_ARITHMETIC_BIT;
 
 bool hasComputeSubgroupOperations(VkPhysicalDevice device) {
     VkPhysicalDeviceSubgroupProperties subgroup{};

@@ -96,9 +96,9 @@ void Kernel::checkLimits() const {
 
 void Kernel::checkDescriptorCount(DescriptorKind kind, const char* what, const char* limitName,
                                   std::uint32_t limit) const {
-    const auto count = static_cast<std::uint32_t>(std::count_if(
-        desc_.bindings.begin(), desc_.bindings.end(),
-        [kind](const KernelBinding& binding) { return binding.kind == kind; }));
+    const auto count = static_cast<std::uint32_t>(
+        std::count_if(desc_.bindings.begin(), desc_.bindings.end(),
+                      [kind](const KernelBinding& binding) { return binding.kind == kind; }));
     if (count <= limit) return;
     throw VulkanError("kernel '" + desc_.name + "' binds " + std::to_string(count) + " " + what +
                           "; this device's " + limitName + " is " + std::to_string(limit),

@@ -44,7 +44,7 @@ struct KernelDesc {
     std::string name;                     // "trace_closest", the .comp file's stem
     std::span<const std::uint32_t> spirv; // from the embedded kernel library
     std::vector<KernelBinding> bindings;
-    std::uint32_t pushConstantSize = 0;               // bytes, a multiple of 4; 0 for none
+    std::uint32_t pushConstantSize = 0; // bytes, a multiple of 4; 0 for none
     std::vector<SpecializationConstant> specializationConstants;
 };
 

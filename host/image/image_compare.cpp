@@ -153,8 +153,8 @@ std::string failureSummary(const ZTestTally& tally, const ZTestResult& r, std::u
         clauses.push_back(countOf(tally.differs, pixels, "differs", "differ") +
                           " at per-pixel p < " + formatted("%.3g", r.alphaPerPixel) +
                           " (Welch t; |z| > " + formatted("%.3g", r.criticalZ) +
-                          " for many samples; family alpha " +
-                          formatted("%g", r.alphaFamily) + "); " + worstZText(tally));
+                          " for many samples; family alpha " + formatted("%g", r.alphaFamily) +
+                          "); " + worstZText(tally));
     if (const Tally& t = tally.zeroVarianceMismatch; t.count > 0)
         clauses.push_back(countOf(t, pixels, "has", "have") +
                           " zero variance in both images but different means (first at " +
@@ -177,8 +177,7 @@ std::string failureSummary(const ZTestTally& tally, const ZTestResult& r, std::u
 std::string passSummary(const ZTestTally& tally, const ZTestResult& r, std::uint64_t pixels) {
     return "z-test passed: " + std::to_string(pixels) +
            " pixels, per-pixel p >= " + formatted("%.3g", r.alphaPerPixel) +
-           " (Welch t; family alpha " +
-           formatted("%g", r.alphaFamily) + "), " + worstZText(tally);
+           " (Welch t; family alpha " + formatted("%g", r.alphaFamily) + "), " + worstZText(tally);
 }
 
 ZTestTally tallyPixels(const RenderOutput& a, const RenderOutput& b, double alphaPerPixel) {

@@ -10,7 +10,7 @@
 namespace vkpt {
 
 struct RenderOutput {
-    Image image;                            // mean radiance per pixel
+    Image image;                             // mean radiance per pixel
     std::vector<std::uint32_t> sampleCounts; // samples taken per pixel
     std::vector<float> luminanceMean;        // Welford running mean of per-sample luminance
     std::vector<float> luminanceM2;          // Welford sum of squared deviations

@@ -16,9 +16,9 @@
 namespace vkpt {
 
 struct PreparedScene {
-    BvhTree tree;        // for the reference's stack traversal
-    BvhStats bvhStats;   // with the build time
-    std::vector<gpu::WideBvhNode> nodes; // the device's 8-wide nodes (flattenWideBvh)
+    BvhTree tree;                         // for the reference's stack traversal
+    BvhStats bvhStats;                    // with the build time
+    std::vector<gpu::WideBvhNode> nodes;  // the device's 8-wide nodes (flattenWideBvh)
     std::vector<gpu::Triangle> triangles; // triangles and spheres (PRIMITIVE_SPHERE)
     std::vector<gpu::TriangleNormals> normals;
     std::vector<glm::vec2> uvs; // 3 per primitive; empty unless features.textureCoordinates()
@@ -27,7 +27,7 @@ struct PreparedScene {
     std::vector<std::uint32_t> texels; // every texture's RGBA8 texels, see gpu::TextureInfo
     std::vector<gpu::Emitter> emitters;
     std::vector<float> emitterCdf; // inclusive selection CDF; empty unless features.emitterCdf()
-    gpu::EnvironmentParams environment{};  // emitterIndex NO_EMITTER without an environment
+    gpu::EnvironmentParams environment{};     // emitterIndex NO_EMITTER without an environment
     std::vector<glm::vec4> environmentTexels; // the map's RGB (w unused), row 0 at the top
     std::vector<float> environmentCdf; // height rows of width conditional entries, then marginal
     SceneFeatures features;            // what the scene uses (all of it for a general layout)

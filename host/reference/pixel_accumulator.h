@@ -26,7 +26,9 @@ struct PixelAccumulator {
         luminanceM2 = std::max(luminanceM2 + delta * (double(luminance) - luminanceMean), 0.0);
     }
 
-    glm::vec3 mean() const { return count ? glm::vec3(radianceSum / double(count)) : glm::vec3(0.0f); }
+    glm::vec3 mean() const {
+        return count ? glm::vec3(radianceSum / double(count)) : glm::vec3(0.0f);
+    }
 };
 
 } // namespace vkpt

@@ -109,7 +109,8 @@ void renderTile(RenderJob& job, IntegratorContext& context, std::uint32_t tile,
     std::uint32_t y1 = std::min(y0 + kTileSize, crop.y1);
     const std::uint64_t before = counters.samples;
     for (std::uint32_t y = y0; y < y1; ++y)
-        for (std::uint32_t x = x0; x < x1; ++x) renderPixel(job, context, x, y, counters);
+        for (std::uint32_t x = x0; x < x1; ++x)
+            renderPixel(job, context, x, y, counters);
     job.progress.advance(counters.samples - before);
 }
 
@@ -144,8 +145,10 @@ void runRound(RenderJob& job) {
     job.nextTile = 0;
     std::vector<std::thread> workers;
     std::uint32_t count = std::min(threadCount(job.settings), job.tiles.count());
-    for (std::uint32_t i = 0; i < count; ++i) workers.emplace_back(renderWorker, std::ref(job));
-    for (std::thread& worker : workers) worker.join();
+    for (std::uint32_t i = 0; i < count; ++i)
+        workers.emplace_back(renderWorker, std::ref(job));
+    for (std::thread& worker : workers)
+        worker.join();
 }
 
 // --- records --------------------------------------------------------------------------------
@@ -176,7 +179,8 @@ PixelRecord recordFromWork(const PixelWork& w) {
 std::vector<PixelRecord> recordsOf(const std::vector<PixelWork>& pixels) {
     std::vector<PixelRecord> records;
     records.reserve(pixels.size());
-    for (const PixelWork& w : pixels) records.push_back(recordFromWork(w));
+    for (const PixelWork& w : pixels)
+        records.push_back(recordFromWork(w));
     return records;
 }
 
@@ -185,7 +189,8 @@ std::vector<PixelWork> initialWork(const SamplePlan& plan, const ReferenceOption
     VKPT_ASSERT(options.resume->size() == plan.crop.area(), "resume records cover the crop");
     std::vector<PixelWork> pixels;
     pixels.reserve(options.resume->size());
-    for (const PixelRecord& r : *options.resume) pixels.push_back(workFromRecord(r));
+    for (const PixelRecord& r : *options.resume)
+        pixels.push_back(workFromRecord(r));
     return pixels;
 }
 
@@ -227,11 +232,10 @@ private:
     }
 
     std::uint64_t activePixels() const {
-        return std::uint64_t(std::count_if(job_.pixels.begin(), job_.pixels.end(),
-                                           [&](const PixelWork& w) {
-                                               return !w.converged &&
-                                                      w.taken < job_.plan.range.size();
-                                           }));
+        return std::uint64_t(
+            std::count_if(job_.pixels.begin(), job_.pixels.end(), [&](const PixelWork& w) {
+                return !w.converged && w.taken < job_.plan.range.size();
+            }));
     }
 
     // The first round takes one sample per pixel to measure the rate; later ones what fits in
@@ -276,7 +280,9 @@ RenderOutput outputOf(const gpu::Camera& camera, const PixelRect& crop,
 
 } // namespace
 
-float adaptiveDarkFloor(float exposure) { return ADAPTIVE_DARK_FLOOR * std::exp2(-exposure); }
+float adaptiveDarkFloor(float exposure) {
+    return ADAPTIVE_DARK_FLOOR * std::exp2(-exposure);
+}
 
 ReferenceResult renderReferenceParts(const PreparedScene& scene, const gpu::Camera& camera,
                                      const RenderSettings& settings, RenderStats& stats,
@@ -296,8 +302,10 @@ ReferenceResult renderReferenceParts(const PreparedScene& scene, const gpu::Came
         makeProgressBar("vkpt-ref", stats.uniformBudget, settings.quiet);
     TileGrid tiles{(plan.crop.width() + kTileSize - 1) / kTileSize,
                    (plan.crop.height() + kTileSize - 1) / kTileSize};
-    RenderJob job{scene, camera, settings, intersectors, plan, pixels, *progress,
-                  adaptiveDarkFloor(settings.exposure), tiles, 0, {}, {}, stats};
+    RenderJob job{scene, camera, settings,  intersectors,
+                  plan,  pixels, *progress, adaptiveDarkFloor(settings.exposure),
+                  tiles, 0,      {},        {},
+                  stats};
     RoundLoop rounds(job, options);
     ReferenceResult result;
     result.interrupted = rounds.run();

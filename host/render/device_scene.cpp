@@ -24,11 +24,11 @@ std::optional<Buffer> uploadArray(GpuContext& context, std::string name,
 }
 
 Buffer makeAbsentData(GpuContext& context) {
-    Buffer buffer(context, {"absentData", kAbsentDataBytes,
-                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
-                                VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT |
-                                VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                            MemoryLocation::DeviceLocal});
+    Buffer buffer(context,
+                  {"absentData", kAbsentDataBytes,
+                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT |
+                       VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                   MemoryLocation::DeviceLocal});
     fillBuffer(context, buffer, 0); // defined contents, though nothing reads them
     return buffer;
 }

@@ -104,7 +104,7 @@ BufferTable makeBufferTable(const DeviceScene& scene, const WorkBuffers& work) {
 }
 
 SamplePlan samplePlanFor(const gpu::Camera& camera, const RenderSettings& settings,
-                        const WavefrontOptions& options) {
+                         const WavefrontOptions& options) {
     return options.plan.value_or(
         SamplePlan{fullFrame(camera.width, camera.height), {0, settings.samplesPerPixel}});
 }
@@ -147,8 +147,8 @@ public:
         : context_(context), settings_(settings), camera_(camera), options_(options),
           plan_(samplePlanFor(camera, settings, options)), budget_(plan_.range.size()),
           pixelCount_(camera.width * camera.height), scene_(uploadScene(context, scene)),
-          buffers_(context, slotCountFor(context, settings, plan_, options),
-                   settings.lightSamples, pixelCount_),
+          buffers_(context, slotCountFor(context, settings, plan_, options), settings.lightSamples,
+                   pixelCount_),
           table_(makeBufferTable(scene_, buffers_)),
           pipelines_(context, table_, kernelFeaturesFor(scene, options)),
           timer_(makeTimer(context, options)),
@@ -255,7 +255,8 @@ void WavefrontRenderer::uploadActiveList() {
         }
     samplesDone_ = taken.value_or(budget_);
     activePixels_ = std::uint32_t(active.size());
-    if (!active.empty()) upload(context_, buffers_.activePixels, std::span<const std::uint32_t>(active));
+    if (!active.empty())
+        upload(context_, buffers_.activePixels, std::span<const std::uint32_t>(active));
     activeParity_ = 0;
     useActiveList_ = true;
 }
@@ -300,7 +301,7 @@ void WavefrontRenderer::runChunk(const gpu::PassParams& params, bool firstChunk)
 ScheduleInputs WavefrontRenderer::schedule() const {
     const AdaptiveSettings& adaptive = settings_.adaptive;
     return {budget_,          samplesDone_,       activePixels_,      buffers_.slotCount,
-            adaptive.enabled,          adaptive.batchSize, adaptive.minSamples};
+            adaptive.enabled, adaptive.batchSize, adaptive.minSamples};
 }
 
 gpu::PassParams WavefrontRenderer::chunkParams(std::uint32_t samplesPerPass, std::uint32_t start,
@@ -416,7 +417,7 @@ RenderStop WavefrontRenderer::runPasses() {
         if (observe()) return RenderStop::TargetError;
         if (!more)
             return activePixels_ == 0 && samplesDone_ < budget_ ? RenderStop::Converged
-                                                                 : RenderStop::Budget;
+                                                                : RenderStop::Budget;
         if (options_.interrupt && options_.interrupt->load()) return RenderStop::Interrupted;
         checkpointIfDue();
         if (options_.timeLimitSeconds > 0.0 && elapsed() >= options_.timeLimitSeconds)

@@ -58,9 +58,8 @@ std::uint32_t chooseSlotCount(const GpuContext& context, const SlotRequest& requ
 
 WorkBuffers::WorkBuffers(GpuContext& context, std::uint32_t slots, std::uint32_t lightSamples,
                          std::uint32_t pixelCount)
-    : slotCount(slots),
-      frameParams(makeWorkBuffer(context, "frameParams", sizeof(gpu::FrameParams),
-                                 VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT)),
+    : slotCount(slots), frameParams(makeWorkBuffer(context, "frameParams", sizeof(gpu::FrameParams),
+                                                   VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT)),
       pathStates(
           makeWorkBuffer(context, "pathStates", std::uint64_t(slots) * sizeof(gpu::PathState))),
       rays(makeWorkBuffer(context, "rays", 2 * std::uint64_t(slots) * sizeof(gpu::RayRecord))),

@@ -16,7 +16,7 @@ enum class AlphaMode : std::uint32_t { Opaque = 0, Mask = 1, Blend = 2 };
 // A material's use of a texture: Scene::textures[texture] read at TEXCOORD_0 moved by the
 // KHR_texture_transform matrix (identity when absent).
 struct TextureReference {
-    int texture = -1; // -1: none
+    int texture = -1;          // -1: none
     glm::mat3 transform{1.0f}; // uv' = (transform · (u, v, 1)).xy
 };
 
@@ -29,8 +29,8 @@ struct SceneMaterial {
     bool doubleSided = false;
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
-    float specular = 1.0f;           // KHR_materials_specular specularFactor
-    glm::vec3 specularColor{1.0f};   // KHR_materials_specular specularColorFactor
+    float specular = 1.0f;                     // KHR_materials_specular specularFactor
+    glm::vec3 specularColor{1.0f};             // KHR_materials_specular specularColorFactor
     TextureReference baseColorTexture;         // sRGB-encoded RGBA
     TextureReference metallicRoughnessTexture; // linear: G roughness, B metallic
     TextureReference emissiveTexture;          // sRGB-encoded RGB
@@ -74,10 +74,10 @@ struct SceneLight {
     LightKind kind = LightKind::Point;
     glm::vec3 position{0.0f};
     glm::vec3 direction{0.0f, 0.0f, -1.0f}; // unit, the way the light travels (node's -Z)
-    glm::vec3 intensity{1.0f}; // colour × intensity: candela (point, spot) or lux (directional)
-    float range = 0.0f;        // 0: unlimited
-    float innerConeAngle = 0.0f;           // radians, spot lights
-    float outerConeAngle = 0.78539816f;    // π/4, the extension's default
+    glm::vec3 intensity{1.0f};   // colour × intensity: candela (point, spot) or lux (directional)
+    float range = 0.0f;          // 0: unlimited
+    float innerConeAngle = 0.0f; // radians, spot lights
+    float outerConeAngle = 0.78539816f; // π/4, the extension's default
 };
 
 // What rays that leave the scene see: set from the command line (--env, --env-color), not

@@ -28,8 +28,8 @@ struct SceneFeatures {
     bool pointLights = false;
     bool spotLights = false;
     bool directionalLights = false;
-    bool environment = false;    // a constant colour or a map
-    bool environmentMap = false; // --env image.hdr
+    bool environment = false;       // a constant colour or a map
+    bool environmentMap = false;    // --env image.hdr
     std::uint32_t emitterCount = 0; // everything light sampling chooses from
     bool general = false; // --general: all switches on, and the CDF read even for one emitter
 

@@ -21,8 +21,8 @@ namespace vkpt::gpu {
 // (scene arrays, and the work arrays where a kernel only reads them) are uniform texel buffers
 // fetched as 16-byte texels (lib/records.glsl); the rest are storage buffers
 // (lib/kernel_bindings.h lists each kernel's; docs/gpu.md).
-#define BINDING_FRAME_PARAMS 0     // uniform buffer
-#define BINDING_BVH_NODES 1        // uniform texel buffer, as all scene records up to 5
+#define BINDING_FRAME_PARAMS 0 // uniform buffer
+#define BINDING_BVH_NODES 1    // uniform texel buffer, as all scene records up to 5
 #define BINDING_TRIANGLES 2
 #define BINDING_TRIANGLE_NORMALS 3
 #define BINDING_MATERIALS 4

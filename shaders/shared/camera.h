@@ -11,8 +11,8 @@ namespace vkpt::gpu {
 // filmPosition is in pixels from the top-left corner: (x + u, y + v) with u, v in [0, 1) is a
 // one-pixel box filter. Returns a unit direction.
 VKPT_FN vec3 cameraRayDirection(Camera camera, vec2 filmPosition) {
-    float sx = (2.0f * filmPosition.x / float(camera.width) - 1.0f) * camera.tanHalfFovY *
-               camera.aspect;
+    float sx =
+        (2.0f * filmPosition.x / float(camera.width) - 1.0f) * camera.tanHalfFovY * camera.aspect;
     float sy = (1.0f - 2.0f * filmPosition.y / float(camera.height)) * camera.tanHalfFovY;
     return normalize(camera.forward + sx * camera.right + sy * camera.up);
 }

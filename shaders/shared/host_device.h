@@ -13,8 +13,8 @@
 namespace vkpt::gpu {
 // The GLSL built-ins that shared code uses, so one spelling compiles on both sides.
 using glm::abs;
-using glm::bitCount;
 using glm::atan; // atan(y, x) is GLSL's two-argument arctangent
+using glm::bitCount;
 using glm::clamp;
 using glm::cross;
 using glm::dot;
@@ -22,11 +22,13 @@ using glm::findLSB;
 using glm::floatBitsToInt;
 using glm::floatBitsToUint;
 using glm::floor;
-using glm::greaterThan;
 using glm::fract;
+using glm::greaterThan;
 using glm::intBitsToFloat;
 using glm::isinf;
 using glm::isnan;
+using glm::ivec2;
+using glm::ivec3;
 using glm::length;
 using glm::lessThan;
 using glm::max;
@@ -35,17 +37,15 @@ using glm::mix;
 using glm::normalize;
 using glm::pow;
 using glm::uintBitsToFloat;
-using std::cos;
-using std::sin;
-using std::sqrt;
-using glm::ivec2;
-using glm::ivec3;
 using glm::uvec2;
 using glm::uvec3;
 using glm::uvec4;
 using glm::vec2;
 using glm::vec3;
 using glm::vec4;
+using std::cos;
+using std::sin;
+using std::sqrt;
 using uint = std::uint32_t;
 // Shared functions are header-only on the C++ side.
 #define VKPT_FN inline
@@ -170,10 +170,10 @@ struct Material {
     float metallic;
     float roughness; // perceptual; the GGX α is roughness²
     float alphaCutoff;
-    uint alphaMode;     // ALPHA_MODE_*
-    vec3 specularColor; // KHR_materials_specular specularColorFactor (1 when absent)
-    float specular;     // KHR_materials_specular specularFactor (1 when absent)
-    TextureSlot baseColorTexture;         // sRGB; alpha in .a
+    uint alphaMode;               // ALPHA_MODE_*
+    vec3 specularColor;           // KHR_materials_specular specularColorFactor (1 when absent)
+    float specular;               // KHR_materials_specular specularFactor (1 when absent)
+    TextureSlot baseColorTexture; // sRGB; alpha in .a
     TextureSlot metallicRoughnessTexture; // linear; roughness in .g, metallic in .b
     TextureSlot emissiveTexture;          // sRGB
 };
@@ -208,8 +208,8 @@ struct TextureInfo {
 #define EMITTER_ENVIRONMENT 5u
 
 struct Emitter {
-    vec3 position; // point and spot lights
-    uint kind;     // EMITTER_*
+    vec3 position;  // point and spot lights
+    uint kind;      // EMITTER_*
     vec3 direction; // spot and directional lights: unit, the way the light travels
     uint primitive; // triangle and sphere emitters: BVH-ordered index into triangles
     vec3 intensity; // point and spot: candela × colour; directional: lux × colour
@@ -283,9 +283,9 @@ static_assert(sizeof(Emitter) == 64 && offsetof(Emitter, direction) == 16 &&
               offsetof(Emitter, cosOuterCone) == 60);
 static_assert(sizeof(EnvironmentParams) == 32 && offsetof(EnvironmentParams, width) == 12 &&
               offsetof(EnvironmentParams, emitterIndex) == 20);
-static_assert(sizeof(Camera) == 64 && offsetof(Camera, right) == 16 &&
-              offsetof(Camera, up) == 32 && offsetof(Camera, width) == 44 &&
-              offsetof(Camera, forward) == 48 && offsetof(Camera, height) == 60);
+static_assert(sizeof(Camera) == 64 && offsetof(Camera, right) == 16 && offsetof(Camera, up) == 32 &&
+              offsetof(Camera, width) == 44 && offsetof(Camera, forward) == 48 &&
+              offsetof(Camera, height) == 60);
 } // namespace vkpt::gpu
 #endif
 

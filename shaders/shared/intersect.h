@@ -185,7 +185,9 @@ VKPT_FN TriangleHit intersectTriangle(vec3 origin, vec3 direction, vec3 v0, vec3
 
 // Unnormalised geometric normal; it points to the front side, from which v0, v1, v2 run
 // counter-clockwise.
-VKPT_FN vec3 triangleFaceNormal(vec3 v0, vec3 v1, vec3 v2) { return cross(v1 - v0, v2 - v0); }
+VKPT_FN vec3 triangleFaceNormal(vec3 v0, vec3 v1, vec3 v2) {
+    return cross(v1 - v0, v2 - v0);
+}
 
 // The largest component magnitude of v.
 VKPT_FN float largestMagnitude(vec3 v) {

@@ -11,9 +11,9 @@ namespace vkpt::gpu {
 #endif
 
 // Dimensions: each names one hash evaluation, which yields four independent 32-bit words.
-#define DIM_CAMERA 0u       // .xy: jitter inside the pixel
-#define DIM_BSDF 1u         // .xy: scattered direction, .z: Russian roulette
-#define DIM_LIGHT_FIRST 2u  // DIM_LIGHT_FIRST + i for light sample i: .x emitter, .yz point
+#define DIM_CAMERA 0u      // .xy: jitter inside the pixel
+#define DIM_BSDF 1u        // .xy: scattered direction, .z: Russian roulette
+#define DIM_LIGHT_FIRST 2u // DIM_LIGHT_FIRST + i for light sample i: .x emitter, .yz point
 #define RNG_MAX_DIMENSION 255u
 #define RNG_MAX_LIGHT_SAMPLES (RNG_MAX_DIMENSION - DIM_LIGHT_FIRST + 1u)
 
@@ -39,7 +39,9 @@ VKPT_FN uvec4 randomBits(uint seed, uint pixel, uint sampleIndex, uint bounce, u
 }
 
 // The top 24 bits give every float in [0, 1) with spacing 2^-24; never returns 1.
-VKPT_FN float bitsToUnitFloat(uint bits) { return float(bits >> 8u) * (1.0f / 16777216.0f); }
+VKPT_FN float bitsToUnitFloat(uint bits) {
+    return float(bits >> 8u) * (1.0f / 16777216.0f);
+}
 
 VKPT_FN vec4 randomFloats(uint seed, uint pixel, uint sampleIndex, uint bounce, uint dimension) {
     uvec4 bits = randomBits(seed, pixel, sampleIndex, bounce, dimension);

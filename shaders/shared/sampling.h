@@ -47,7 +47,9 @@ VKPT_FN vec3 sampleCosineHemisphere(vec2 u) {
     return vec3(r * cos(phi), r * sin(phi), sqrt(max(0.0f, 1.0f - u.x)));
 }
 
-VKPT_FN float cosineHemispherePdf(float cosTheta) { return max(cosTheta, 0.0f) * VKPT_INV_PI; }
+VKPT_FN float cosineHemispherePdf(float cosTheta) {
+    return max(cosTheta, 0.0f) * VKPT_INV_PI;
+}
 
 // Uniform over the hemisphere z >= 0; pdf = 1 / (2π).
 VKPT_FN vec3 sampleUniformHemisphere(vec2 u) {
@@ -57,7 +59,9 @@ VKPT_FN vec3 sampleUniformHemisphere(vec2 u) {
     return vec3(r * cos(phi), r * sin(phi), z);
 }
 
-VKPT_FN float uniformHemispherePdf() { return 0.5f * VKPT_INV_PI; }
+VKPT_FN float uniformHemispherePdf() {
+    return 0.5f * VKPT_INV_PI;
+}
 
 // Uniform over the whole sphere: z uniform in [-1, 1] (Archimedes' hat-box theorem);
 // pdf = 1 / (4π).
@@ -68,7 +72,9 @@ VKPT_FN vec3 sampleUniformSphere(vec2 u) {
     return vec3(r * cos(phi), r * sin(phi), z);
 }
 
-VKPT_FN float uniformSpherePdf() { return 0.25f * VKPT_INV_PI; }
+VKPT_FN float uniformSpherePdf() {
+    return 0.25f * VKPT_INV_PI;
+}
 
 // Uniform point on a triangle as barycentrics (b0, b1, b2): pbrt-v3's square-root warp
 // (Osada et al. 2002); the point is b0·v0 + b1·v1 + b2·v2.
@@ -86,7 +92,9 @@ VKPT_FN float powerHeuristic(float nf, float fPdf, float ng, float gPdf) {
 }
 
 // Rec. 709 / sRGB primaries.
-VKPT_FN float luminance(vec3 c) { return dot(c, vec3(0.2126f, 0.7152f, 0.0722f)); }
+VKPT_FN float luminance(vec3 c) {
+    return dot(c, vec3(0.2126f, 0.7152f, 0.0722f));
+}
 
 #ifdef __cplusplus
 } // namespace vkpt::gpu

@@ -145,9 +145,8 @@ VKPT_FN uint popMask(VKPT_INOUT(WideBitStack) stack) {
     uint mask = stack.words.x & 0xffu;
     stack.words = (stack.words >> 8u) |
                   (uvec4(stack.words.y, stack.words.z, stack.words.w, stack.overflow.x) << 24u);
-    stack.overflow =
-        (stack.overflow >> 8u) | (uvec4(stack.overflow.y, stack.overflow.z, stack.overflow.w, 0u)
-                                  << 24u);
+    stack.overflow = (stack.overflow >> 8u) |
+                     (uvec4(stack.overflow.y, stack.overflow.z, stack.overflow.w, 0u) << 24u);
     return mask;
 }
 
@@ -305,14 +304,12 @@ VKPT_FN void visitNode(VKPT_INOUT(WideWalk) walk, uint index VKPT_BVH_PARAM) {
     vec3 origin = uintBitsToFloat(uvec3(frame.x, frame.y, frame.z));
     NearFarBounds bounds = nearFarBounds(q0, q1, q2, walk.octant);
     // Written out: eight box tests in straight-line code, no loop for lavapipe to mask.
-    walk.entryLow = vec4(enterChild(walk, scale, origin, bounds, 0u),
-                         enterChild(walk, scale, origin, bounds, 1u),
-                         enterChild(walk, scale, origin, bounds, 2u),
-                         enterChild(walk, scale, origin, bounds, 3u));
-    walk.entryHigh = vec4(enterChild(walk, scale, origin, bounds, 4u),
-                          enterChild(walk, scale, origin, bounds, 5u),
-                          enterChild(walk, scale, origin, bounds, 6u),
-                          enterChild(walk, scale, origin, bounds, 7u));
+    walk.entryLow = vec4(
+        enterChild(walk, scale, origin, bounds, 0u), enterChild(walk, scale, origin, bounds, 1u),
+        enterChild(walk, scale, origin, bounds, 2u), enterChild(walk, scale, origin, bounds, 3u));
+    walk.entryHigh = vec4(
+        enterChild(walk, scale, origin, bounds, 4u), enterChild(walk, scale, origin, bounds, 5u),
+        enterChild(walk, scale, origin, bounds, 6u), enterChild(walk, scale, origin, bounds, 7u));
     walk.entriesCurrent = true;
     uint hits = enteredSlots(walk.entryLow, 0u) | enteredSlots(walk.entryHigh, 4u);
     uint internal = wideInternalSlots(header);
@@ -374,8 +371,8 @@ VKPT_FN void takeCrossing(VKPT_INOUT(WideWalk) walk, TriangleHit h, uint primiti
 VKPT_FN TriangleHit crossBvhPrimitive(WideWalk walk, Triangle primitive VKPT_BVH_PARAM) {
     float tMax = walk.primitive == NO_PRIMITIVE ? walk.t : nextFloatUp(walk.t);
     if (bvhHasSpheres(VKPT_BVH_ARG_ONLY) && isSpherePrimitive(primitive))
-        return intersectSphere(walk.origin, walk.direction, primitive.v0, primitive.v1.x,
-                               walk.tMin, tMax);
+        return intersectSphere(walk.origin, walk.direction, primitive.v0, primitive.v1.x, walk.tMin,
+                               tMax);
     return intersectTriangleWatertight(walk.origin, walk.sheared, primitive.v0, primitive.v1,
                                        primitive.v2, walk.tMin, tMax);
 }

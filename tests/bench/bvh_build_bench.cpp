@@ -19,8 +19,8 @@
 #include "bench_statistics.h"
 #include "bvh/bvh_traverse.h"
 #include "bvh/bvh_wide.h"
-#include "bvh/wide_traverse.h"
 #include "bvh/synthetic_scenes.h"
+#include "bvh/wide_traverse.h"
 #include "scene/camera.h"
 #include "scene/gltf_loader.h"
 #include "shared/intersect.h"
@@ -130,7 +130,7 @@ void printWalk(const char* label, const WalkResult& r) {
 }
 
 struct BuiltScene {
-    BvhTree tree; // leaves renumbered by flattenWideBvh
+    BvhTree tree;      // leaves renumbered by flattenWideBvh
     StackBvh stackBvh; // the tree laid out for the ordered stack walk
     std::vector<gpu::WideBvhNode> nodes;
     std::vector<gpu::Triangle> triangles;

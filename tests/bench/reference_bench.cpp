@@ -68,9 +68,11 @@ void benchScene(const std::string& path, const BenchOptions& o) {
         mrays.push_back(stats.megaRaysPerSecond());
         std::fprintf(stderr, "  run %d/%d: %.3f s\n", run + 1, o.runs, stats.seconds);
     }
-    std::printf("%s\n  triangles %zu, BVH %u nodes, depth %u, SAH %.2f, build %.3f s (median of %d)\n",
-                path.c_str(), scene.triangleCount(), prepared.bvhStats.nodeCount,
-                prepared.bvhStats.maxDepth, double(prepared.bvhStats.sahCost), median(buildSeconds), o.runs);
+    std::printf(
+        "%s\n  triangles %zu, BVH %u nodes, depth %u, SAH %.2f, build %.3f s (median of %d)\n",
+        path.c_str(), scene.triangleCount(), prepared.bvhStats.nodeCount,
+        prepared.bvhStats.maxDepth, double(prepared.bvhStats.sahCost), median(buildSeconds),
+        o.runs);
     std::printf("  render %ux%u @ %u spp: %.3f s, %.2f Mrays/s (medians of %d), %.1f nodes and "
                 "%.1f triangle tests per ray, %.2f rays per sample\n",
                 o.width, o.height, o.spp, median(renderSeconds), median(mrays), o.runs,
@@ -83,7 +85,8 @@ void benchScene(const std::string& path, const BenchOptions& o) {
 int main(int argc, char** argv) {
     try {
         BenchOptions options = parse(argc, argv);
-        for (const std::string& path : options.scenes) benchScene(path, options);
+        for (const std::string& path : options.scenes)
+            benchScene(path, options);
         return 0;
     } catch (const std::exception& error) {
         std::fprintf(stderr, "reference_bench: error: %s\n", error.what());

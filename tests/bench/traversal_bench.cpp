@@ -24,10 +24,10 @@
 #include "app/command_line.h"
 #include "bench_statistics.h"
 #include "common/errors.h"
+#include "gpu/device_list.h"
 #include "scene/camera.h"
 #include "scene/gltf_loader.h"
 #include "traversal_rays.h"
-#include "gpu/device_list.h"
 #include "traversal_variants.h"
 
 namespace vkpt::bench {
@@ -50,31 +50,48 @@ BenchOptions parseOptions(int argc, char** argv) {
     BenchOptions o;
     bool help = false;
     CommandLine cl(kProgram);
-    cl.add({"quick", {}, "", "64x64 paths, 1 run, a 100k-triangle room: seconds, for CI",
-            [&](auto) {
-                o.width = o.height = 64;
-                o.runs = 1;
-                o.triangles = 100000;
-            }});
-    cl.add({"runs", {}, "N", "timed runs per variant and ray set, median printed (default 3)",
+    cl.add(
+        {"quick", {}, "", "64x64 paths, 1 run, a 100k-triangle room: seconds, for CI", [&](auto) {
+             o.width = o.height = 64;
+             o.runs = 1;
+             o.triangles = 100000;
+         }});
+    cl.add({"runs",
+            {},
+            "N",
+            "timed runs per variant and ray set, median printed (default 3)",
             [&](auto v) { o.runs = int(parseUnsigned("runs", v[0], 1)); }});
-    cl.add({"res", {}, "W H", "paths from W x H pixels, one sample each (default 256 256)",
+    cl.add({"res",
+            {},
+            "W H",
+            "paths from W x H pixels, one sample each (default 256 256)",
             [&](auto v) {
                 o.width = parseUnsigned("res", v[0], 1);
                 o.height = parseUnsigned("res", v[1], 1);
             }});
-    cl.add({"threads", {}, "N", "threads of the CPU variants and Embree (default 2)",
-            [&](auto v) { o.variants.threads = parseUnsigned("threads", v[0], 1); }});
-    cl.add({"triangles", {}, "N", "size of the generated room (default 1000000)",
-            [&](auto v) { o.triangles = parseUnsigned("triangles", v[0], 8); }});
-    cl.add({"max-depth", {}, "N", "scattering events of the recorded paths (default 8)",
-            [&](auto v) { o.maxDepth = parseUnsigned("max-depth", v[0]); }});
-    cl.add({"no-device", {}, "", "leave out the device kernels",
-            [&](auto) { o.variants.device = false; }});
-    cl.add({"device", {}, "N|NAME", "Vulkan device of the device kernels (default: vkpt's choice)",
+    cl.add({"threads", {}, "N", "threads of the CPU variants and Embree (default 2)", [&](auto v) {
+                o.variants.threads = parseUnsigned("threads", v[0], 1);
+            }});
+    cl.add({"triangles", {}, "N", "size of the generated room (default 1000000)", [&](auto v) {
+                o.triangles = parseUnsigned("triangles", v[0], 8);
+            }});
+    cl.add(
+        {"max-depth", {}, "N", "scattering events of the recorded paths (default 8)", [&](auto v) {
+             o.maxDepth = parseUnsigned("max-depth", v[0]);
+         }});
+    cl.add({"no-device", {}, "", "leave out the device kernels", [&](auto) {
+                o.variants.device = false;
+            }});
+    cl.add({"device",
+            {},
+            "N|NAME",
+            "Vulkan device of the device kernels (default: vkpt's choice)",
             [&](auto v) { o.variants.gpu.device = parseDeviceSelection(v[0]); }});
-    cl.add({"batch", {}, "N", "rays per dispatch of the device kernels (default: 16384 on a CPU "
-                              "device, 4194304 on a GPU)",
+    cl.add({"batch",
+            {},
+            "N",
+            "rays per dispatch of the device kernels (default: 16384 on a CPU "
+            "device, 4194304 on a GPU)",
             [&](auto v) { o.variants.deviceBatch = parseUnsigned("batch", v[0], 64); }});
     cl.add({"help", {'h'}, "", "show this help", [&](auto) { help = true; }});
     o.scenes = cl.parse(std::vector<std::string>(argv + 1, argv + argc));
@@ -158,8 +175,8 @@ std::string bytesPerRay(const TraceWork& work, const WalkLayout& layout, std::si
     double bytes = double(*work.nodes) * double(layout.nodeBytes);
     if (work.primitiveTests) bytes += double(*work.primitiveTests) * double(layout.primitiveBytes);
     char text[32];
-    std::snprintf(text, sizeof text, "%s%.0f", work.primitiveTests ? "" : ">=",
-                  bytes / double(rays));
+    std::snprintf(text, sizeof text, "%s%.0f",
+                  work.primitiveTests ? "" : ">=", bytes / double(rays));
     return text;
 }
 
@@ -193,12 +210,13 @@ void printRow(const VariantInfo& info, const Timed& timed, std::size_t rays, Spe
 
 void benchRaySet(const RaySet& set, std::vector<std::unique_ptr<TraversalVariant>>& variants,
                  int runs) {
-    std::printf("  %s: %zu rays\n    %-50s %7s %5s %8s %5s %6s %6s %7s  %s\n",
-                set.name.c_str(), set.rays.size(), "variant", "Mrays/s", "ratio", "Mr/cpu-s",
-                "ratio", "nodes", "tests", "bytes", "disagree (hit/miss, t)");
+    std::printf("  %s: %zu rays\n    %-50s %7s %5s %8s %5s %6s %6s %7s  %s\n", set.name.c_str(),
+                set.rays.size(), "variant", "Mrays/s", "ratio", "Mr/cpu-s", "ratio", "nodes",
+                "tests", "bytes", "disagree (hit/miss, t)");
     if (set.rays.empty()) return;
     std::vector<Timed> timed;
-    for (auto& variant : variants) timed.push_back(timeVariant(*variant, set, runs));
+    for (auto& variant : variants)
+        timed.push_back(timeVariant(*variant, set, runs));
     const Timed* reference = nullptr;
     Speed base;
     for (std::size_t v = 0; v < variants.size(); ++v) {
@@ -214,8 +232,8 @@ void benchRaySet(const RaySet& set, std::vector<std::unique_ptr<TraversalVariant
         printRow(variants[v]->info(), timed[v], set.rays.size(), base, disagreement);
         if (timed[v].work.kernelSeconds && *timed[v].work.kernelSeconds > 0.0)
             std::printf("    %-50s %7.2f  (GPU time of the kernels alone, last run)\n",
-                        "  kernels alone", double(set.rays.size()) /
-                                               *timed[v].work.kernelSeconds * 1e-6);
+                        "  kernels alone",
+                        double(set.rays.size()) / *timed[v].work.kernelSeconds * 1e-6);
     }
 }
 
@@ -232,16 +250,18 @@ void benchScene(const std::string& path, const BenchOptions& o) {
     RenderSettings settings;
     settings.maxDepth = o.maxDepth;
     std::vector<RaySet> sets = recordRenderRays(prepared, camera, settings);
-    std::printf("%s: %zu triangles; vkpt BVH %u nodes, depth %u, built in %.3f s; rays of "
-                "%ux%u paths (1 spp, depth %u); medians of %d runs\n",
-                path == kGeneratedRoom ? ("generated room, " + std::to_string(o.triangles) +
-                                          " triangles asked").c_str()
-                                       : path.c_str(),
-                prepared.triangles.size(), prepared.bvhStats.nodeCount, prepared.bvhStats.maxDepth,
-                prepared.bvhStats.buildSeconds, o.width, o.height, o.maxDepth, o.runs);
+    std::printf(
+        "%s: %zu triangles; vkpt BVH %u nodes, depth %u, built in %.3f s; rays of "
+        "%ux%u paths (1 spp, depth %u); medians of %d runs\n",
+        path == kGeneratedRoom
+            ? ("generated room, " + std::to_string(o.triangles) + " triangles asked").c_str()
+            : path.c_str(),
+        prepared.triangles.size(), prepared.bvhStats.nodeCount, prepared.bvhStats.maxDepth,
+        prepared.bvhStats.buildSeconds, o.width, o.height, o.maxDepth, o.runs);
     std::vector<std::unique_ptr<TraversalVariant>> variants =
         makeTraversalVariants(prepared, o.variants);
-    for (const RaySet& set : sets) benchRaySet(set, variants, o.runs);
+    for (const RaySet& set : sets)
+        benchRaySet(set, variants, o.runs);
     std::printf("\n");
 }
 
@@ -251,7 +271,8 @@ void benchScene(const std::string& path, const BenchOptions& o) {
 int main(int argc, char** argv) {
     try {
         vkpt::bench::BenchOptions options = vkpt::bench::parseOptions(argc, argv);
-        for (const std::string& scene : options.scenes) vkpt::bench::benchScene(scene, options);
+        for (const std::string& scene : options.scenes)
+            vkpt::bench::benchScene(scene, options);
         return 0;
     } catch (const vkpt::InputError& error) {
         std::fprintf(stderr, "%s: error: %s\n", vkpt::bench::kProgram, error.what());

@@ -158,7 +158,8 @@ public:
 
 private:
     static std::uint32_t batchFor(const GpuContext& context, std::uint32_t requested) {
-        if (requested > 0) return (requested + WORKGROUP_SIZE - 1) / WORKGROUP_SIZE * WORKGROUP_SIZE;
+        if (requested > 0)
+            return (requested + WORKGROUP_SIZE - 1) / WORKGROUP_SIZE * WORKGROUP_SIZE;
         return context.deviceInfo().type == VK_PHYSICAL_DEVICE_TYPE_CPU ? 1u << 14 : 1u << 22;
     }
 

@@ -10,9 +10,9 @@
 #include <cmath>
 #include <limits>
 
+#include "../support/gltf_writer.h"
 #include "common/errors.h"
 #include "extremes_support.h"
-#include "../support/gltf_writer.h"
 #include "scene/gltf_loader.h"
 
 namespace vkpt {

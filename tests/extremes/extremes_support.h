@@ -17,7 +17,6 @@ namespace vkpt::test {
 
 // Scenes in memory: tests/support/scene_builder.h.
 
-
 inline SceneCamera lookAt(glm::vec3 position, glm::vec3 target, glm::vec3 up, float yfovDegrees) {
     SceneCamera camera;
     camera.name = "test camera";

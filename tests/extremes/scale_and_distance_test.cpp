@@ -10,9 +10,9 @@
 #include <cstdio>
 #include <string>
 
+#include "../support/gltf_writer.h"
 #include "../support/scene_transforms.h"
 #include "extremes_support.h"
-#include "../support/gltf_writer.h"
 #include "scene/gltf_loader.h"
 
 namespace vkpt {

@@ -18,7 +18,9 @@
 namespace vkpt {
 namespace {
 
-float logUniform(float u, float lo, float hi) { return lo * std::pow(hi / lo, u); }
+float logUniform(float u, float lo, float hi) {
+    return lo * std::pow(hi / lo, u);
+}
 
 glm::vec3 randomUnit(glm::vec2 u) {
     float z = 1.0f - 2.0f * u.x, r = std::sqrt(std::max(0.0f, 1.0f - z * z));

@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <set>
 
-#include "../support/ray_queries.h"
 #include "../support/meshes.h"
+#include "../support/ray_queries.h"
 #include "bvh/bvh_traverse.h"
 #include "extremes_support.h"
 #include "shared/rng.h"
@@ -34,7 +34,8 @@ ClosedMesh prepare(test::IndexedMesh mesh, glm::vec3 centre, float radius) {
     m.prepared = prepareScene(scene);
     std::set<std::pair<std::uint32_t, std::uint32_t>> edges;
     for (const auto& t : m.mesh.triangles)
-        for (int k = 0; k < 3; ++k) edges.insert(std::minmax(t[k], t[(k + 1) % 3]));
+        for (int k = 0; k < 3; ++k)
+            edges.insert(std::minmax(t[k], t[(k + 1) % 3]));
     m.edges.assign(edges.begin(), edges.end());
     return m;
 }

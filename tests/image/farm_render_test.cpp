@@ -130,9 +130,9 @@ void RenderParts::expectTasksMergeToOneRun(Executor executor, double relative, d
     const std::vector<PixelRecord> oneRun = render(executor, wholePlan(28));
     // Every split on the CPU; on the device, where each render compiles its pipelines (about a
     // second on lavapipe), the smallest and the largest.
-    const std::vector<std::uint32_t> splits =
-        executor == Executor::Cpu ? std::vector<std::uint32_t>{1, 2, 3, 7}
-                                  : std::vector<std::uint32_t>{2, 7};
+    const std::vector<std::uint32_t> splits = executor == Executor::Cpu
+                                                  ? std::vector<std::uint32_t>{1, 2, 3, 7}
+                                                  : std::vector<std::uint32_t>{2, 7};
     for (std::uint32_t n : splits) {
         const RenderState merged = renderTasks(std::vector<Executor>(n, executor));
         const double worst = expectSameRecords(merged.pixels, oneRun, relative, image);

@@ -12,8 +12,8 @@
 
 #include "../support/ray_queries.h"
 #include "bvh/bvh_traverse.h"
-#include "bvh/wide_traverse.h"
 #include "bvh/synthetic_scenes.h"
+#include "bvh/wide_traverse.h"
 #include "feature_scenes.h"
 #include "reference/alpha_mask_filter.h"
 #include "shared/camera.h"
@@ -145,8 +145,8 @@ protected:
         const StackBvh stackBvh = makeStackBvh(scene.prepared.tree, scene.prepared.triangles);
         int disagreements = 0, hitCount = 0;
         for (std::size_t i = 0; i < rays.size(); ++i) {
-            ClosestHit cpu =
-                closestHitStack(stackBvh, {rays[i].origin, rays[i].direction, 0.0f, VKPT_FAR, filter.get()});
+            ClosestHit cpu = closestHitStack(
+                stackBvh, {rays[i].origin, rays[i].direction, 0.0f, VKPT_FAR, filter.get()});
             hitCount += cpu.hit ? 1 : 0;
             if (sameClosestHit(scene.prepared, rays[i], hits[i], cpu)) continue;
             if (++disagreements <= 5)
@@ -176,8 +176,8 @@ protected:
         const StackBvh stackBvh = makeStackBvh(scene.prepared.tree, scene.prepared.triangles);
         int disagreements = 0, blocked = 0;
         for (std::size_t i = 0; i < rays.size(); ++i) {
-            bool cpu =
-                anyHitStack(stackBvh, {rays[i].origin, rays[i].direction, 0.0f, rays[i].tMax, filter.get()});
+            bool cpu = anyHitStack(
+                stackBvh, {rays[i].origin, rays[i].direction, 0.0f, rays[i].tMax, filter.get()});
             blocked += cpu ? 1 : 0;
             if (occluded[i] == cpu) continue;
             if (++disagreements <= 5)
@@ -253,10 +253,10 @@ std::uint32_t mostMaskedPrimitivesInALeaf(const PreparedScene& scene) {
                 node.primitiveBase + gpu::wideLeafOffset(node.leafCounts, slot);
             std::uint32_t masked = 0;
             for (std::uint32_t i = first; i < first + count; ++i)
-                masked += scene.materials[scene.triangles[i].materialIndex].alphaMode ==
-                                  ALPHA_MODE_MASK
-                              ? 1
-                              : 0;
+                masked +=
+                    scene.materials[scene.triangles[i].materialIndex].alphaMode == ALPHA_MODE_MASK
+                        ? 1
+                        : 0;
             most = std::max(most, masked);
         }
     }
@@ -311,8 +311,8 @@ struct LongWalk {
     // above: a test per triangle, and per node one of the node loop and the final tests of the
     // leaf and climb loops, plus a climb each.
     std::uint64_t iterations = 0;
-    std::uint32_t truncated = 0;  // of 64 device walks
-    std::uint32_t found = 0;      // device walks that found the far triangle
+    std::uint32_t truncated = 0; // of 64 device walks
+    std::uint32_t found = 0;     // device walks that found the far triangle
 };
 
 LongWalk walkTheWall(GpuContext& context, std::uint32_t triangles) {

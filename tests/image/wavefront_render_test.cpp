@@ -4,11 +4,11 @@
 // additivity, scenes without lights, and the direct estimators converging to the same image.
 #include <cmath>
 
+#include "../support/render_checks.h"
 #include "image/image_compare.h"
 #include "shared/adaptive.h"
 #include "shared/sampling.h"
 #include "wavefront_test_support.h"
-#include "../support/render_checks.h"
 
 namespace vkpt::test {
 namespace {

@@ -10,7 +10,6 @@
 namespace vkpt {
 namespace {
 
-
 TEST(DirectLighting, HemisphereAndLightSamplingConvergeToTheSameImage) {
     test::LoadedTestScene scene = test::loadTestScene("test/quad-light-floor.gltf");
     // Hemisphere sampling finds the light rarely: at the floor's far corners a uniform
@@ -56,7 +55,8 @@ TEST(DirectLighting, TexturedEmittersLightAndHemisphereSamplingAgree) {
     RenderSettings settings = test::testSettings(16, 128);
     settings.lightSamples = 16;
     test::LightAndHemisphere both = test::renderLightAndHemisphere(scene, settings);
-    test::expectSameImage(both.light, both.hemisphere, "light vs hemisphere sampling, textured emitter");
+    test::expectSameImage(both.light, both.hemisphere,
+                          "light vs hemisphere sampling, textured emitter");
 }
 
 TEST(DirectLighting, PathTracerAtDepthOneMatchesTheDirectIntegrator) {

@@ -12,9 +12,8 @@ namespace {
 
 using test::expectFurnaceMean;
 using test::furnaceParameters;
-using test::furnaceRadiance;
 using test::FurnaceParameters;
-
+using test::furnaceRadiance;
 
 class Furnace : public ::testing::TestWithParam<const char*> {};
 

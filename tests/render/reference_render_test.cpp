@@ -21,7 +21,8 @@ TEST(ReferenceRender, SameSeedGivesTheSameImageOnOneAndTwoThreads) {
     settings.threads = 2;
     RenderOutput two = test::renderTestScene(box, settings);
     ASSERT_EQ(one.image.pixels.size(), two.image.pixels.size());
-    for (std::size_t i = 0; i < one.image.pixels.size(); ++i) ASSERT_EQ(one.image.pixels[i], two.image.pixels[i]) << "pixel " << i;
+    for (std::size_t i = 0; i < one.image.pixels.size(); ++i)
+        ASSERT_EQ(one.image.pixels[i], two.image.pixels[i]) << "pixel " << i;
     settings.seed = 12;
     RenderOutput other = test::renderTestScene(box, settings);
     EXPECT_NE(one.image.pixels, other.image.pixels) << "a new seed must give new noise";
@@ -46,7 +47,8 @@ TEST(ReferenceRender, CornellBoxAtDepthZeroShowsOnlyTheLight) {
 
 TEST(ReferenceRender, CornellBoxIsFiniteEnergyPlausibleAndRedOnTheLeft) {
     test::LoadedTestScene box = test::loadTestScene("cornell-box.gltf");
-    test::expectCornellBoxPlausible(test::renderTestScene(box, test::testSettings(32, 16)), box.scene);
+    test::expectCornellBoxPlausible(test::renderTestScene(box, test::testSettings(32, 16)),
+                                    box.scene);
 }
 
 // The symmetric box mirrored about its vertical centre line: the left half and the mirrored
@@ -101,7 +103,8 @@ TEST(ReferenceRender, SceneWithoutLightsIsBlack) {
     test::LoadedTestScene dark = test::loadTestScene("test/no-lights.gltf");
     EXPECT_TRUE(dark.prepared.emitters.empty());
     RenderOutput output = test::renderTestScene(dark, test::testSettings(8, 2));
-    for (const glm::vec3& p : output.image.pixels) ASSERT_EQ(p, glm::vec3(0.0f));
+    for (const glm::vec3& p : output.image.pixels)
+        ASSERT_EQ(p, glm::vec3(0.0f));
 }
 
 TEST(ReferenceRender, NormalsIntegratorMapsUnitNormalsIntoTheUnitCube) {

@@ -125,7 +125,6 @@ TEST(Environment, ConstantEnvironmentLightsAFloorWithItsIrradiance) {
         ASSERT_EQ(pixel, sky.environment.radiance);
 }
 
-
 // The environment map's importance sampling against uniform hemisphere directions: both
 // estimate the same direct lighting, so their images agree in distribution.
 TEST(Environment, MapImportanceSamplingAgreesWithHemisphereSampling) {

@@ -222,8 +222,8 @@ RunResult StudyRunner::measure(const StudyRun& run, const std::string& progressL
     RunResult result;
     result.run = run;
     ConvergenceTracker tracker(&reference(run.reference), 0.0);
-    const std::uint64_t budget = std::uint64_t(run.settings.samplesPerPixel) *
-                                 run.settings.width * run.settings.height;
+    const std::uint64_t budget =
+        std::uint64_t(run.settings.samplesPerPixel) * run.settings.width * run.settings.height;
     ProgressBar progressBar(progressLabel, budget);
     WavefrontOptions options;
     options.slotCount = invocation_.pathSlots;
@@ -356,9 +356,8 @@ void StudyRunner::renderPlan(const StudySummary& earlier) {
     std::size_t rendered = 0;
     for (const StudyRun& run : plan) {
         if (wanted(invocation_, run.family)) {
-            const std::string label = std::string(kProgram) + ": [" +
-                                      std::to_string(rendered + 1) + "/" + std::to_string(count) +
-                                      "] " + run.label;
+            const std::string label = std::string(kProgram) + ": [" + std::to_string(rendered + 1) +
+                                      "/" + std::to_string(count) + "] " + run.label;
             summary_.results.push_back(measure(run, label));
             reportRun(summary_.results.back(), rendered++, count);
         } else if (std::optional<RunResult> kept = keptRun(earlier, run)) {

@@ -71,7 +71,8 @@ inline ChiSquareResult chiSquareTest(const std::vector<double>& observed,
         ++bins;
     }
     result.degreesOfFreedom = bins > 1 ? bins - 1 : 1;
-    result.pValue = upperIncompleteGammaQ(0.5 * double(result.degreesOfFreedom), 0.5 * result.statistic);
+    result.pValue =
+        upperIncompleteGammaQ(0.5 * double(result.degreesOfFreedom), 0.5 * result.statistic);
     return result;
 }
 

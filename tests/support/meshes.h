@@ -20,7 +20,8 @@ struct IndexedMesh {
     std::vector<glm::vec3> soup() const {
         std::vector<glm::vec3> positions;
         for (const auto& t : triangles)
-            for (std::uint32_t i : t) positions.push_back(vertices[i]);
+            for (std::uint32_t i : t)
+                positions.push_back(vertices[i]);
         return positions;
     }
 };
@@ -30,13 +31,14 @@ struct IndexedMesh {
 inline IndexedMesh icosphere(int subdivisions, float radius, glm::vec3 centre) {
     const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
     IndexedMesh m;
-    m.vertices = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                  {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+    m.vertices = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
+                  {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
     m.triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
                    {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
                    {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
                    {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
-    for (glm::vec3& v : m.vertices) v = glm::normalize(v);
+    for (glm::vec3& v : m.vertices)
+        v = glm::normalize(v);
     for (int s = 0; s < subdivisions; ++s) {
         std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> midpoints;
         auto midpoint = [&](std::uint32_t a, std::uint32_t b) {
@@ -56,7 +58,8 @@ inline IndexedMesh icosphere(int subdivisions, float radius, glm::vec3 centre) {
         }
         m.triangles = std::move(finer);
     }
-    for (glm::vec3& v : m.vertices) v = centre + radius * v;
+    for (glm::vec3& v : m.vertices)
+        v = centre + radius * v;
     return m;
 }
 
@@ -67,8 +70,9 @@ inline IndexedMesh splitCube(int cells, float size, glm::vec3 centre) {
     auto vertex = [&](std::array<int, 3> g) {
         auto [it, inserted] = index.try_emplace(g, std::uint32_t(m.vertices.size()));
         if (inserted)
-            m.vertices.push_back(centre + size * (glm::vec3(float(g[0]), float(g[1]), float(g[2])) /
-                                                      float(cells) - 0.5f));
+            m.vertices.push_back(
+                centre +
+                size * (glm::vec3(float(g[0]), float(g[1]), float(g[2])) / float(cells) - 0.5f));
         return it->second;
     };
     for (int axis = 0; axis < 3; ++axis)

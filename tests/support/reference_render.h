@@ -46,8 +46,7 @@ inline LoadedTestScene loadTestScene(const std::string& relative,
     options.warnUnsupportedExtensions = false;
     LoadedTestScene loaded{loadGltfScene(scenePath(relative), options), {}};
     loaded.scene.environment = sceneOptions.environment;
-    loaded.prepared = prepareScene(
-        loaded.scene, {{}, sceneOptions.general});
+    loaded.prepared = prepareScene(loaded.scene, {{}, sceneOptions.general});
     return loaded;
 }
 

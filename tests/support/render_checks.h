@@ -44,7 +44,8 @@ inline double furnaceRadiance(const FurnaceParameters& p, std::uint32_t maxDepth
 // The image mean must lie within 4.42 standard errors (two-sided p = 1e-5) of the analytic
 // value, the standard error coming from the render's own per-pixel variances, plus a float
 // rounding allowance of 1e-5 relative.
-inline void expectFurnaceMean(const RenderOutput& output, double expected, const std::string& what) {
+inline void expectFurnaceMean(const RenderOutput& output, double expected,
+                              const std::string& what) {
     MeanEstimate mean = meanLuminance(output);
     double bound = 4.42 * mean.standardError + 1e-5 * expected;
     EXPECT_NEAR(mean.mean, expected, bound) << what << ": standard error " << mean.standardError;
@@ -71,7 +72,8 @@ inline void expectCornellBoxPlausible(const RenderOutput& output, const Scene& s
     for (std::uint32_t y = 0; y < image.height; ++y)
         for (std::uint32_t x = 0; x < image.width; ++x) {
             const glm::vec3& p = image.at(x, y);
-            ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) << x << "," << y;
+            ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z))
+                << x << "," << y;
             ASSERT_TRUE(p.x >= 0.0f && p.y >= 0.0f && p.z >= 0.0f) << x << "," << y;
             mean += gpu::luminance(p);
             if (x < edge) left += glm::dvec3(p);

@@ -7,14 +7,18 @@
 namespace vkpt::test {
 
 inline Scene scaledScene(Scene scene, float scale) {
-    for (glm::vec3& p : scene.positions) p *= scale;
-    for (SceneCamera& c : scene.cameras) c.position *= scale;
+    for (glm::vec3& p : scene.positions)
+        p *= scale;
+    for (SceneCamera& c : scene.cameras)
+        c.position *= scale;
     return scene;
 }
 
 inline Scene translatedScene(Scene scene, glm::vec3 offset) {
-    for (glm::vec3& p : scene.positions) p += offset;
-    for (SceneCamera& c : scene.cameras) c.position += offset;
+    for (glm::vec3& p : scene.positions)
+        p += offset;
+    for (SceneCamera& c : scene.cameras)
+        c.position += offset;
     return scene;
 }
 

@@ -14,8 +14,8 @@
 
 #include "bvh/bvh_traverse.h"
 #include "bvh/bvh_wide.h"
-#include "bvh/wide_traverse.h"
 #include "bvh/synthetic_scenes.h"
+#include "bvh/wide_traverse.h"
 #include "common/errors.h"
 #include "scene/gltf_loader.h"
 #include "shared/intersect.h"
@@ -38,10 +38,10 @@ struct Layout {
 
 struct BuiltScene {
     BvhTree tree;
-    StackBvh stackBvh;                    // the tree laid out for the ordered stack walk
-    std::vector<gpu::WideBvhNode> nodes;  // collapsed opening the largest child first
-    std::vector<gpu::Triangle> triangles; // in the order tree and nodes index
-    Layout tall;                          // collapsed opening the tallest child first
+    StackBvh stackBvh;                        // the tree laid out for the ordered stack walk
+    std::vector<gpu::WideBvhNode> nodes;      // collapsed opening the largest child first
+    std::vector<gpu::Triangle> triangles;     // in the order tree and nodes index
+    Layout tall;                              // collapsed opening the tallest child first
     std::vector<std::uint32_t> indexOfSource; // input triangle → its index in `triangles`
     Aabb bounds;
 };
@@ -89,7 +89,7 @@ public:
     RayGenerator(const Aabb& bounds, bool lattice, std::uint32_t seed)
         : rng_(seed), lattice_(lattice), lo_(bounds.min), hi_(bounds.max), centre_(bounds.centre()),
           size_(glm::length(bounds.max - bounds.min) > 0.0f ? glm::length(bounds.max - bounds.min)
-                                                             : 1.0f) {}
+                                                            : 1.0f) {}
 
     RayQuery next() {
         RayQuery ray = pick(rng_.below(lattice_ ? 5 : 4));
@@ -199,8 +199,8 @@ bool checkRay(const BuiltScene& s, const RayQuery& ray, bool bruteForce, WalkFig
         std::max(f.maxWideIterations, wideCount.nodesVisited + wideCount.triangleTests);
     f.hits += stack.hit ? 1 : 0;
     EXPECT_TRUE(sameHit(s, ray, stack, wide)) << "stack vs wide, " << describe(ray);
-    EXPECT_TRUE(sameHit(s, ray, stack,
-                        renumbered(s, closestHitWide(s.tall.nodes, s.tall.triangles, ray))))
+    EXPECT_TRUE(
+        sameHit(s, ray, stack, renumbered(s, closestHitWide(s.tall.nodes, s.tall.triangles, ray))))
         << "stack vs wide collapsed tallest first, " << describe(ray);
     if (bruteForce) {
         ClosestHit brute = closestHitBruteForce(s.triangles, ray);

@@ -48,8 +48,7 @@ std::vector<WideScene> testScenes() {
     scenes.push_back(buildWide(synthetic::grid(40)));
     scenes.push_back(buildWide(synthetic::closedCube(12)));
     scenes.push_back(buildWide(synthetic::displacedSphere(30, 60), wideLeaves));
-    scenes.push_back(
-        buildWide(synthetic::displacedSphere(30, 60), {}, CollapseOrder::Tallest));
+    scenes.push_back(buildWide(synthetic::displacedSphere(30, 60), {}, CollapseOrder::Tallest));
     return scenes;
 }
 
@@ -64,9 +63,9 @@ std::vector<LeafChild> leafChildren(const std::vector<gpu::WideBvhNode>& nodes) 
         for (std::uint32_t slot = 0; slot < WIDE_BVH_WIDTH; ++slot) {
             const std::uint32_t count = gpu::wideLeafCount(nodes[n].leafCounts, slot);
             if (count == 0) continue;
-            leaves.push_back({n, slot,
-                              nodes[n].primitiveBase + gpu::wideLeafOffset(nodes[n].leafCounts, slot),
-                              count});
+            leaves.push_back(
+                {n, slot, nodes[n].primitiveBase + gpu::wideLeafOffset(nodes[n].leafCounts, slot),
+                 count});
         }
     }
     return leaves;
@@ -194,14 +193,15 @@ TEST(BvhWide, QuantisationHoldsAtExtremeScales) {
                 const auto decoded = decodeChildBoxes(s.nodes[n]);
                 for (const LeafChild& leaf : leafChildren({s.nodes[n]}))
                     for (std::uint32_t i = leaf.first; i < leaf.first + leaf.count; ++i)
-                        EXPECT_TRUE(contains(decoded[leaf.slot], s.bounds[s.tree.primitiveOrder[i]]))
+                        EXPECT_TRUE(
+                            contains(decoded[leaf.slot], s.bounds[s.tree.primitiveOrder[i]]))
                             << "scale " << scale << " offset " << offset;
             }
         }
     }
     std::vector<glm::vec3> huge = {{-3e38f, -3e38f, 0.0f}, {3e38f, -3e38f, 0.0f},
-                                   {0.0f, 3e38f, 1e38f}, {1.0f, 1.0f, 1.0f},
-                                   {2.0f, 1.0f, 1.0f},   {1.0f, 2.0f, 1.0f}};
+                                   {0.0f, 3e38f, 1e38f},   {1.0f, 1.0f, 1.0f},
+                                   {2.0f, 1.0f, 1.0f},     {1.0f, 2.0f, 1.0f}};
     WideScene s = buildWide(huge);
     const auto decoded = decodeChildBoxes(s.nodes[0]);
     for (const LeafChild& leaf : leafChildren({s.nodes[0]}))

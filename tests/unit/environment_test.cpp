@@ -20,8 +20,8 @@
 #include <unistd.h>
 
 #include "../support/chi_square.h"
-#include "common/errors.h"
 #include "../support/test_directory.h"
+#include "common/errors.h"
 #include "image/image_io.h"
 #include "shared/environment.h"
 #include "shared/rng.h"

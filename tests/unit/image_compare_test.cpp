@@ -92,7 +92,8 @@ TEST(ZTest, IdenticalImagesPass) {
     EXPECT_TRUE(result.passed) << result.summary;
     EXPECT_EQ(result.rejectedPixels, 0u);
     EXPECT_EQ(result.worstZ, 0.0);
-    EXPECT_EQ(result.summary.rfind("z-test passed: 256 pixels, per-pixel p >= ", 0), 0u) << result.summary;
+    EXPECT_EQ(result.summary.rfind("z-test passed: 256 pixels, per-pixel p >= ", 0), 0u)
+        << result.summary;
 }
 
 TEST(ZTest, IndependentRendersOfTheSameImagePass) {

@@ -12,7 +12,8 @@ namespace {
 
 TEST(Rng, SameKeyGivesSameNumbers) {
     for (uint32_t i = 0; i < 1000; ++i) {
-        EXPECT_EQ(gpu::randomBits(7, i, i * 3, i % 17, i % 5), gpu::randomBits(7, i, i * 3, i % 17, i % 5));
+        EXPECT_EQ(gpu::randomBits(7, i, i * 3, i % 17, i % 5),
+                  gpu::randomBits(7, i, i * 3, i % 17, i % 5));
     }
 }
 
@@ -28,7 +29,8 @@ TEST(Rng, EveryKeyFieldChangesTheOutput) {
 TEST(Rng, NoCollisionsOverNeighbouringKeys) {
     std::set<uint32_t> seen;
     for (uint32_t pixel = 0; pixel < 256; ++pixel)
-        for (uint32_t sample = 0; sample < 256; ++sample) seen.insert(gpu::randomBits(0, pixel, sample, 0, 0).x);
+        for (uint32_t sample = 0; sample < 256; ++sample)
+            seen.insert(gpu::randomBits(0, pixel, sample, 0, 0).x);
     // 65,536 uniform draws from 2^32 values give n²/2^33 = 0.5 collisions on average; more
     // than 3 has a Poisson probability below 0.2 %.
     EXPECT_GE(seen.size(), 65536u - 3u);
@@ -62,10 +64,15 @@ TEST(Rng, NeighbouringPixelsAreUncorrelated) {
     for (uint32_t i = 0; i < uint32_t(n); ++i) {
         double x = gpu::randomFloats(3, i, 0, 0, DIM_CAMERA).x;
         double y = gpu::randomFloats(3, i + 1, 0, 0, DIM_CAMERA).x;
-        sx += x; sy += y; sxx += x * x; syy += y * y; sxy += x * y;
+        sx += x;
+        sy += y;
+        sxx += x * x;
+        syy += y * y;
+        sxy += x * y;
     }
     double cov = sxy / n - (sx / n) * (sy / n);
-    double corr = cov / std::sqrt((sxx / n - (sx / n) * (sx / n)) * (syy / n - (sy / n) * (sy / n)));
+    double corr =
+        cov / std::sqrt((sxx / n - (sx / n) * (sx / n)) * (syy / n - (sy / n) * (sy / n)));
     EXPECT_LT(std::abs(corr), 5.0 / std::sqrt(double(n)));
 }
 

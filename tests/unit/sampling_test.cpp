@@ -31,8 +31,9 @@ struct HemisphereHistogram {
         std::vector<double> e(counts.size());
         for (int zi = 0; zi < zBins; ++zi)
             for (int pi = 0; pi < phiBins; ++pi)
-                e[size_t(zi * phiBins + pi)] = n * integralOverZ(double(zi) / zBins, double(zi + 1) / zBins) *
-                                               (2 * kPi / phiBins);
+                e[size_t(zi * phiBins + pi)] =
+                    n * integralOverZ(double(zi) / zBins, double(zi + 1) / zBins) *
+                    (2 * kPi / phiBins);
         return e;
     }
 };
@@ -63,8 +64,7 @@ TEST(Sampling, UniformHemisphereMatchesItsPdfByChiSquare) {
 }
 
 // Midpoint rule over (θ, φ) with dω = sin θ dθ dφ; 512² cells give ~1e-5 accuracy.
-template <typename Pdf>
-double integrateOverHemisphere(Pdf pdf) {
+template <typename Pdf> double integrateOverHemisphere(Pdf pdf) {
     const int steps = 512;
     double sum = 0.0;
     for (int i = 0; i < steps; ++i) {
@@ -75,8 +75,10 @@ double integrateOverHemisphere(Pdf pdf) {
 }
 
 TEST(Sampling, HemispherePdfsIntegrateToOne) {
-    EXPECT_NEAR(integrateOverHemisphere([](float c) { return gpu::cosineHemispherePdf(c); }), 1.0, 1e-4);
-    EXPECT_NEAR(integrateOverHemisphere([](float) { return gpu::uniformHemispherePdf(); }), 1.0, 1e-4);
+    EXPECT_NEAR(integrateOverHemisphere([](float c) { return gpu::cosineHemispherePdf(c); }), 1.0,
+                1e-4);
+    EXPECT_NEAR(integrateOverHemisphere([](float) { return gpu::uniformHemispherePdf(); }), 1.0,
+                1e-4);
 }
 
 TEST(Sampling, SampledDirectionsAreUnitAndInTheUpperHemisphere) {
@@ -106,7 +108,9 @@ TEST(Sampling, TriangleBarycentricsAreUniformByChiSquare) {
     const double cellShare = 2.0 / (grid * grid); // cell area / triangle area 1/2
     for (int y = 0; y < grid; ++y)
         for (int x = 0; x < grid; ++x)
-            expected[size_t(y * grid + x)] = x + y < grid - 1 ? n * cellShare : x + y == grid - 1 ? n * cellShare / 2 : 0.0;
+            expected[size_t(y * grid + x)] = x + y < grid - 1    ? n * cellShare
+                                             : x + y == grid - 1 ? n * cellShare / 2
+                                                                 : 0.0;
     test::ChiSquareResult r = test::chiSquareTest(observed, expected);
     EXPECT_GT(r.pValue, kAlpha) << "chi2 " << r.statistic << " dof " << r.degreesOfFreedom;
 }
@@ -128,7 +132,8 @@ TEST(Sampling, BasisIsOrthonormalAndRightHanded) {
 }
 
 TEST(Sampling, PowerHeuristicWeightsSumToOne) {
-    EXPECT_FLOAT_EQ(gpu::powerHeuristic(1, 0.3f, 4, 0.7f) + gpu::powerHeuristic(4, 0.7f, 1, 0.3f), 1.0f);
+    EXPECT_FLOAT_EQ(gpu::powerHeuristic(1, 0.3f, 4, 0.7f) + gpu::powerHeuristic(4, 0.7f, 1, 0.3f),
+                    1.0f);
     EXPECT_EQ(gpu::powerHeuristic(1, 0.5f, 0, 0.9f), 1.0f); // no competing samples
     EXPECT_EQ(gpu::powerHeuristic(1, 0.0f, 1, 0.0f), 0.0f);
 }

@@ -35,7 +35,9 @@ TEST(StudentT, ManyDegreesOfFreedomApproachTheNormalTail) {
 
 TEST(StudentT, IncompleteBetaIsSymmetricAndBounded) {
     for (double x : {0.01, 0.3, 0.7, 0.99}) {
-        EXPECT_NEAR(regularizedIncompleteBeta(2.5, 0.5, x) + regularizedIncompleteBeta(0.5, 2.5, 1.0 - x), 1.0, 1e-12);
+        EXPECT_NEAR(regularizedIncompleteBeta(2.5, 0.5, x) +
+                        regularizedIncompleteBeta(0.5, 2.5, 1.0 - x),
+                    1.0, 1e-12);
     }
     EXPECT_EQ(regularizedIncompleteBeta(3.0, 4.0, 0.0), 0.0);
     EXPECT_EQ(regularizedIncompleteBeta(3.0, 4.0, 1.0), 1.0);
