@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# test.sh — the whole test suite from a fresh clone: dependencies, build, then every CTest
-# label (unit, cli, render, gpu, image) on lavapipe with validation on.
+# test.sh — the whole test suite from a fresh clone: dependencies, build, the format check
+# (ci/format_check.sh), then every CTest label (unit, cli, render, gpu, image, extremes, farm,
+# slurm, study) on lavapipe with validation on.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 bash ci/build.sh ci
+bash ci/format_check.sh
 source ci/lavapipe_env.sh
 ctest --preset ci "$@"
