@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """generate_feature_scenes.py — writes the small scenes that exercise one part of vkpt's scene
 model each (scenes/test/features/): analytic spheres, glTF metallic-roughness (GGX)
-materials, textures with KHR_texture_transform and alpha MASK, KHR_lights_punctual lights, and
-a scene lit only by the environment (with a tiny equirectangular .hdr).
+materials, textures with KHR_texture_transform and alpha MASK, normal textures (with generated
+and stored tangents), KHR_lights_punctual lights, a scene lit only by the environment (with a
+tiny equirectangular .hdr), and an orthographic camera.
 
 Run from anywhere:  python3 scenes/generate_feature_scenes.py
 
@@ -15,7 +16,8 @@ import math
 import struct
 from pathlib import Path
 
-from generate_loader_scenes import Gltf, data_uri, png_bytes, primitive, write, write_embedded
+from generate_loader_scenes import (Gltf, data_uri, floats, png_bytes, primitive, write,
+                                    write_embedded)
 
 FEATURES_DIR = Path(__file__).resolve().parent / "test" / "features"
 SPECULAR = "KHR_materials_specular"
@@ -24,6 +26,8 @@ TEXTURE_TRANSFORM = "KHR_texture_transform"
 PUNCTUAL = "KHR_lights_punctual"
 SHAPES = "KHR_implicit_shapes"
 UNSIGNED_SHORT = 5123
+ARRAY_BUFFER = 34962
+FLOAT = 5126
 
 
 class FeatureScene(Gltf):
@@ -61,9 +65,11 @@ class FeatureScene(Gltf):
         m.update(extra)
         return self.add("materials", m)
 
-    def quad(self, name, corner, edge_u, edge_v, material, uv_scale=1.0):
+    def quad(self, name, corner, edge_u, edge_v, material, uv_scale=1.0, tangent=None,
+             **node):
         """A rectangle corner + s·edge_u + t·edge_v, front face (counter-clockwise) along
-        edge_u × edge_v, with texture coordinates (s, t)·uv_scale."""
+        edge_u × edge_v, with texture coordinates (s, t)·uv_scale and, if given, the TANGENT
+        `tangent` (x, y, z, w) at every corner; `node` adds fields to its node."""
         p = [corner,
              [corner[i] + edge_u[i] for i in range(3)],
              [corner[i] + edge_u[i] + edge_v[i] for i in range(3)],
@@ -75,7 +81,10 @@ class FeatureScene(Gltf):
         prim = primitive(self.positions(p), self.normals([n] * 4),
                          self.indices([0, 1, 2, 0, 2, 3], UNSIGNED_SHORT), material,
                          texcoord=self.texcoords(uv))
-        self.roots.append(self.node(name=name, mesh=self.mesh([prim], name)))
+        if tangent is not None:
+            prim["attributes"]["TANGENT"] = self.accessor(
+                self.view(floats([tangent] * 4), target=ARRAY_BUFFER), FLOAT, 4, "VEC4")
+        self.roots.append(self.node(name=name, mesh=self.mesh([prim], name), **node))
 
     def box(self, name, lo, hi, material):
         """An axis-aligned box with outward faces."""
@@ -121,6 +130,14 @@ class FeatureScene(Gltf):
                                       "perspective": {"yfov": math.radians(yfov_degrees),
                                                       "znear": 0.01}})
         self.roots.append(self.node(name="camera", camera=camera, translation=list(eye)))
+
+    def orthographic_camera(self, eye, pitch_degrees, xmag, ymag):
+        """An orthographic camera at eye looking along −Z turned about X by pitch_degrees."""
+        camera = self.add("cameras", {"type": "orthographic", "name": "orthographic camera",
+                                      "orthographic": {"xmag": xmag, "ymag": ymag,
+                                                       "znear": 0.0, "zfar": 100.0}})
+        self.roots.append(self.node(name="camera", camera=camera, translation=list(eye),
+                                    rotation=quat_about_x(pitch_degrees)))
 
     def save(self, name):
         if self.extensions:
@@ -213,6 +230,59 @@ def textured():
     s.save("textured.gltf")
 
 
+def bumps_texel(x, y, size):
+    """A tangent-space normal map of a grid of round bumps: the normal of the height field
+    h = sin(2πx/size·2)·sin(2πy/size·2), stored as (n + 1)/2 in RGB."""
+    k = 2.0 * math.pi * 2.0 / size
+    u, v = (x + 0.5), (y + 0.5)
+    dx = 0.6 * math.cos(k * u) * math.sin(k * v)
+    dy = 0.6 * math.sin(k * u) * math.cos(k * v)
+    # +Y of a glTF normal texture points up the image (towards smaller v, smaller y).
+    n = [-dx, dy, 1.0]
+    length = math.sqrt(sum(c * c for c in n))
+    return tuple(int(round((c / length * 0.5 + 0.5) * 255)) for c in n) + (255,)
+
+
+def normal_map():
+    """Normal textures: a bumpy white floor (Lambertian, tangents generated), a bumpy glossy
+    back wall (GGX, scale 2), and a bumpy metal panel whose tangents come from the file (a
+    TANGENT attribute) on a mirrored node, under a quad light."""
+    s = FeatureScene()
+    size = 16
+    bumps = s.texture([[bumps_texel(x, y, size) for x in range(size)] for y in range(size)])
+    floor = s.material("bumpy floor", (0.8, 0.8, 0.8), diffuse=True,
+                       normalTexture={"index": bumps})
+    wall = s.material("bumpy glossy wall", (0.3, 0.5, 0.8), roughness=0.3,
+                      normalTexture={"index": bumps, "scale": 2.0})
+    room(s, floor, wall)
+    panel = s.material("bumpy metal panel", (0.9, 0.7, 0.4), metallic=1.0, roughness=0.4,
+                       normalTexture={"index": bumps})
+    # Mirrored in x by its node: the loader must flip the stored handedness.
+    s.quad("panel", [0.2, 0.05, -0.6], [0.9, 0.0, 0.0], [0.0, 0.8, 0.0], panel,
+           tangent=(1.0, 0.0, 0.0, 1.0), scale=[-1.0, 1.0, 1.0])
+    s.quad("light", [-0.5, 1.6, -0.5], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0],
+           s.material("light", (0.0, 0.0, 0.0), diffuse=True, emission=(1.0, 1.0, 1.0),
+                      strength=6.0))
+    s.save("normal_map.gltf")
+
+
+def orthographic():
+    """The room with blocks, seen by an orthographic camera from above at 35° below the
+    horizontal: parallel edges stay parallel in the image."""
+    s = FeatureScene()
+    white = s.material("white", (0.8, 0.8, 0.8), diffuse=True)
+    s.quad("floor", [-1.5, 0.0, 1.5], [3.0, 0.0, 0.0], [0.0, 0.0, -3.0], white)
+    s.quad("back wall", [-1.5, 0.0, -1.0], [3.0, 0.0, 0.0], [0.0, 2.0, 0.0], white)
+    s.box("block", [-0.9, 0.0, -0.4], [-0.3, 0.6, 0.2], white)
+    s.box("glossy block", [0.3, 0.0, -0.5], [0.8, 0.4, 0.0],
+          s.material("glossy", (0.2, 0.7, 0.3), roughness=0.3))
+    s.quad("light", [-0.5, 1.6, -0.5], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0],
+           s.material("light", (0.0, 0.0, 0.0), diffuse=True, emission=(1.0, 1.0, 1.0),
+                      strength=6.0))
+    s.orthographic_camera([0.0, 1.6, 1.7], -35.0, 1.4, 1.2)
+    s.save("orthographic.gltf")
+
+
 def punctual():
     """A point, a spot and a directional light (KHR_lights_punctual) on a floor and blocks."""
     s = FeatureScene()
@@ -275,6 +345,8 @@ def main():
     textured()
     punctual()
     environment_room()
+    normal_map()
+    orthographic()
     write(FEATURES_DIR / "sky.hdr", radiance_hdr(32, 16, sky_texel))
 
 

@@ -75,6 +75,7 @@ void writeFeatures(JsonWriter& json, const RenderReport& r) {
     json.field("baseColorTextures", f.baseColorTextures);
     json.field("metallicRoughnessTextures", f.metallicRoughnessTextures);
     json.field("emissiveTextures", f.emissiveTextures);
+    json.field("normalTextures", f.normalTextures);
     json.field("textureCoordinates", f.textureCoordinates());
     json.field("alphaMask", f.alphaMask).field("doubleSided", f.doubleSided);
     json.field("triangles", f.triangles).field("spheres", f.spheres);

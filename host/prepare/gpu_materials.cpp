@@ -44,6 +44,8 @@ std::vector<gpu::Material> makeGpuMaterials(const std::vector<SceneMaterial>& ma
         g.baseColorTexture = makeSlot(m.baseColorTexture);
         g.metallicRoughnessTexture = makeSlot(m.metallicRoughnessTexture);
         g.emissiveTexture = makeSlot(m.emissiveTexture);
+        g.normalTexture = makeSlot(m.normalTexture);
+        g.normalScale = m.normalScale;
         result.push_back(g);
     }
     return result;

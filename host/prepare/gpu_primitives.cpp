@@ -15,14 +15,17 @@ std::vector<Aabb> primitiveBounds(const Scene& scene) {
     return bounds;
 }
 
-GpuPrimitives makeGpuPrimitives(const Scene& scene, const BvhTree& tree, bool withUvs) {
+GpuPrimitives makeGpuPrimitives(const Scene& scene, const BvhTree& tree, bool withUvs,
+                                bool withTangents) {
     const std::size_t count = tree.primitiveOrder.size();
     const std::size_t triangleCount = scene.triangleCount();
     const bool haveTexcoords = scene.texcoords.size() == 3 * triangleCount;
+    const bool haveTangents = scene.tangents.size() == 3 * triangleCount;
     GpuPrimitives result;
     result.records.resize(count);
     result.normals.resize(count);
     if (withUvs) result.uvs.assign(3 * count, glm::vec2(0.0f));
+    if (withTangents) result.tangents.assign(count, gpu::TriangleTangents{});
     for (std::size_t i = 0; i < count; ++i) {
         const std::uint32_t source = tree.primitiveOrder[i];
         if (source >= triangleCount) {
@@ -40,6 +43,10 @@ GpuPrimitives makeGpuPrimitives(const Scene& scene, const BvhTree& tree, bool wi
         if (withUvs && haveTexcoords)
             for (std::size_t k = 0; k < 3; ++k)
                 result.uvs[3 * i + k] = scene.texcoords[3 * std::size_t(source) + k];
+        if (withTangents && haveTangents) {
+            const glm::vec4* t = &scene.tangents[3 * std::size_t(source)];
+            result.tangents[i] = {t[0], t[1], t[2]};
+        }
     }
     for (gpu::Triangle& record : result.records)
         if (scene.materials[record.materialIndex].alphaMode == AlphaMode::Mask)

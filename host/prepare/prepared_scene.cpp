@@ -68,10 +68,11 @@ PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options) {
     prepared.nodes = flattenWideBvh(prepared.tree);
 
     GpuPrimitives primitives =
-        makeGpuPrimitives(scene, prepared.tree, features.textureCoordinates());
+        makeGpuPrimitives(scene, prepared.tree, features.textureCoordinates(), features.tangents());
     prepared.triangles = std::move(primitives.records);
     prepared.normals = std::move(primitives.normals);
     prepared.uvs = std::move(primitives.uvs);
+    prepared.tangents = std::move(primitives.tangents);
     prepared.materials = makeGpuMaterials(scene.materials);
     if (features.textures()) {
         GpuTextures textures = makeGpuTextures(scene);

@@ -1,8 +1,8 @@
 // prepared_scene.h — the loaded scene in the layouts both executors consume: the BVH tree,
-// its flattened nodes, primitives (triangles and spheres) and their normals and texture
-// coordinates in BVH order, materials, textures, the emitter list and the environment. An
-// array a scene's features do not need stays empty (docs/scene-model.md), unless the
-// general layout was asked for.
+// its flattened nodes, primitives (triangles and spheres) and their normals, texture
+// coordinates and tangents in BVH order, materials, textures, the emitter list and the environment.
+// An array a scene's features do not need stays empty (docs/scene-model.md), unless the general
+// layout was asked for.
 #pragma once
 
 #include <optional>
@@ -22,6 +22,7 @@ struct PreparedScene {
     std::vector<gpu::Triangle> triangles; // triangles and spheres (PRIMITIVE_SPHERE)
     std::vector<gpu::TriangleNormals> normals;
     std::vector<glm::vec2> uvs; // 3 per primitive; empty unless features.textureCoordinates()
+    std::vector<gpu::TriangleTangents> tangents; // empty unless features.tangents()
     std::vector<gpu::Material> materials;
     std::vector<gpu::TextureInfo> textures;
     std::vector<std::uint32_t> texels; // every texture's RGBA8 texels, see gpu::TextureInfo

@@ -51,6 +51,7 @@ std::string sceneContentHash(const PreparedScene& scene, const gpu::Camera& came
     hash.add(scene.environmentTexels);
     // --general fills these even for a scene that does not use them.
     if (scene.usedFeatures.textureCoordinates()) hash.add(scene.uvs);
+    if (scene.usedFeatures.tangents()) hash.add(scene.tangents);
     if (scene.usedFeatures.textures()) {
         hash.add(scene.textures);
         hash.add(scene.texels);

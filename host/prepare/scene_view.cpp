@@ -7,6 +7,7 @@ gpu::SceneView makeSceneView(const PreparedScene& scene) {
     gpu::SceneView view{};
     view.primitives = scene.triangles;
     view.normals = scene.normals;
+    view.tangents = scene.tangents;
     view.uvs = scene.uvs;
     view.materials = scene.materials;
     view.textures = scene.textures;

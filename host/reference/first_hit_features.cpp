@@ -34,10 +34,11 @@ FeatureRecord pixelFeatures(FeatureJob& job, SceneTracer& tracer, std::uint32_t 
         // The colour's camera sample s (docs/integrator.md): same jitter, same ray.
         const glm::vec4 jitter = gpu::randomFloats(job.seed, pixel, s, 0, DIM_CAMERA);
         const glm::vec2 film(float(x) + jitter.x, float(y) + jitter.y);
+        const glm::vec3 origin = gpu::cameraRayOrigin(job.camera, film);
         const glm::vec3 direction = gpu::cameraRayDirection(job.camera, film);
-        const ClosestHit hit = tracer.closest(job.camera.position, direction, RayKind::Camera);
+        const ClosestHit hit = tracer.closest(origin, direction, RayKind::Camera);
         if (!hit.hit) continue;
-        const gpu::SurfacePoint surface = tracer.surfaceAt(hit, job.camera.position, direction);
+        const gpu::SurfacePoint surface = tracer.surfaceAt(hit, origin, direction);
         f.albedo += surface.shading.baseColor;
         f.normal += surface.shadingNormal;
         f.depth = std::min(f.depth, hit.t * glm::dot(direction, job.camera.forward));

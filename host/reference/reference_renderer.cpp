@@ -82,7 +82,8 @@ void renderPixel(RenderJob& job, IntegratorContext& context, std::uint32_t x, st
         SampleKey key{settings.seed, pixel, s};
         glm::vec4 jitter = gpu::randomFloats(key.seed, pixel, s, 0, DIM_CAMERA);
         glm::vec2 film(float(x) + jitter.x, float(y) + jitter.y);
-        CameraRay ray{job.camera.position, gpu::cameraRayDirection(job.camera, film)};
+        CameraRay ray{gpu::cameraRayOrigin(job.camera, film),
+                      gpu::cameraRayDirection(job.camera, film)};
         glm::vec3 radiance = integrate(context, key, ray);
         if (gpu::isFiniteSample(radiance)) {
             radiance = gpu::clampSample(radiance, settings.clamp);

@@ -36,7 +36,8 @@ Buffer makeAbsentData(GpuContext& context) {
 bool hasTexture(const gpu::Material& material) {
     return material.baseColorTexture.texture != NO_TEXTURE ||
            material.metallicRoughnessTexture.texture != NO_TEXTURE ||
-           material.emissiveTexture.texture != NO_TEXTURE;
+           material.emissiveTexture.texture != NO_TEXTURE ||
+           material.normalTexture.texture != NO_TEXTURE;
 }
 
 void checkTextureSlot(const PreparedScene& scene, const gpu::TextureSlot& slot) {
@@ -50,10 +51,16 @@ void checkTextures(const PreparedScene& scene) {
         checkTextureSlot(scene, material.baseColorTexture);
         checkTextureSlot(scene, material.metallicRoughnessTexture);
         checkTextureSlot(scene, material.emissiveTexture);
+        checkTextureSlot(scene, material.normalTexture);
         textured = textured || hasTexture(material);
     }
     VKPT_ASSERT(!textured || scene.uvs.size() == 3 * scene.triangles.size(),
                 "textured materials need three texture coordinates per primitive");
+    bool normalMapped = false;
+    for (const gpu::Material& material : scene.materials)
+        normalMapped = normalMapped || material.normalTexture.texture != NO_TEXTURE;
+    VKPT_ASSERT(!normalMapped || scene.tangents.size() == scene.triangles.size(),
+                "normal-mapped materials need a tangent record per primitive");
     for (const gpu::TextureInfo& texture : scene.textures) {
         VKPT_ASSERT(std::uint64_t(texture.texelOffset) +
                             std::uint64_t(texture.width) * texture.height <=
@@ -93,6 +100,7 @@ constexpr SceneBinding kSceneBindings[] = {
     {BINDING_BVH_NODES, &DeviceScene::bvhNodes},
     {BINDING_TRIANGLES, &DeviceScene::triangles},
     {BINDING_TRIANGLE_NORMALS, &DeviceScene::triangleNormals},
+    {BINDING_TRIANGLE_TANGENTS, &DeviceScene::triangleTangents},
     {BINDING_MATERIALS, &DeviceScene::materials},
     {BINDING_EMITTERS, &DeviceScene::emitters},
     {BINDING_TRIANGLE_UVS, &DeviceScene::triangleUvs},
@@ -137,6 +145,7 @@ DeviceScene uploadScene(GpuContext& context, const PreparedScene& scene) {
     d.bvhNodes = uploadArray(context, "bvhNodes", scene.nodes, texels);
     d.triangles = uploadArray(context, "triangles", scene.triangles, texels);
     d.triangleNormals = uploadArray(context, "triangleNormals", scene.normals, texels);
+    d.triangleTangents = uploadArray(context, "triangleTangents", scene.tangents, texels);
     d.triangleUvs = uploadArray(context, "triangleUvs", scene.uvs);
     d.materials = uploadArray(context, "materials", scene.materials, texels);
     d.textures = uploadArray(context, "textures", scene.textures, texels);

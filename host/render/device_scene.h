@@ -1,7 +1,7 @@
 // device_scene.h — the prepared scene in device-local storage buffers, uploaded through
-// staging buffers: one buffer per array the scene has (BVH nodes, primitives, normals, texture
-// coordinates, materials, textures and their texels, emitters and their CDF, the environment
-// map and its CDF). An empty array is not uploaded; its bindings get one shared 16-byte
+// staging buffers: one buffer per array the scene has (BVH nodes, primitives, normals, tangents,
+// texture coordinates, materials, textures and their texels, emitters and their CDF, the
+// environment map and its CDF). An empty array is not uploaded; its bindings get one shared 16-byte
 // placeholder, which the kernels specialised for the scene never read (docs/wavefront.md).
 #pragma once
 
@@ -25,6 +25,7 @@ struct DeviceScene {
     std::optional<Buffer> bvhNodes{};
     std::optional<Buffer> triangles{}; // triangles and spheres
     std::optional<Buffer> triangleNormals{};
+    std::optional<Buffer> triangleTangents{}; // normal maps only
     std::optional<Buffer> triangleUvs{};
     std::optional<Buffer> materials{};
     std::optional<Buffer> textures{};

@@ -36,7 +36,7 @@ std::string_view kernelName(WavefrontKernel kernel);
 // its list in lib/kernel_bindings.h.
 std::span<const KernelBinding> kernelBindings(WavefrontKernel kernel);
 
-inline constexpr std::uint32_t kWavefrontBindingCount = 24; // BINDING_COUNT of lib/wavefront.h
+inline constexpr std::uint32_t kWavefrontBindingCount = 25; // BINDING_COUNT of lib/wavefront.h
 
 // Which buffer each binding number refers to; a kernel's descriptor set takes its bindings
 // from here.

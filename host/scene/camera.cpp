@@ -54,13 +54,16 @@ gpu::Camera makeGpuCamera(const SceneCamera& camera, std::uint32_t width, std::u
     const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
     gpu::Camera gpuCamera{};
     gpuCamera.position = camera.position;
-    gpuCamera.tanHalfFovY = std::tan(0.5f * camera.yfov);
+    gpuCamera.tanHalfFovY = std::tan(0.5f * camera.yfov); // unused by an orthographic camera
     gpuCamera.right = right;
     gpuCamera.aspect = static_cast<float>(width) / static_cast<float>(height);
     gpuCamera.up = glm::cross(right, forward); // unit, and exactly orthogonal to both
     gpuCamera.width = width;
     gpuCamera.forward = forward;
     gpuCamera.height = height;
+    const bool orthographic = camera.projection == CameraProjection::Orthographic;
+    gpuCamera.projection = orthographic ? CAMERA_ORTHOGRAPHIC : CAMERA_PERSPECTIVE;
+    gpuCamera.orthoHalfHeight = orthographic ? camera.ymag : 0.0f;
     return gpuCamera;
 }
 

@@ -19,7 +19,8 @@ SceneCamera selectCamera(const Scene& scene, std::optional<int> index, float asp
 // distance where the bounding sphere just fits the narrower field of view.
 SceneCamera makeFramingCamera(const Bounds& bounds, float aspect);
 
-// Image width/height sets the horizontal field of view; yfov is kept.
+// Image width/height sets the horizontal field of view (perspective) or extent
+// (orthographic); yfov or ymag is kept.
 gpu::Camera makeGpuCamera(const SceneCamera& camera, std::uint32_t width, std::uint32_t height);
 
 } // namespace vkpt

@@ -241,6 +241,21 @@ std::vector<glm::vec3> readVec3Floats(const tinygltf::Model& model, int accessor
     return values;
 }
 
+std::vector<glm::vec4> readVec4Floats(const tinygltf::Model& model, int accessorIndex,
+                                      const std::string& where) {
+    const tinygltf::Accessor& accessor = findAccessor(model, accessorIndex, where);
+    requireLayout(accessor, accessorIndex, TINYGLTF_TYPE_VEC4, {TINYGLTF_COMPONENT_TYPE_FLOAT},
+                  where);
+    const Elements elements = locateElements(model, accessor, accessorIndex, where);
+    std::vector<glm::vec4> values(elements.count);
+    for (std::size_t i = 0; i < elements.count; ++i) {
+        const unsigned char* element = elements.first + i * elements.stride;
+        values[i] = {readValue<float>(element), readValue<float>(element + 4),
+                     readValue<float>(element + 8), readValue<float>(element + 12)};
+    }
+    return values;
+}
+
 std::vector<glm::vec2> readTexcoords(const tinygltf::Model& model, int accessorIndex,
                                      const std::string& where) {
     const tinygltf::Accessor& accessor = findAccessor(model, accessorIndex, where);

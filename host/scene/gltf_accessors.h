@@ -20,6 +20,10 @@ void checkBufferViews(const tinygltf::Model& model);
 std::vector<glm::vec3> readVec3Floats(const tinygltf::Model& model, int accessorIndex,
                                       const std::string& where);
 
+// VEC4 of FLOAT (TANGENT).
+std::vector<glm::vec4> readVec4Floats(const tinygltf::Model& model, int accessorIndex,
+                                      const std::string& where);
+
 // TEXCOORD_n values: VEC2 of FLOAT, or of normalized UNSIGNED_BYTE or UNSIGNED_SHORT mapped to
 // [0, 1], the three layouts glTF 2.0 allows (section 3.7.2.1).
 std::vector<glm::vec2> readTexcoords(const tinygltf::Model& model, int accessorIndex,

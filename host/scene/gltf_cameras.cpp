@@ -32,6 +32,25 @@ float checkedYfov(const tinygltf::Camera& camera, int nodeIndex) {
     return static_cast<float>(yfov);
 }
 
+// glTF orthographic cameras: xmag and ymag are the half-width and half-height of the view
+// (non-zero; a negative one mirrors, which vkpt does not support), zfar > znear >= 0.
+void setOrthographic(SceneCamera& camera, const tinygltf::Camera& gltfCamera, int nodeIndex) {
+    const tinygltf::OrthographicCamera& o = gltfCamera.orthographic;
+    if (!(o.xmag > 0.0 && o.ymag > 0.0 && std::isfinite(o.xmag) && std::isfinite(o.ymag))) {
+        throw GltfProblem(nodeName(nodeIndex) + ": orthographic camera xmag " +
+                          std::to_string(o.xmag) + ", ymag " + std::to_string(o.ymag) +
+                          " must be positive and finite");
+    }
+    if (!(o.znear >= 0.0 && o.zfar > o.znear)) {
+        throw GltfProblem(nodeName(nodeIndex) + ": orthographic camera znear " +
+                          std::to_string(o.znear) + ", zfar " + std::to_string(o.zfar) +
+                          " must satisfy zfar > znear >= 0");
+    }
+    camera.projection = CameraProjection::Orthographic;
+    camera.xmag = static_cast<float>(o.xmag);
+    camera.ymag = static_cast<float>(o.ymag);
+}
+
 glm::dvec3 unitOrThrow(const glm::dvec3& v, int nodeIndex) {
     const double length = glm::length(v);
     if (!(length > 0.0) || !std::isfinite(length)) {
@@ -53,14 +72,16 @@ void setBasis(SceneCamera& camera, const glm::dmat4& world, int nodeIndex) {
 
 } // namespace
 
-std::optional<SceneCamera> placeCamera(const tinygltf::Model& model, int nodeIndex,
-                                       const glm::dmat4& world) {
+SceneCamera placeCamera(const tinygltf::Model& model, int nodeIndex, const glm::dmat4& world) {
     const tinygltf::Camera& gltfCamera = findCamera(model, nodeIndex);
-    if (gltfCamera.type != "perspective") return std::nullopt; // tinygltf allows only the two
     SceneCamera camera;
     const auto& node = model.nodes[static_cast<std::size_t>(nodeIndex)];
     camera.name = gltfCamera.name.empty() ? node.name : gltfCamera.name;
-    camera.yfov = checkedYfov(gltfCamera, nodeIndex);
+    if (gltfCamera.type == "orthographic") { // tinygltf allows only the two types
+        setOrthographic(camera, gltfCamera, nodeIndex);
+    } else {
+        camera.yfov = checkedYfov(gltfCamera, nodeIndex);
+    }
     setBasis(camera, world, nodeIndex);
     return camera;
 }

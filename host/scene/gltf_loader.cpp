@@ -78,7 +78,9 @@ std::string formatNumber(double value) {
 class SceneBuilder {
 public:
     SceneBuilder(const tinygltf::Model& model, Scene& scene, gltf::Texcoords texcoords)
-        : model_(model), scene_(scene), texcoords_(texcoords) {}
+        : model_(model), scene_(scene), texcoords_(texcoords),
+          withTangents_(std::any_of(scene.materials.begin(), scene.materials.end(),
+                                    [](const SceneMaterial& m) { return m.hasNormalMap(); })) {}
 
     void visitNode(int nodeIndex, const glm::dmat4& world) {
         const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(nodeIndex)];
@@ -93,8 +95,6 @@ public:
         }
     }
 
-    int orthographicCameras() const { return orthographicCameras_; }
-
 private:
     void appendMesh(int nodeIndex, int meshIndex, const glm::dmat4& world) {
         if (meshIndex < 0 || static_cast<std::size_t>(meshIndex) >= model_.meshes.size()) {
@@ -107,9 +107,9 @@ private:
             const std::string where =
                 "mesh " + std::to_string(meshIndex) + ", primitive " + std::to_string(p);
             const tinygltf::Primitive& primitive = mesh.primitives[p];
-            gltf::appendPrimitiveTriangles(model_, primitive, world,
-                                           materialIndex(primitive.material, where), texcoords_,
-                                           where, scene_);
+            const std::uint32_t material = materialIndex(primitive.material, where);
+            gltf::appendPrimitiveTriangles(model_, primitive, world, material, texcoords_,
+                                           tangentsFor(material), where, scene_);
         }
     }
 
@@ -130,11 +130,15 @@ private:
     }
 
     void appendCamera(int nodeIndex, const glm::dmat4& world) {
-        if (std::optional<SceneCamera> camera = gltf::placeCamera(model_, nodeIndex, world)) {
-            scene_.cameras.push_back(std::move(*camera));
-        } else {
-            ++orthographicCameras_;
-        }
+        scene_.cameras.push_back(gltf::placeCamera(model_, nodeIndex, world));
+    }
+
+    // Tangents only where a scene has normal textures, generated or read only for the
+    // primitives whose material has one.
+    gltf::Tangents tangentsFor(std::uint32_t material) const {
+        if (!withTangents_) return gltf::Tangents::Skip;
+        return scene_.materials[material].hasNormalMap() ? gltf::Tangents::Read
+                                                         : gltf::Tangents::Zero;
     }
 
     // glTF material indices carry over; a primitive without one gets the default material,
@@ -160,8 +164,8 @@ private:
     const tinygltf::Model& model_;
     Scene& scene_;
     gltf::Texcoords texcoords_;
+    bool withTangents_; // some material has a normal texture
     std::optional<std::uint32_t> defaultMaterial_;
-    int orthographicCameras_ = 0;
 };
 
 std::string formatPoint(const glm::dvec3& p) {
@@ -198,17 +202,11 @@ std::vector<std::string> geometryNotes(const Scene& scene,
 
 // What the load ignored or changed, said once it has succeeded, so that a failing load prints
 // one line.
-std::vector<std::string> loadNotes(const tinygltf::Model& model, int orthographicCameras,
-                                   const LoadOptions& options) {
+std::vector<std::string> loadNotes(const tinygltf::Model& model, const LoadOptions& options) {
     std::vector<std::string> notes = gltf::materialNotes(model);
     const std::vector<std::string> ignored = ignoredExtensions(model);
     if (options.warnUnsupportedExtensions && !ignored.empty()) {
         notes.push_back("ignoring unsupported extensions: " + joinNames(ignored));
-    }
-    if (orthographicCameras > 0) {
-        notes.push_back("ignoring " + std::to_string(orthographicCameras) + " orthographic " +
-                        (orthographicCameras == 1 ? "camera" : "cameras") +
-                        " (only perspective cameras are supported)");
     }
     return notes;
 }
@@ -246,7 +244,7 @@ Scene buildScene(const std::string& path, const LoadOptions& options) {
     if (scene.triangleCount() == 0 && scene.spheres.empty()) {
         throw GltfProblem(noTrianglesMessage(scene));
     }
-    std::vector<std::string> notes = loadNotes(model, builder.orthographicCameras(), options);
+    std::vector<std::string> notes = loadNotes(model, options);
     for (const std::string& note : geometryNotes(scene, extent))
         notes.push_back(note);
     for (const std::string& note : notes)

@@ -1,5 +1,5 @@
-// gltf_materials.cpp — reads the core material factors, the base colour, metallic-roughness and
-// emissive textures, KHR_materials_emissive_strength and KHR_materials_specular.
+// gltf_materials.cpp — reads the core material factors, the base colour, metallic-roughness,
+// emissive and normal textures, KHR_materials_emissive_strength and KHR_materials_specular.
 #include "scene/gltf_materials.h"
 
 #include <cmath>
@@ -83,6 +83,18 @@ void readSpecular(const tinygltf::Material& material, std::size_t index, SceneMa
     converted.specularColor = glm::vec3(glm::dvec3(color[0], color[1], color[2]));
 }
 
+// glTF normalTexture: a textureInfo with a scale for the X and Y of the decoded normals.
+void readNormalTexture(const tinygltf::NormalTextureInfo& normal, TextureTable& textures,
+                       const std::string& where, SceneMaterial& converted) {
+    tinygltf::TextureInfo info;
+    info.index = normal.index;
+    info.texCoord = normal.texCoord;
+    info.extensions = normal.extensions;
+    converted.normalTexture = readTextureReference(info, textures, where);
+    if (!std::isfinite(normal.scale)) throw GltfProblem(where + ": scale is not a finite number");
+    converted.normalScale = static_cast<float>(normal.scale);
+}
+
 void readTextures(const tinygltf::Material& material, std::size_t index, TextureTable& textures,
                   SceneMaterial& converted) {
     const std::string where = materialName(index) + ": ";
@@ -93,6 +105,7 @@ void readTextures(const tinygltf::Material& material, std::size_t index, Texture
         pbr.metallicRoughnessTexture, textures, where + "metallicRoughnessTexture");
     converted.emissiveTexture =
         readTextureReference(material.emissiveTexture, textures, where + "emissiveTexture");
+    readNormalTexture(material.normalTexture, textures, where + "normalTexture", converted);
 }
 
 SceneMaterial convertMaterial(const tinygltf::Material& material, std::size_t index,

@@ -7,10 +7,12 @@
 #include <cstdint>
 #include <numeric>
 #include <optional>
+#include <span>
 #include <utility>
 
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_document.h"
+#include "scene/tangents.h"
 
 namespace vkpt::gltf {
 namespace {
@@ -23,6 +25,8 @@ struct WorldGeometry {
     bool mirrored = false; // the transform has a negative determinant
     bool withTexcoords = false;
     std::optional<std::vector<glm::vec2>> texcoords; // nullopt: (0, 0) at every vertex
+    Tangents tangentMode = Tangents::Skip;
+    std::optional<std::vector<glm::vec4>> tangents; // Read: nullopt generates them
 };
 
 const char* modeName(int mode) {
@@ -101,6 +105,32 @@ std::vector<glm::vec3> worldNormals(const tinygltf::Model& model, int accessor,
     return normals;
 }
 
+// TANGENT in world space: xyz by the transform's linear part (tangents lie along the surface,
+// like edges), w = ±1 flipped by a mirroring transform, since the world normals keep their side
+// (normalMatrix) while cross(n, t) turns over. nullopt when some tangent is zero or not finite:
+// the primitive's frames are generated instead.
+std::optional<std::vector<glm::vec4>> worldTangents(const tinygltf::Model& model, int accessor,
+                                                    const glm::dmat4& world,
+                                                    std::size_t vertexCount,
+                                                    const std::string& where) {
+    std::vector<glm::vec4> tangents = readVec4Floats(model, accessor, where + ": TANGENT");
+    if (tangents.size() != vertexCount) {
+        throw GltfProblem(where + ": TANGENT has " + std::to_string(tangents.size()) +
+                          " elements but POSITION has " + std::to_string(vertexCount));
+    }
+    const glm::dmat3 linear(world);
+    const double mirror = glm::determinant(linear) < 0.0 ? -1.0 : 1.0;
+    for (glm::vec4& tangent : tangents) {
+        const glm::dvec3 t = linear * glm::dvec3(glm::vec3(tangent));
+        const double length = glm::length(t);
+        if (!(length > 0.0) || !std::isfinite(length) || !std::isfinite(tangent.w)) {
+            return std::nullopt;
+        }
+        tangent = glm::vec4(glm::vec3(t / length), tangent.w < 0.0f ? -mirror : mirror);
+    }
+    return tangents;
+}
+
 // TEXCOORD_0 as stored: texture coordinates do not depend on the node transform. A NaN would
 // become a texel index on the GPU, so non-finite values are rejected.
 std::vector<glm::vec2> vertexTexcoords(const tinygltf::Model& model, int accessor,
@@ -144,7 +174,7 @@ std::vector<std::uint32_t> triangleIndices(const tinygltf::Model& model,
 }
 
 WorldGeometry readWorldGeometry(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
-                                const glm::dmat4& world, Texcoords texcoords,
+                                const glm::dmat4& world, Texcoords texcoords, Tangents tangents,
                                 const std::string& where) {
     const std::optional<int> position = attributeAccessor(primitive, "POSITION");
     if (!position) throw GltfProblem(where + ": no POSITION attribute");
@@ -157,6 +187,11 @@ WorldGeometry readWorldGeometry(const tinygltf::Model& model, const tinygltf::Pr
     if (const std::optional<int> texcoord = attributeAccessor(primitive, "TEXCOORD_0");
         texcoord && geometry.withTexcoords) {
         geometry.texcoords = vertexTexcoords(model, *texcoord, geometry.positions.size(), where);
+    }
+    geometry.tangentMode = tangents;
+    if (const std::optional<int> tangent = attributeAccessor(primitive, "TANGENT");
+        tangent && tangents == Tangents::Read) {
+        geometry.tangents = worldTangents(model, *tangent, world, geometry.positions.size(), where);
     }
     geometry.indices = triangleIndices(model, primitive, geometry.positions.size(), where);
     geometry.mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
@@ -208,21 +243,40 @@ void appendTriangle(const WorldGeometry& geometry, std::size_t first, std::uint3
             scene.texcoords.push_back(geometry.texcoords ? (*geometry.texcoords)[corner]
                                                          : glm::vec2(0.0f));
         }
+        if (geometry.tangentMode == Tangents::Zero) scene.tangents.emplace_back(0.0f);
+        if (geometry.tangentMode == Tangents::Read && geometry.tangents) {
+            scene.tangents.push_back((*geometry.tangents)[corner]);
+        }
     }
     scene.materialIndices.push_back(materialIndex);
+}
+
+// MikkTSpace frames for the corners from firstCorner on, as they were appended: world-space
+// positions, the final shading normals and TEXCOORD_0.
+void appendGeneratedTangents(std::size_t firstCorner, Scene& scene) {
+    const std::size_t count = scene.positions.size() - firstCorner;
+    const std::span<const glm::vec3> positions(scene.positions.data() + firstCorner, count);
+    const std::span<const glm::vec3> normals(scene.normals.data() + firstCorner, count);
+    const std::span<const glm::vec2> texcoords(scene.texcoords.data() + firstCorner, count);
+    const std::vector<glm::vec4> generated = generateTangents(positions, normals, texcoords);
+    scene.tangents.insert(scene.tangents.end(), generated.begin(), generated.end());
 }
 
 } // namespace
 
 void appendPrimitiveTriangles(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
                               const glm::dmat4& world, std::uint32_t materialIndex,
-                              Texcoords texcoords, const std::string& where, Scene& scene) {
+                              Texcoords texcoords, Tangents tangents, const std::string& where,
+                              Scene& scene) {
     requireTriangles(primitive.mode, where);
-    WorldGeometry geometry = readWorldGeometry(model, primitive, world, texcoords, where);
+    WorldGeometry geometry = readWorldGeometry(model, primitive, world, texcoords, tangents, where);
     if (geometry.normals) repairNormals(*geometry.normals, scene);
+    const std::size_t firstCorner = scene.positions.size();
     for (std::size_t first = 0; first < geometry.indices.size(); first += 3) {
         appendTriangle(geometry, first, materialIndex, scene);
     }
+    if (tangents == Tangents::Read && !geometry.tangents)
+        appendGeneratedTangents(firstCorner, scene);
 }
 
 } // namespace vkpt::gltf

@@ -14,13 +14,20 @@ namespace vkpt::gltf {
 // Whether to fill Scene::texcoords: only a scene with textures needs them.
 enum class Texcoords { Skip, Read };
 
+// What to put in Scene::tangents for a primitive: nothing (the scene has no normal textures),
+// zeros (its material has none), or its frames: the file's TANGENT, else generated
+// (scene/tangents.h). Read needs Texcoords::Read.
+enum class Tangents { Skip, Zero, Read };
+
 // Appends the primitive's triangles, in world space and with material materialIndex, to the
-// scene's triangle soup, and with Texcoords::Read their TEXCOORD_0 ((0, 0) when absent).
+// scene's triangle soup, with Texcoords::Read their TEXCOORD_0 ((0, 0) when absent), and their
+// tangents as `tangents` asks.
 // Normals are transformed by the inverse transpose, or generated flat when absent; a mirroring
 // transform swaps two corners so that the front face stays the front face. `where` names the
 // primitive ("mesh 3, primitive 0") in messages.
 void appendPrimitiveTriangles(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
                               const glm::dmat4& world, std::uint32_t materialIndex,
-                              Texcoords texcoords, const std::string& where, Scene& scene);
+                              Texcoords texcoords, Tangents tangents, const std::string& where,
+                              Scene& scene);
 
 } // namespace vkpt::gltf

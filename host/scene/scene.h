@@ -34,6 +34,10 @@ struct SceneMaterial {
     TextureReference baseColorTexture;         // sRGB-encoded RGBA
     TextureReference metallicRoughnessTexture; // linear: G roughness, B metallic
     TextureReference emissiveTexture;          // sRGB-encoded RGB
+    TextureReference normalTexture;            // linear tangent-space normals (glTF normalTexture)
+    float normalScale = 1.0f;                  // normalTexture.scale
+
+    bool hasNormalMap() const { return normalTexture.texture >= 0; }
 
     // Lambertian only: the glTF model with no metal and no specular layer.
     bool isDiffuseOnly() const {
@@ -93,13 +97,21 @@ struct SceneEnvironment {
     bool hasMap() const { return width > 0 && height > 0; }
 };
 
-// A perspective camera placed by the node tree. forward and up are unit and orthogonal.
+enum class CameraProjection : std::uint32_t { Perspective, Orthographic };
+
+// A camera placed by the node tree. forward and up are unit and orthogonal.
 struct SceneCamera {
     std::string name;
     glm::vec3 position{0.0f};
     glm::vec3 forward{0.0f, 0.0f, -1.0f};
     glm::vec3 up{0.0f, 1.0f, 0.0f};
-    float yfov = 0.8f; // vertical field of view, radians
+    CameraProjection projection = CameraProjection::Perspective;
+    float yfov = 0.8f; // perspective: vertical field of view, radians
+    // Orthographic: glTF's half-height (ymag) and half-width (xmag) of the view in world units.
+    // ymag is kept and the image's width/height sets the horizontal extent, as yfov is kept
+    // for a perspective camera (docs/conventions.md); xmag is recorded for the log.
+    float ymag = 1.0f;
+    float xmag = 1.0f;
 };
 
 struct Bounds {
@@ -125,13 +137,18 @@ struct Scene {
     // TEXCOORD_0, three per triangle like positions; empty unless some material has a texture
     // (then (0, 0) for primitives without the attribute).
     std::vector<glm::vec2> texcoords;
+    // Tangents (xyz unit, w the bitangent sign as glTF's TANGENT), three per triangle like
+    // positions; empty unless some material has a normal texture (then zero for the triangles
+    // of materials without one: no tangent frame). From the file's TANGENT, else generated
+    // (scene/tangents.h).
+    std::vector<glm::vec4> tangents;
     std::vector<SceneMaterial> materials;
     std::vector<SceneImage> images;
     std::vector<SceneTexture> textures;
     std::vector<SceneSphere> spheres;
     std::vector<SceneLight> lights;
     SceneEnvironment environment;
-    std::vector<SceneCamera> cameras; // perspective ones, in depth-first node-walk order
+    std::vector<SceneCamera> cameras; // in depth-first node-walk order
     // The file's world-space point that positions and cameras are measured from. The loader
     // moves it to the centre of a scene that lies far from the origin (relative to its size),
     // so that floats keep their precision there; rendering does not depend on it.

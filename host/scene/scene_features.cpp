@@ -53,6 +53,7 @@ void addMaterial(const SceneMaterial& material, SceneFeatures& features) {
     features.baseColorTextures |= material.baseColorTexture.texture >= 0;
     features.metallicRoughnessTextures |= material.metallicRoughnessTexture.texture >= 0;
     features.emissiveTextures |= material.emissiveTexture.texture >= 0;
+    features.normalTextures |= material.hasNormalMap();
     features.alphaMask |= material.alphaMode == AlphaMode::Mask;
     features.doubleSided |= material.doubleSided;
 }
@@ -109,6 +110,7 @@ std::array<bool, FEATURE_COUNT> SceneFeatures::kernelFeatures() const {
     on[FEATURE_ENVIRONMENT_MAP] = environmentMap;
     on[FEATURE_EMITTER_CDF] = emitterCdf();
     on[FEATURE_DOUBLE_SIDED] = doubleSided;
+    on[FEATURE_NORMAL_MAPS] = normalTextures;
     return on;
 }
 
@@ -135,6 +137,7 @@ SceneFeatures generalFeatures(const SceneFeatures& used) {
     SceneFeatures all;
     all.diffuseMaterials = all.metallicRoughnessMaterials = true;
     all.baseColorTextures = all.metallicRoughnessTextures = all.emissiveTextures = true;
+    all.normalTextures = true;
     all.alphaMask = all.doubleSided = true;
     all.triangles = all.spheres = true;
     all.emissiveTriangles = all.emissiveSpheres = true;
@@ -153,6 +156,7 @@ std::string describeFeatures(const SceneFeatures& features) {
     appendIf(features.baseColorTextures, "base colour", textures);
     appendIf(features.metallicRoughnessTextures, "metallic-roughness", textures);
     appendIf(features.emissiveTextures, "emissive", textures);
+    appendIf(features.normalTextures, "normal", textures);
     if (!textures.empty()) names.push_back("textures (" + joined(textures) + ")");
     appendIf(features.alphaMask, "alpha mask", names);
     appendIf(features.doubleSided, "double-sided", names);

@@ -19,8 +19,9 @@ struct SceneFeatures {
     bool baseColorTextures = false;
     bool metallicRoughnessTextures = false;
     bool emissiveTextures = false;
-    bool alphaMask = false;   // some material has alphaMode MASK
-    bool doubleSided = false; // some material is double-sided
+    bool normalTextures = false; // some material has a normal texture (and so tangents)
+    bool alphaMask = false;      // some material has alphaMode MASK
+    bool doubleSided = false;    // some material is double-sided
     bool triangles = false;
     bool spheres = false;
     bool emissiveTriangles = false;
@@ -34,10 +35,12 @@ struct SceneFeatures {
     bool general = false; // --general: all switches on, and the CDF read even for one emitter
 
     bool textures() const {
-        return baseColorTextures || metallicRoughnessTextures || emissiveTextures;
+        return baseColorTextures || metallicRoughnessTextures || emissiveTextures || normalTextures;
     }
     // TEXCOORD_0 is needed only to read textures.
     bool textureCoordinates() const { return textures(); }
+    // Per-corner tangents are needed only for normal textures.
+    bool tangents() const { return normalTextures; }
     bool punctualLights() const { return pointLights || spotLights || directionalLights; }
     bool emitterCdf() const { return general || emitterCount > 1; }
 

@@ -31,6 +31,6 @@ void main() {
     vec2 film = vec2(float(x) + jitter.x, float(y) + jitter.y);
     vec3 direction = cameraRayDirection(frame.camera, film);
     pathStates[slot] = PathState(vec3(1.0), pixel, vec3(0.0), sampleIndex, vec3(0.0), 0.0);
-    rays[slot] = RayRecord(frame.camera.position, slot, direction, 0u);
+    rays[slot] = RayRecord(cameraRayOrigin(frame.camera, film), slot, direction, 0u);
     if (slot == 0u) queueCounters[COUNTER_RAYS] = slots;
 }

@@ -26,5 +26,7 @@ layout(constant_id = FEATURE_ENVIRONMENT_MAP) const bool featureEnvironmentMap =
 layout(constant_id = FEATURE_EMITTER_CDF) const bool featureEmitterCdf = true;
 // Some material is double-sided: emission may leave the back face.
 layout(constant_id = FEATURE_DOUBLE_SIDED) const bool featureDoubleSided = true;
+// Some material has a normal texture: shading reads triangleTangents and bends the normal.
+layout(constant_id = FEATURE_NORMAL_MAPS) const bool featureNormalMaps = true;
 
 #endif // VKPT_FEATURES_GLSL

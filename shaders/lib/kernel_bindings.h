@@ -44,6 +44,7 @@
     UNIFORM(BINDING_FRAME_PARAMS)                                                                  \
     TEXELS(BINDING_TRIANGLES)                                                                      \
     TEXELS(BINDING_TRIANGLE_NORMALS)                                                               \
+    TEXELS(BINDING_TRIANGLE_TANGENTS)                                                              \
     TEXELS(BINDING_MATERIALS)                                                                      \
     TEXELS(BINDING_TEXTURES)                                                                       \
     TEXELS(BINDING_EMITTERS)                                                                       \

@@ -18,6 +18,7 @@
 VKPT_TEXEL_BUFFER(BINDING_BVH_NODES, bvhNodes)
 VKPT_TEXEL_BUFFER(BINDING_TRIANGLES, triangleTexels)
 VKPT_TEXEL_BUFFER(BINDING_TRIANGLE_NORMALS, triangleNormalTexels)
+VKPT_TEXEL_BUFFER(BINDING_TRIANGLE_TANGENTS, triangleTangentTexels)
 VKPT_TEXEL_BUFFER(BINDING_MATERIALS, materialTexels)
 VKPT_TEXEL_BUFFER(BINDING_TEXTURES, textureInfoTexels)
 VKPT_TEXEL_BUFFER(BINDING_EMITTERS, emitterTexels)
@@ -50,26 +51,36 @@ TriangleNormals fetchTriangleNormals(uint i) {
                            texelVec4(RECORD_TEXEL(triangleNormalTexels, 3u, i, 2u)));
 }
 
+TriangleTangents fetchTriangleTangents(uint i) {
+    return TriangleTangents(texelVec4(RECORD_TEXEL(triangleTangentTexels, 3u, i, 0u)),
+                            texelVec4(RECORD_TEXEL(triangleTangentTexels, 3u, i, 1u)),
+                            texelVec4(RECORD_TEXEL(triangleTangentTexels, 3u, i, 2u)));
+}
+
+#define MATERIAL_TEXELS 13u // sizeof(Material) / 16
+
 TextureSlot textureSlotFrom(uvec4 a, uvec4 b) {
     return TextureSlot(texelVec3(a), a.w, texelVec3(b), b.w);
 }
 
 TextureSlot fetchTextureSlot(uint material, uint first) {
-    return textureSlotFrom(RECORD_TEXEL(materialTexels, 10u, material, first),
-                           RECORD_TEXEL(materialTexels, 10u, material, first + 1u));
+    return textureSlotFrom(RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, material, first),
+                           RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, material, first + 1u));
 }
 
-// Ten texels, of which the compiler keeps the fetches of the fields a kernel reads.
+// Thirteen texels, of which the compiler keeps the fetches of the fields a kernel reads.
 Material fetchMaterial(uint i) {
-    uvec4 colour = RECORD_TEXEL(materialTexels, 10u, i, 0u);
-    uvec4 emission = RECORD_TEXEL(materialTexels, 10u, i, 1u);
-    uvec4 factors = RECORD_TEXEL(materialTexels, 10u, i, 2u);
-    uvec4 specular = RECORD_TEXEL(materialTexels, 10u, i, 3u);
+    uvec4 colour = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 0u);
+    uvec4 emission = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 1u);
+    uvec4 factors = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 2u);
+    uvec4 specular = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 3u);
     return Material(texelVec4(colour), texelVec3(emission), emission.w,
                     uintBitsToFloat(factors.x), uintBitsToFloat(factors.y),
                     uintBitsToFloat(factors.z), factors.w, texelVec3(specular),
                     uintBitsToFloat(specular.w), fetchTextureSlot(i, 4u), fetchTextureSlot(i, 6u),
-                    fetchTextureSlot(i, 8u));
+                    fetchTextureSlot(i, 8u), fetchTextureSlot(i, 10u),
+                    uintBitsToFloat(RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 12u).x), 0u,
+                    0u, 0u);
 }
 
 TextureInfo fetchTextureInfo(uint i) {

@@ -19,6 +19,10 @@ TriangleNormals sceneNormals(uint i) {
     return fetchTriangleNormals(i);
 }
 
+TriangleTangents sceneTangents(uint i) {
+    return fetchTriangleTangents(i);
+}
+
 Material sceneMaterial(uint i) {
     return fetchMaterial(i);
 }
@@ -69,6 +73,10 @@ bool sceneHasEmitterCdf() {
 
 bool sceneHasDoubleSided() {
     return featureDoubleSided;
+}
+
+bool sceneHasNormalMaps() {
+    return featureNormalMaps;
 }
 
 // trace_closest's record of a hit as the shared code takes it.

@@ -46,7 +46,8 @@ namespace vkpt::gpu {
 #define BINDING_HIT_TEXELS 21
 #define BINDING_SHADOW_RAY_TEXELS 22
 #define BINDING_PATH_STATE_TEXELS 23
-#define BINDING_COUNT 24
+#define BINDING_TRIANGLE_TANGENTS 24 // TriangleTangents, uniform texel buffer (normal maps)
+#define BINDING_COUNT 25
 
 // ---------------------------------------------------------------------------------------------
 // What every kernel needs to know about the render, uploaded once (buffer frameParams).
@@ -176,10 +177,10 @@ struct PixelState {
 #define DISPATCH_WORDS 8u
 
 #ifdef __cplusplus
-static_assert(sizeof(FrameParams) == 160 && offsetof(FrameParams, seed) == 64 &&
-              offsetof(FrameParams, adaptiveDarkFloor) == 108 &&
-              offsetof(FrameParams, unused0) == 120 && offsetof(FrameParams, sampleClamp) == 124 &&
-              offsetof(FrameParams, environment) == 128);
+static_assert(sizeof(FrameParams) == 176 && offsetof(FrameParams, seed) == 80 &&
+              offsetof(FrameParams, adaptiveDarkFloor) == 124 &&
+              offsetof(FrameParams, unused0) == 136 && offsetof(FrameParams, sampleClamp) == 140 &&
+              offsetof(FrameParams, environment) == 144);
 static_assert(sizeof(PassParams) == 32);
 static_assert(sizeof(PathState) == 48 && offsetof(PathState, radiance) == 16 &&
               offsetof(PathState, lightScale) == 32 && offsetof(PathState, previousBsdfPdf) == 44);

@@ -137,6 +137,16 @@ struct TriangleNormals {
     vec4 n2;
 };
 
+// Tangents for normal mapping, one record per primitive in the same order: the unit tangent of
+// each corner in xyz and the bitangent sign in w (glTF's TANGENT, bitangent = w·cross(n, t)).
+// Present only when a used material has a normal texture (FEATURE_NORMAL_MAPS); a primitive
+// whose material has none, or a sphere, holds zeros (w = 0: no tangent frame).
+struct TriangleTangents {
+    vec4 t0;
+    vec4 t1;
+    vec4 t2;
+};
+
 // Texture coordinates (TEXCOORD_0) live in their own buffer, three vec2 per primitive in BVH
 // order (triangleUvs[3i + k]), present only when the scene has textures.
 
@@ -176,6 +186,14 @@ struct Material {
     TextureSlot baseColorTexture; // sRGB; alpha in .a
     TextureSlot metallicRoughnessTexture; // linear; roughness in .g, metallic in .b
     TextureSlot emissiveTexture;          // sRGB
+    // Normal mapping (glTF normalTexture): the tangent-space normal is
+    // normalize((texel·2 − 1) · (normalScale, normalScale, 1)) in the frame of
+    // triangleTangents (shared/normal_mapping.h). No texture: the interpolated normal.
+    TextureSlot normalTexture; // linear; +Y of the texture along the bitangent (glTF)
+    float normalScale;         // glTF normalTexture.scale
+    uint normalUnused0;
+    uint normalUnused1;
+    uint normalUnused2;
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -245,20 +263,30 @@ struct EnvironmentParams {
 #define FEATURE_ENVIRONMENT_MAP 6
 #define FEATURE_EMITTER_CDF 7
 #define FEATURE_DOUBLE_SIDED 8
-#define FEATURE_COUNT 9
+#define FEATURE_NORMAL_MAPS 9
+#define FEATURE_COUNT 10
 
 // ---------------------------------------------------------------------------------------------
-// Pinhole camera. Pixel (0, 0) is the top-left; a sample at (x + u, y + v) maps to the
-// direction forward + sx·right + sy·up with sx, sy on the image plane at distance 1.
+// The camera (shared/camera.h). Pixel (0, 0) is the top-left; a sample at (x + u, y + v) has
+// image-plane coordinates sx (right, scaled by aspect) and sy (up) in [-1, 1]. A perspective
+// camera (pinhole) shoots from position along forward + tanHalfFovY·(sx·right + sy·up); an
+// orthographic one along forward from position + orthoHalfHeight·(sx·right + sy·up).
+#define CAMERA_PERSPECTIVE 0u
+#define CAMERA_ORTHOGRAPHIC 1u
+
 struct Camera {
     vec3 position;
-    float tanHalfFovY;
+    float tanHalfFovY; // perspective: tan(yfov / 2)
     vec3 right;
     float aspect; // width / height
     vec3 up;
     uint width;
     vec3 forward;
     uint height;
+    uint projection;       // CAMERA_*
+    float orthoHalfHeight; // orthographic: glTF ymag, the view's half-height in world units
+    uint unused0;
+    uint unused1;
 };
 
 #ifdef __cplusplus
@@ -270,12 +298,15 @@ static_assert(sizeof(Triangle) == 48 && offsetof(Triangle, materialIndex) == 12 
 static_assert(sizeof(TriangleNormals) == 48 && offsetof(TriangleNormals, n2) == 32);
 static_assert(sizeof(TextureSlot) == 32 && offsetof(TextureSlot, texture) == 12 &&
               offsetof(TextureSlot, transformRow1) == 16);
-static_assert(sizeof(Material) == 160 && offsetof(Material, emission) == 16 &&
-              offsetof(Material, flags) == 28 && offsetof(Material, metallic) == 32 &&
-              offsetof(Material, alphaMode) == 44 && offsetof(Material, specularColor) == 48 &&
-              offsetof(Material, specular) == 60 && offsetof(Material, baseColorTexture) == 64 &&
+static_assert(offsetof(Material, emission) == 16 && offsetof(Material, flags) == 28 &&
+              offsetof(Material, metallic) == 32 && offsetof(Material, alphaMode) == 44 &&
+              offsetof(Material, specularColor) == 48 && offsetof(Material, specular) == 60 &&
+              offsetof(Material, baseColorTexture) == 64 &&
               offsetof(Material, metallicRoughnessTexture) == 96 &&
               offsetof(Material, emissiveTexture) == 128);
+static_assert(sizeof(TriangleTangents) == 48 && offsetof(TriangleTangents, t2) == 32);
+static_assert(sizeof(Material) == 208 && offsetof(Material, normalTexture) == 160 &&
+              offsetof(Material, normalScale) == 192);
 static_assert(sizeof(TextureInfo) == 16);
 static_assert(sizeof(Emitter) == 64 && offsetof(Emitter, direction) == 16 &&
               offsetof(Emitter, primitive) == 28 && offsetof(Emitter, intensity) == 32 &&
@@ -283,9 +314,11 @@ static_assert(sizeof(Emitter) == 64 && offsetof(Emitter, direction) == 16 &&
               offsetof(Emitter, cosOuterCone) == 60);
 static_assert(sizeof(EnvironmentParams) == 32 && offsetof(EnvironmentParams, width) == 12 &&
               offsetof(EnvironmentParams, emitterIndex) == 20);
-static_assert(sizeof(Camera) == 64 && offsetof(Camera, right) == 16 && offsetof(Camera, up) == 32 &&
+static_assert(offsetof(Camera, right) == 16 && offsetof(Camera, up) == 32 &&
               offsetof(Camera, width) == 44 && offsetof(Camera, forward) == 48 &&
               offsetof(Camera, height) == 60);
+static_assert(sizeof(Camera) == 80 && offsetof(Camera, projection) == 64 &&
+              offsetof(Camera, orthoHalfHeight) == 68);
 } // namespace vkpt::gpu
 #endif
 

@@ -11,6 +11,7 @@
 // scene lacks folds away.
 //
 //   Triangle scenePrimitive(uint i)         TriangleNormals sceneNormals(uint i)
+//   TriangleTangents sceneTangents(uint i)
 //   vec2 sceneUv(uint k)  (3 per primitive) Material sceneMaterial(uint i)
 //   TextureInfo sceneTexture(uint i)        textureTexels[] (texture_sampling.h)
 //   Emitter sceneEmitter(uint i)            uint sceneEmitterCount()
@@ -18,7 +19,7 @@
 //   environmentTexels[], environmentCdf[] (environment.h)
 //   bool sceneHasMetallicRoughness(), sceneHasTextures(), sceneHasSpheres(),
 //        sceneHasPunctualLights(), sceneHasEnvironment(), sceneHasEmitterCdf(),
-//        sceneHasDoubleSided()
+//        sceneHasDoubleSided(), sceneHasNormalMaps()
 #ifndef VKPT_SCENE_VIEW_H
 #define VKPT_SCENE_VIEW_H
 
@@ -35,7 +36,8 @@ namespace vkpt::gpu {
 struct SceneView {
     std::span<const Triangle> primitives; // triangles and spheres, BVH order
     std::span<const TriangleNormals> normals;
-    std::span<const vec2> uvs; // 3 per primitive
+    std::span<const TriangleTangents> tangents; // empty unless FEATURE_NORMAL_MAPS
+    std::span<const vec2> uvs;                  // 3 per primitive
     std::span<const Material> materials;
     std::span<const TextureInfo> textures;
     std::span<const uint> textureTexels;
@@ -60,6 +62,9 @@ VKPT_FN Triangle scenePrimitive(uint i VKPT_SCENE_PARAM) {
 }
 VKPT_FN TriangleNormals sceneNormals(uint i VKPT_SCENE_PARAM) {
     return scene.normals[i];
+}
+VKPT_FN TriangleTangents sceneTangents(uint i VKPT_SCENE_PARAM) {
+    return scene.tangents[i];
 }
 VKPT_FN vec2 sceneUv(uint k VKPT_SCENE_PARAM) {
     return scene.uvs[k];
@@ -103,6 +108,9 @@ VKPT_FN bool sceneHasEmitterCdf(VKPT_SCENE_PARAM_ONLY) {
 }
 VKPT_FN bool sceneHasDoubleSided(VKPT_SCENE_PARAM_ONLY) {
     return scene.features[FEATURE_DOUBLE_SIDED];
+}
+VKPT_FN bool sceneHasNormalMaps(VKPT_SCENE_PARAM_ONLY) {
+    return scene.features[FEATURE_NORMAL_MAPS];
 }
 
 } // namespace vkpt::gpu

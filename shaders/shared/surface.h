@@ -10,6 +10,7 @@
 #include "host_device.h"
 #include "intersect.h"
 #include "materials.h"
+#include "normal_mapping.h"
 #include "ray_offset.h"
 #include "sampling.h"
 #include "scene_view.h"
@@ -22,7 +23,7 @@ namespace vkpt::gpu {
 struct SurfacePoint {
     vec3 position;
     vec3 geometricNormal;    // unit, on the side the ray came from
-    vec3 shadingNormal;      // unit, interpolated, on the same side
+    vec3 shadingNormal;      // unit, interpolated (normal-mapped and bent), on the same side
     vec3 rawShadingNormal;   // as stored (a sphere's outward normal), for the normals integrator
     bool frontFace;          // triangle: the counter-clockwise side; sphere: outside
     bool doubleSided;        // the material emits from both sides
@@ -62,7 +63,19 @@ VKPT_FN void fillSphere(VKPT_INOUT(SurfacePoint) s, Triangle sphere, TriangleHit
     s.shadingNormal = s.geometricNormal;
 }
 
-// The material at the point: factors times textures (each read only when present).
+// The normal texture's shading normal: mapped in the interpolated normal's tangent frame, turned
+// to the side the shading normal was turned to, and bent towards s.outgoing (normal_mapping.h).
+VKPT_FN vec3 normalMappedShadingNormal(SurfacePoint s, Material m, TriangleHit hit,
+                                       vec2 uv VKPT_SCENE_PARAM) {
+    vec3 n = normalize(s.rawShadingNormal);
+    vec4 tangent = interpolatedTangent(s.triangle, hit.u, hit.v VKPT_SCENE_ARG);
+    vec3 mapped = mappedNormal(m.normalTexture, m.normalScale, uv, n, tangent VKPT_SCENE_ARG);
+    if (dot(n, s.shadingNormal) < 0.0f) mapped = -mapped;
+    return bendTowardsViewer(mapped, s.geometricNormal, s.outgoing);
+}
+
+// The material at the point: factors times textures (each read only when present). Needs
+// s.outgoing for the normal texture's bend.
 VKPT_FN void fillMaterial(VKPT_INOUT(SurfacePoint) s, Triangle primitive,
                           TriangleHit hit VKPT_SCENE_PARAM) {
     Material m = sceneMaterial(primitive.materialIndex VKPT_SCENE_ARG);
@@ -79,6 +92,12 @@ VKPT_FN void fillMaterial(VKPT_INOUT(SurfacePoint) s, Triangle primitive,
         roughness = m.roughness * metalRough.y;
         s.emission = emissionAt(m, uv VKPT_SCENE_ARG);
     }
+    if (sceneHasNormalMaps(VKPT_SCENE_ARG_ONLY) && hasTexture(m.normalTexture VKPT_SCENE_ARG) &&
+        length(s.rawShadingNormal) > 0.0f) {
+        vec2 uv =
+            primitiveUv(s.triangle, primitive, hit.u, hit.v, s.rawShadingNormal VKPT_SCENE_ARG);
+        s.shadingNormal = normalMappedShadingNormal(s, m, hit, uv VKPT_SCENE_ARG);
+    }
     bool metallicRoughness = sceneHasMetallicRoughness(VKPT_SCENE_ARG_ONLY) &&
                              (m.flags & MATERIAL_METALLIC_ROUGHNESS) != 0u;
     s.shading = makeShadingMaterial(vec3(baseColor), metallic, roughness, m.specular,
@@ -94,13 +113,13 @@ VKPT_FN SurfacePoint makeSurfacePoint(uint index, TriangleHit hit, vec3 origin,
     Triangle primitive = scenePrimitive(index VKPT_SCENE_ARG);
     SurfacePoint s;
     s.triangle = index;
+    s.outgoing = -normalize(direction);
     if (sceneHasSpheres(VKPT_SCENE_ARG_ONLY) && isSpherePrimitive(primitive)) {
         fillSphere(s, primitive, hit, origin, direction);
     } else {
         fillTriangle(s, primitive, hit, direction VKPT_SCENE_ARG);
     }
     fillMaterial(s, primitive, hit VKPT_SCENE_ARG);
-    s.outgoing = -normalize(direction);
     return s;
 }
 

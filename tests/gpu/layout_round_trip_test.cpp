@@ -47,7 +47,7 @@ TextureSlot makeTextureSlot(Values& x) {
 }
 
 Camera makeCamera(Values& x) {
-    return {x.v3(), x.f(), x.v3(), x.f(), x.v3(), x.u(), x.v3(), x.u()};
+    return {x.v3(), x.f(), x.v3(), x.f(), x.v3(), x.u(), x.v3(), x.u(), x.u(), x.f(), x.u(), x.u()};
 }
 
 EnvironmentParams makeEnvironment(Values& x) {
@@ -76,6 +76,11 @@ SharedStructs makeStructs() {
         m.baseColorTexture = makeTextureSlot(x);
         m.metallicRoughnessTexture = makeTextureSlot(x);
         m.emissiveTexture = makeTextureSlot(x);
+        m.normalTexture = makeTextureSlot(x);
+        m.normalScale = x.f();
+        m.normalUnused0 = x.u();
+        m.normalUnused1 = x.u();
+        m.normalUnused2 = x.u();
         s.materials.push_back(m);
         s.textures.push_back({x.u(), x.u(), x.u(), x.u()});
         s.emitters.push_back(

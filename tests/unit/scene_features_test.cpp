@@ -37,6 +37,7 @@ std::string kinds(const SceneFeatures& f) {
         {f.baseColorTextures, "baseColorTex"},
         {f.metallicRoughnessTextures, "mrTex"},
         {f.emissiveTextures, "emissiveTex"},
+        {f.normalTextures, "normalTex"},
         {f.alphaMask, "mask"},
         {f.doubleSided, "doubleSided"},
         {f.triangles, "triangles"},

@@ -65,6 +65,10 @@ void putCamera(Camera camera) {
     putUint(camera.width);
     putVec3(camera.forward);
     putUint(camera.height);
+    putUint(camera.projection);
+    putFloat(camera.orthoHalfHeight);
+    putUint(camera.unused0);
+    putUint(camera.unused1);
 }
 
 void putEnvironment(EnvironmentParams environment) {
@@ -138,6 +142,11 @@ void main() {
     putTextureSlot(materials[i].baseColorTexture);
     putTextureSlot(materials[i].metallicRoughnessTexture);
     putTextureSlot(materials[i].emissiveTexture);
+    putTextureSlot(materials[i].normalTexture);
+    putFloat(materials[i].normalScale);
+    putUint(materials[i].normalUnused0);
+    putUint(materials[i].normalUnused1);
+    putUint(materials[i].normalUnused2);
 
     cursor = LAYOUT_OFFSET_TEXTURES + i * LAYOUT_WORDS_TEXTURE_INFO;
     putUint(textures[i].texelOffset);

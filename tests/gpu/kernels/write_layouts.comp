@@ -69,6 +69,10 @@ Camera takeCamera() {
     camera.width = takeUint();
     camera.forward = takeVec3();
     camera.height = takeUint();
+    camera.projection = takeUint();
+    camera.orthoHalfHeight = takeFloat();
+    camera.unused0 = takeUint();
+    camera.unused1 = takeUint();
     return camera;
 }
 
@@ -147,6 +151,11 @@ void main() {
     materials[i].baseColorTexture = takeTextureSlot();
     materials[i].metallicRoughnessTexture = takeTextureSlot();
     materials[i].emissiveTexture = takeTextureSlot();
+    materials[i].normalTexture = takeTextureSlot();
+    materials[i].normalScale = takeFloat();
+    materials[i].normalUnused0 = takeUint();
+    materials[i].normalUnused1 = takeUint();
+    materials[i].normalUnused2 = takeUint();
 
     cursor = LAYOUT_OFFSET_TEXTURES + i * LAYOUT_WORDS_TEXTURE_INFO;
     textures[i].texelOffset = takeUint();
