@@ -8,6 +8,8 @@ packages=(
     libvulkan-dev libvulkan-volk-dev mesa-vulkan-drivers vulkan-validationlayers
     glslang-tools glslang-dev
     libglm-dev libstb-dev libtinygltf-dev
+    # Compressed glTF: Draco meshes, meshopt buffer views, WebP textures; the JSON pre-pass.
+    libdraco-dev libmeshoptimizer-dev libwebp-dev nlohmann-json3-dev
     libgtest-dev
     gnuplot-nox # the trade study's plots (vkpt-study; the CI test label `study` draws them)
     libembree-dev # benchmarks only (embree-ref, traversal_bench): never linked by vkpt or vkpt-ref

@@ -110,6 +110,8 @@ class Gltf:
     def accessor(self, view, component_type, count, type_, byte_offset=0, **extra):
         accessor = {"bufferView": view, "componentType": component_type, "count": count,
                     "type": type_}
+        if view is None:  # the data comes from an extension (Draco)
+            del accessor["bufferView"]
         if byte_offset:
             accessor["byteOffset"] = byte_offset
         accessor.update(extra)
@@ -738,8 +740,9 @@ def no_triangles():
 
 def required_extension():
     gltf = triangle()
-    gltf.doc["extensionsUsed"] = ["KHR_draco_mesh_compression"]
-    gltf.doc["extensionsRequired"] = ["KHR_draco_mesh_compression"]
+    unknown = ["KHR_texture_basisu", "EXT_mesh_gpu_instancing"]
+    gltf.doc["extensionsUsed"] = unknown
+    gltf.doc["extensionsRequired"] = unknown
     return embedded_text(gltf)
 
 
@@ -799,6 +802,65 @@ def sphere_non_uniform_scale():
     return embedded_text(gltf)
 
 
+def uses(gltf, *extensions, required=True):
+    gltf.doc["extensionsUsed"] = list(extensions)
+    if required:
+        gltf.doc["extensionsRequired"] = list(extensions)
+
+
+def draco_corrupt():
+    """A Draco primitive whose compressed view holds bytes that are not a Draco stream."""
+    gltf = Gltf()
+    compressed = gltf.view(b"DRACO" + bytes(range(1, 28)))
+    position = gltf.accessor(None, FLOAT, 3, "VEC3", min=[0, 0, 0], max=[1, 1, 0])
+    indices = gltf.accessor(None, UNSIGNED_SHORT, 3, "SCALAR")
+    draco = {"bufferView": compressed, "attributes": {"POSITION": 0}}
+    prim = primitive(position, indices=indices)
+    prim["extensions"] = {"KHR_draco_mesh_compression": draco}
+    gltf.scene([gltf.node(mesh=gltf.mesh([prim]))])
+    uses(gltf, "KHR_draco_mesh_compression")
+    return embedded_text(gltf)
+
+
+def meshopt_scene(compressed, count, stride, mode="ATTRIBUTES", filter_=None):
+    """The triangle with POSITION in buffer view 0 of a fallback buffer (buffer 1), compressed
+    as `compressed` in buffer 0; index data stays uncompressed."""
+    gltf = triangle(normal=None)
+    position_view = gltf.doc["bufferViews"][0]
+    source = gltf.view(compressed)
+    meshopt = {"buffer": 0, "byteOffset": gltf.doc["bufferViews"][source].get("byteOffset", 0),
+               "byteLength": len(compressed), "byteStride": stride, "count": count, "mode": mode}
+    if filter_ is not None:
+        meshopt["filter"] = filter_
+    gltf.embed_buffer()
+    gltf.doc["buffers"].append({"byteLength": 64,
+                                "extensions": {"EXT_meshopt_compression": {"fallback": True}}})
+    position_view.update({"buffer": 1, "byteOffset": 0, "byteStride": stride,
+                          "extensions": {"EXT_meshopt_compression": meshopt}})
+    uses(gltf, "EXT_meshopt_compression")
+    return json_text(gltf.doc)
+
+
+def meshopt_uncompressed_fallback_view():
+    gltf = triangle(normal=None)
+    gltf.embed_buffer()
+    gltf.doc["buffers"].append({"byteLength": 36,
+                                "extensions": {"EXT_meshopt_compression": {"fallback": True}}})
+    gltf.doc["bufferViews"][0].update({"buffer": 1, "byteOffset": 0})
+    uses(gltf, "EXT_meshopt_compression")
+    return json_text(gltf.doc)
+
+
+def quantized_normal_not_normalized():
+    gltf = triangle(normal=None)
+    view = gltf.view(struct.pack("<12b", 0, 0, 127, 0, 0, 0, 127, 0, 0, 0, 127, 0),
+                     stride=4, target=ARRAY_BUFFER)
+    normal = gltf.accessor(view, BYTE, 3, "VEC3")
+    gltf.doc["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = normal
+    uses(gltf, "KHR_mesh_quantization")
+    return embedded_text(gltf)
+
+
 def textured_triangle(image, texture=None, texture_info=None):
     """The triangle with TEXCOORD_0 and material 0 reading texture 0 of image 0."""
     gltf = triangle(material=0)
@@ -839,7 +901,7 @@ def write_invalid_scenes():
         ("sparse_accessor.gltf", sparse_accessor(), "a sparse POSITION accessor"),
         ("no_triangles.gltf", no_triangles(), "a scene whose only node has no mesh"),
         ("required_extension.gltf", required_extension(),
-         "requires KHR_draco_mesh_compression"),
+         "requires two extensions vkpt does not implement"),
         ("node_cycle.gltf", node_cycle(), "node 0 is its own grandchild"),
         ("missing_node.gltf", missing_node(), "the scene lists node 7 of 2"),
         ("missing_material.gltf", missing_material(), "material 3 of 2"),
@@ -866,6 +928,23 @@ def write_invalid_scenes():
          "a GIF where a PNG or JPEG must be"),
         ("missing_image.gltf", textured_triangle({"uri": "missing_image.png"}),
          "its image file does not exist"),
+        ("draco_corrupt.gltf", draco_corrupt(), "a Draco primitive whose data is not Draco"),
+        # The header byte of a meshopt vertex stream (0xA0, version 0) and 7 bytes, far fewer
+        # than 3 vertices of 12 bytes need.
+        ("meshopt_truncated.gltf", meshopt_scene(b"\xa0" + bytes(7), 3, 12),
+         "a meshopt ATTRIBUTES stream cut short"),
+        ("meshopt_filter_stride.gltf", meshopt_scene(b"\xa0" + bytes(63), 3, 12,
+                                                     filter_="OCTAHEDRAL"),
+         "an OCTAHEDRAL filter on 12-byte vertices (it needs 4 or 8)"),
+        ("meshopt_fallback_read.gltf", meshopt_uncompressed_fallback_view(),
+         "an uncompressed buffer view on a meshopt fallback buffer"),
+        ("quantized_normal_not_normalized.gltf", quantized_normal_not_normalized(),
+         "KHR_mesh_quantization NORMAL of BYTE without normalized"),
+        ("webp_undecodable.gltf",
+         textured_triangle({"uri": data_uri(b"RIFF\x1c\x00\x00\x00WEBPVP8L" + bytes(16),
+                                            "image/webp")},
+                           texture={"extensions": {"EXT_texture_webp": {"source": 0}}}),
+         "an EXT_texture_webp image whose data is not WebP"),
         ("texcoord_1.gltf", textured_triangle({"uri": data_uri(TEXTURE_PNG, "image/png")},
                                               texture_info={"texCoord": 1}),
          "a base colour texture on TEXCOORD_1"),

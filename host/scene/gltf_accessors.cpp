@@ -2,6 +2,7 @@
 // then reading them with memcpy (glTF data need not be aligned for the host).
 #include "scene/gltf_accessors.h"
 
+#include <algorithm>
 #include <cstring>
 #include <initializer_list>
 #include <optional>
@@ -182,16 +183,58 @@ template <typename T> T readValue(const unsigned char* bytes) {
     return value;
 }
 
-// A normalized unsigned integer c of n bits stands for c / (2^n − 1) (glTF 2.0, section 3.11).
-float readUnitFloat(const unsigned char* bytes, std::size_t componentSize) {
-    switch (componentSize) {
-    case 1:
-        return static_cast<float>(bytes[0]) / 255.0f;
-    case 2:
-        return static_cast<float>(readValue<std::uint16_t>(bytes)) / 65535.0f;
+// One component as a float. A normalized integer c stands for c / (2^n − 1) unsigned and
+// max(c / (2^(n−1) − 1), −1) signed (glTF 2.0, section 3.11); an unnormalized one for its value.
+float readComponent(const unsigned char* bytes, int componentType, bool normalized) {
+    switch (componentType) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE: {
+        const auto c = static_cast<float>(readValue<std::int8_t>(bytes));
+        return normalized ? std::max(c / 127.0f, -1.0f) : c;
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return normalized ? static_cast<float>(bytes[0]) / 255.0f : static_cast<float>(bytes[0]);
+    case TINYGLTF_COMPONENT_TYPE_SHORT: {
+        const auto c = static_cast<float>(readValue<std::int16_t>(bytes));
+        return normalized ? std::max(c / 32767.0f, -1.0f) : c;
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+        const auto c = static_cast<float>(readValue<std::uint16_t>(bytes));
+        return normalized ? c / 65535.0f : c;
+    }
     default:
         return readValue<float>(bytes);
     }
+}
+
+// N components per element, any of the types readComponent knows.
+template <int N>
+std::vector<glm::vec<N, float>> readVectors(const tinygltf::Model& model,
+                                            const tinygltf::Accessor& accessor, int index,
+                                            const std::string& where) {
+    const Elements elements = locateElements(model, accessor, index, where);
+    std::vector<glm::vec<N, float>> values(elements.count);
+    for (std::size_t i = 0; i < elements.count; ++i) {
+        const unsigned char* element = elements.first + i * elements.stride;
+        for (int c = 0; c < N; ++c) {
+            values[i][c] = readComponent(element + std::size_t(c) * elements.componentSize,
+                                         accessor.componentType, accessor.normalized);
+        }
+    }
+    return values;
+}
+
+constexpr std::initializer_list<int> kFloatOnly = {TINYGLTF_COMPONENT_TYPE_FLOAT};
+constexpr std::initializer_list<int> kQuantizedTypes = {
+    TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE,
+    TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT,
+    TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT};
+
+void requireNormalizedIntegers(const tinygltf::Accessor& accessor, int index, const char* use,
+                               const std::string& where) {
+    if (accessor.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT || accessor.normalized) return;
+    throw GltfProblem(where + ": " + accessorName(index) + " is " + typeName(accessor.type) +
+                      " of " + componentTypeName(accessor.componentType) +
+                      " but not normalized, as " + use + " must be");
 }
 
 std::uint32_t readIndex(const unsigned char* bytes, std::size_t componentSize) {
@@ -226,56 +269,62 @@ void checkBufferViews(const tinygltf::Model& model) {
     }
 }
 
-std::vector<glm::vec3> readVec3Floats(const tinygltf::Model& model, int accessorIndex,
-                                      const std::string& where) {
-    const tinygltf::Accessor& accessor = findAccessor(model, accessorIndex, where);
-    requireLayout(accessor, accessorIndex, TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT},
-                  where);
-    const Elements elements = locateElements(model, accessor, accessorIndex, where);
-    std::vector<glm::vec3> values(elements.count);
-    for (std::size_t i = 0; i < elements.count; ++i) {
-        const unsigned char* element = elements.first + i * elements.stride;
-        values[i] = {readValue<float>(element), readValue<float>(element + 4),
-                     readValue<float>(element + 8)};
-    }
-    return values;
+bool allowsQuantizedAttributes(const tinygltf::Model& model) {
+    const auto& required = model.extensionsRequired;
+    return std::find(required.begin(), required.end(), "KHR_mesh_quantization") != required.end();
 }
 
-std::vector<glm::vec4> readVec4Floats(const tinygltf::Model& model, int accessorIndex,
-                                      const std::string& where) {
+std::vector<glm::vec3> readPositions(const tinygltf::Model& model, int accessorIndex,
+                                     const std::string& where) {
     const tinygltf::Accessor& accessor = findAccessor(model, accessorIndex, where);
-    requireLayout(accessor, accessorIndex, TINYGLTF_TYPE_VEC4, {TINYGLTF_COMPONENT_TYPE_FLOAT},
-                  where);
-    const Elements elements = locateElements(model, accessor, accessorIndex, where);
-    std::vector<glm::vec4> values(elements.count);
-    for (std::size_t i = 0; i < elements.count; ++i) {
-        const unsigned char* element = elements.first + i * elements.stride;
-        values[i] = {readValue<float>(element), readValue<float>(element + 4),
-                     readValue<float>(element + 8), readValue<float>(element + 12)};
+    requireLayout(accessor, accessorIndex, TINYGLTF_TYPE_VEC3,
+                  allowsQuantizedAttributes(model) ? kQuantizedTypes : kFloatOnly, where);
+    return readVectors<3>(model, accessor, accessorIndex, where);
+}
+
+std::vector<glm::vec3> readNormals(const tinygltf::Model& model, int accessorIndex,
+                                   const std::string& where) {
+    const tinygltf::Accessor& accessor = findAccessor(model, accessorIndex, where);
+    if (allowsQuantizedAttributes(model)) {
+        requireLayout(accessor, accessorIndex, TINYGLTF_TYPE_VEC3,
+                      {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE,
+                       TINYGLTF_COMPONENT_TYPE_SHORT},
+                      where);
+        requireNormalizedIntegers(accessor, accessorIndex, "normals", where);
+    } else {
+        requireLayout(accessor, accessorIndex, TINYGLTF_TYPE_VEC3, kFloatOnly, where);
     }
-    return values;
+    return readVectors<3>(model, accessor, accessorIndex, where);
+}
+
+std::vector<glm::vec4> readTangents(const tinygltf::Model& model, int accessorIndex,
+                                    const std::string& where) {
+    const tinygltf::Accessor& accessor = findAccessor(model, accessorIndex, where);
+    if (allowsQuantizedAttributes(model)) {
+        requireLayout(accessor, accessorIndex, TINYGLTF_TYPE_VEC4,
+                      {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE,
+                       TINYGLTF_COMPONENT_TYPE_SHORT},
+                      where);
+        requireNormalizedIntegers(accessor, accessorIndex, "tangents", where);
+    } else {
+        requireLayout(accessor, accessorIndex, TINYGLTF_TYPE_VEC4, kFloatOnly, where);
+    }
+    return readVectors<4>(model, accessor, accessorIndex, where);
 }
 
 std::vector<glm::vec2> readTexcoords(const tinygltf::Model& model, int accessorIndex,
                                      const std::string& where) {
     const tinygltf::Accessor& accessor = findAccessor(model, accessorIndex, where);
-    requireLayout(accessor, accessorIndex, TINYGLTF_TYPE_VEC2,
-                  {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-                   TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
-                  where);
-    if (accessor.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !accessor.normalized) {
-        throw GltfProblem(where + ": " + accessorName(accessorIndex) + " is VEC2 of " +
-                          componentTypeName(accessor.componentType) +
-                          " but not normalized, as texture coordinates must be");
+    if (allowsQuantizedAttributes(model)) {
+        requireLayout(accessor, accessorIndex, TINYGLTF_TYPE_VEC2, kQuantizedTypes, where);
+    } else {
+        requireLayout(accessor, accessorIndex, TINYGLTF_TYPE_VEC2,
+                      {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                       TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
+                      where);
+        requireNormalizedIntegers(accessor, accessorIndex, "texture coordinates", where);
     }
-    const Elements elements = locateElements(model, accessor, accessorIndex, where);
-    std::vector<glm::vec2> values(elements.count);
-    for (std::size_t i = 0; i < elements.count; ++i) {
-        const unsigned char* element = elements.first + i * elements.stride;
-        values[i] = {readUnitFloat(element, elements.componentSize),
-                     readUnitFloat(element + elements.componentSize, elements.componentSize)};
-    }
-    return values;
+    return readVectors<2>(model, accessor, accessorIndex, where);
 }
 
 std::vector<std::uint32_t> readIndices(const tinygltf::Model& model, int accessorIndex,

@@ -15,17 +15,30 @@ namespace vkpt::gltf {
 // Every buffer view names an existing buffer and lies inside it.
 void checkBufferViews(const tinygltf::Model& model);
 
+// Whether the file requires KHR_mesh_quantization, which allows the integer attribute types
+// below (the extension must be required when a file uses them).
+bool allowsQuantizedAttributes(const tinygltf::Model& model);
+
 // `where` names the use, e.g. "mesh 0, primitive 1: POSITION", and starts every message.
 // Sparse accessors are rejected: no scene we know uses them for geometry.
-std::vector<glm::vec3> readVec3Floats(const tinygltf::Model& model, int accessorIndex,
-                                      const std::string& where);
 
-// VEC4 of FLOAT (TANGENT).
-std::vector<glm::vec4> readVec4Floats(const tinygltf::Model& model, int accessorIndex,
-                                      const std::string& where);
+// POSITION: VEC3 of FLOAT; with KHR_mesh_quantization also of BYTE, UNSIGNED_BYTE, SHORT or
+// UNSIGNED_SHORT, normalized or not (the node transform then carries the dequantisation, as the
+// extension intends).
+std::vector<glm::vec3> readPositions(const tinygltf::Model& model, int accessorIndex,
+                                     const std::string& where);
+
+// NORMAL: VEC3 of FLOAT; with KHR_mesh_quantization also of normalized BYTE or SHORT.
+std::vector<glm::vec3> readNormals(const tinygltf::Model& model, int accessorIndex,
+                                   const std::string& where);
+
+// TANGENT: VEC4 of FLOAT; with KHR_mesh_quantization also of normalized BYTE or SHORT.
+std::vector<glm::vec4> readTangents(const tinygltf::Model& model, int accessorIndex,
+                                    const std::string& where);
 
 // TEXCOORD_n values: VEC2 of FLOAT, or of normalized UNSIGNED_BYTE or UNSIGNED_SHORT mapped to
-// [0, 1], the three layouts glTF 2.0 allows (section 3.7.2.1).
+// [0, 1], the three layouts glTF 2.0 allows (section 3.7.2.1); with KHR_mesh_quantization also
+// BYTE and SHORT, and all four integer types unnormalized (KHR_texture_transform then scales).
 std::vector<glm::vec2> readTexcoords(const tinygltf::Model& model, int accessorIndex,
                                      const std::string& where);
 

@@ -12,8 +12,14 @@
 #include <limits>
 #include <memory>
 #include <new>
+#include <optional>
 #include <regex>
+#include <string_view>
 #include <vector>
+
+#include "scene/gltf_extensions.h"
+#include "scene/gltf_json_prepass.h"
+#include "scene/gltf_meshopt.h"
 
 namespace vkpt::gltf {
 namespace {
@@ -141,6 +147,7 @@ std::string directoryPrefix(const std::string& baseDir) {
 }
 
 tinygltf::Model runTinyGltf(const Bytes& bytes, bool binary, const std::string& baseDir) {
+    if (bytes.size() > kMaxFileSize) throw GltfProblem("the file is larger than 4 GiB");
     tinygltf::TinyGLTF parser;
     parser.SetImageLoader(&keepEncodedImage, nullptr);
     std::string prefix = directoryPrefix(baseDir);
@@ -239,10 +246,65 @@ std::string describeTinyGltfError(const std::string& error, const std::string& b
     return joined;
 }
 
+void appendU32(Bytes& bytes, std::uint32_t value) {
+    const auto* first = reinterpret_cast<const unsigned char*>(&value);
+    bytes.insert(bytes.end(), first, first + sizeof(value));
+}
+
+// The .glb's JSON chunk (checkGlbContainer has checked that it is there and whole).
+std::string_view glbJson(const Bytes& bytes) {
+    const std::size_t length = readU32(bytes, kGlbHeaderSize);
+    return {reinterpret_cast<const char*>(bytes.data()) + kGlbHeaderSize + kGlbChunkHeaderSize,
+            length};
+}
+
+// The .glb with its JSON chunk replaced (padded with spaces to 4 bytes, as the format asks) and
+// every other chunk kept.
+Bytes replaceGlbJson(const Bytes& bytes, const std::string& json) {
+    const std::size_t oldEnd =
+        kGlbHeaderSize + kGlbChunkHeaderSize + readU32(bytes, kGlbHeaderSize);
+    const std::size_t length = readU32(bytes, 8);
+    std::string padded = json;
+    padded.resize((padded.size() + 3) / 4 * 4, ' ');
+    Bytes rebuilt(bytes.begin(), bytes.begin() + 8);
+    appendU32(rebuilt, 0); // the total length, set below
+    appendU32(rebuilt, static_cast<std::uint32_t>(padded.size()));
+    appendU32(rebuilt, kGlbChunkJson);
+    rebuilt.insert(rebuilt.end(), padded.begin(), padded.end());
+    rebuilt.insert(rebuilt.end(), bytes.begin() + static_cast<std::ptrdiff_t>(oldEnd),
+                   bytes.begin() + static_cast<std::ptrdiff_t>(length));
+    const auto total = static_cast<std::uint32_t>(std::min(rebuilt.size(), kMaxFileSize));
+    std::memcpy(rebuilt.data() + 8, &total, sizeof(total));
+    return rebuilt;
+}
+
+// The JSON as tinygltf should see it, after the required extensions have been checked.
+std::optional<JsonPrepass> prepass(Bytes& bytes, bool binary) {
+    const std::string_view json =
+        binary ? glbJson(bytes)
+               : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    std::optional<JsonPrepass> result = prepassJson(json);
+    if (!result) return std::nullopt;
+    checkRequiredExtensions(result->extensionsRequired);
+    if (result->json != json) {
+        bytes = binary ? replaceGlbJson(bytes, result->json)
+                       : Bytes(result->json.begin(), result->json.end());
+    }
+    return result;
+}
+
+tinygltf::Model parseAndRestore(Bytes bytes, bool binary, const std::string& baseDir) {
+    const std::optional<JsonPrepass> prepared = prepass(bytes, binary);
+    tinygltf::Model model = runTinyGltf(bytes, binary, baseDir);
+    if (prepared) restoreSetAside(*prepared, model);
+    decodeMeshoptBufferViews(model);
+    return model;
+}
+
 } // namespace
 
 tinygltf::Model parseGltfFile(const std::string& path) {
-    const Bytes bytes = readWholeFile(path);
+    Bytes bytes = readWholeFile(path);
     const bool binary = startsWithGlbMagic(bytes);
     if (!binary && hasGlbExtension(path)) {
         throw GltfProblem("not a glTF file: a .glb file starts with 'glTF'");
@@ -250,7 +312,7 @@ tinygltf::Model parseGltfFile(const std::string& path) {
     if (binary) checkGlbContainer(bytes);
     const std::string baseDir = std::filesystem::path(path).parent_path().string();
     try {
-        return runTinyGltf(bytes, binary, baseDir);
+        return parseAndRestore(std::move(bytes), binary, baseDir);
     } catch (const GltfProblem&) {
         throw;
     } catch (const std::bad_alloc&) {

@@ -17,7 +17,9 @@ public:
 };
 
 // Reads a .gltf (JSON) or .glb (binary) file, its external buffers and the encoded bytes of its
-// external and data: URI images (Image::as_is). No image is decoded here (gltf_images.h).
+// external and data: URI images (Image::as_is). extensionsRequired is checked first, before
+// tinygltf's own checks can misreport a compressed file (gltf_json_prepass.h); EXT_meshopt
+// buffer views are decoded (gltf_meshopt.h). No image is decoded here (gltf_images.h).
 tinygltf::Model parseGltfFile(const std::string& path);
 
 } // namespace vkpt::gltf

@@ -12,6 +12,7 @@
 #include <stb_image.h>
 
 #include "scene/gltf_document.h"
+#include "scene/gltf_webp.h"
 
 namespace vkpt::gltf {
 namespace {
@@ -70,16 +71,15 @@ struct StbFree {
     void operator()(unsigned char* pixels) const { stbi_image_free(pixels); }
 };
 
-} // namespace
+// The file's label for the image: its name, else its file name (not a data: URI).
+std::string imageLabel(const tinygltf::Image& image) {
+    std::string label = image.name.empty() ? image.uri : image.name;
+    if (label.starts_with("data:")) label.clear();
+    return label;
+}
 
-SceneImage decodeImage(const tinygltf::Model& model, int imageIndex) {
-    const tinygltf::Image& image = model.images[static_cast<std::size_t>(imageIndex)];
-    const std::string name = imageName(imageIndex, image);
-    const std::span<const unsigned char> bytes = encodedBytes(model, imageIndex, name);
-    const ImageFormat format = formatOf(bytes);
-    if (format == ImageFormat::Other) {
-        throw GltfProblem(name + ": not a PNG or JPEG image (the formats glTF 2.0 allows)");
-    }
+SceneImage decodeWithStb(std::span<const unsigned char> bytes, ImageFormat format,
+                         const std::string& name) {
     const char* formatName = format == ImageFormat::Png ? "PNG" : "JPEG";
     if (bytes.size() > static_cast<std::size_t>(INT_MAX)) {
         throw GltfProblem(name + ": the " + formatName + " data is larger than 2 GiB");
@@ -95,13 +95,28 @@ SceneImage decodeImage(const tinygltf::Model& model, int imageIndex) {
                           stbi_failure_reason() + ")");
     }
     SceneImage decoded;
-    decoded.name = image.name.empty() ? image.uri : image.name;
-    if (decoded.name.starts_with("data:")) decoded.name.clear();
     decoded.width = static_cast<std::uint32_t>(width);
     decoded.height = static_cast<std::uint32_t>(height);
     decoded.texels.resize(std::size_t(decoded.width) * decoded.height);
     // R, G, B, A bytes in memory are one little-endian uint with R in the low byte.
     std::memcpy(decoded.texels.data(), pixels.get(), decoded.texels.size() * sizeof(std::uint32_t));
+    return decoded;
+}
+
+} // namespace
+
+SceneImage decodeImage(const tinygltf::Model& model, int imageIndex) {
+    const tinygltf::Image& image = model.images[static_cast<std::size_t>(imageIndex)];
+    const std::string name = imageName(imageIndex, image);
+    const std::span<const unsigned char> bytes = encodedBytes(model, imageIndex, name);
+    const ImageFormat format = formatOf(bytes);
+    if (format == ImageFormat::Other && !isWebp(bytes)) {
+        throw GltfProblem(name + ": not a PNG, JPEG or WebP image (the formats glTF 2.0 and "
+                                 "EXT_texture_webp allow)");
+    }
+    SceneImage decoded =
+        format == ImageFormat::Other ? decodeWebp(bytes, name) : decodeWithStb(bytes, format, name);
+    decoded.name = imageLabel(image);
     return decoded;
 }
 

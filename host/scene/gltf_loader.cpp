@@ -16,6 +16,7 @@
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_cameras.h"
 #include "scene/gltf_document.h"
+#include "scene/gltf_extensions.h"
 #include "scene/gltf_lights.h"
 #include "scene/gltf_materials.h"
 #include "scene/gltf_nodes.h"
@@ -28,38 +29,6 @@ namespace vkpt {
 namespace {
 
 using gltf::GltfProblem;
-
-// Extensions that change what vkpt renders and that it implements. (KHR_implicit_shapes only
-// for spheres, gltf_shapes.cpp; KHR_materials_specular without its textures.)
-const std::vector<std::string> kSupportedExtensions = {
-    "KHR_materials_emissive_strength", "KHR_materials_specular", "KHR_texture_transform",
-    "KHR_lights_punctual", "KHR_implicit_shapes"};
-
-bool isSupported(const std::string& extension) {
-    return std::find(kSupportedExtensions.begin(), kSupportedExtensions.end(), extension) !=
-           kSupportedExtensions.end();
-}
-
-// An extension the file requires changes the meaning of the data; rendering without it would
-// give a silently wrong image.
-void checkRequiredExtensions(const tinygltf::Model& model) {
-    for (const std::string& extension : model.extensionsRequired) {
-        if (!isSupported(extension)) {
-            throw GltfProblem("required extension " + extension + " is not supported");
-        }
-    }
-}
-
-std::vector<std::string> ignoredExtensions(const tinygltf::Model& model) {
-    std::vector<std::string> ignored;
-    for (const std::string& extension : model.extensionsUsed) {
-        if (!isSupported(extension) &&
-            std::find(ignored.begin(), ignored.end(), extension) == ignored.end()) {
-            ignored.push_back(extension);
-        }
-    }
-    return ignored;
-}
 
 std::string joinNames(const std::vector<std::string>& names) {
     std::string joined;
@@ -204,7 +173,7 @@ std::vector<std::string> geometryNotes(const Scene& scene,
 // one line.
 std::vector<std::string> loadNotes(const tinygltf::Model& model, const LoadOptions& options) {
     std::vector<std::string> notes = gltf::materialNotes(model);
-    const std::vector<std::string> ignored = ignoredExtensions(model);
+    const std::vector<std::string> ignored = gltf::ignoredExtensions(model.extensionsUsed);
     if (options.warnUnsupportedExtensions && !ignored.empty()) {
         notes.push_back("ignoring unsupported extensions: " + joinNames(ignored));
     }
@@ -222,7 +191,6 @@ std::string noTrianglesMessage(const Scene& scene) {
 
 Scene buildScene(const std::string& path, const LoadOptions& options) {
     const tinygltf::Model model = gltf::parseGltfFile(path);
-    checkRequiredExtensions(model);
     gltf::checkBufferViews(model);
     Scene scene;
     scene.sourcePath = path;

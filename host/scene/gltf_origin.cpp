@@ -10,6 +10,7 @@
 
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_document.h"
+#include "scene/gltf_draco.h"
 #include "scene/gltf_lights.h"
 #include "scene/gltf_nodes.h"
 #include "scene/gltf_shapes.h"
@@ -39,7 +40,12 @@ public:
         for (const tinygltf::Primitive& primitive :
              model_.meshes[static_cast<std::size_t>(mesh)].primitives) {
             const auto position = primitive.attributes.find("POSITION");
-            if (position != primitive.attributes.end()) addVertices(position->second, world);
+            if (position == primitive.attributes.end()) continue;
+            if (isDracoPrimitive(primitive)) {
+                addAccessorBounds(position->second, world);
+            } else {
+                addVertices(position->second, world);
+            }
         }
     }
 
@@ -49,8 +55,25 @@ public:
     }
 
 private:
+    // A Draco primitive's POSITION accessor has no data of its own, but the min and max that
+    // glTF requires of every POSITION accessor bound it; its 8 corners bound the transformed
+    // vertices.
+    void addAccessorBounds(int accessor, const glm::dmat4& world) {
+        if (accessor < 0 || static_cast<std::size_t>(accessor) >= model_.accessors.size()) return;
+        const tinygltf::Accessor& bounds = model_.accessors[static_cast<std::size_t>(accessor)];
+        if (bounds.minValues.size() != 3 || bounds.maxValues.size() != 3) return;
+        for (int corner = 0; corner < 8; ++corner) {
+            glm::dvec3 p;
+            for (int axis = 0; axis < 3; ++axis) {
+                const auto a = static_cast<std::size_t>(axis);
+                p[axis] = (corner >> axis) & 1 ? bounds.maxValues[a] : bounds.minValues[a];
+            }
+            addPoint(glm::dvec3(world * glm::dvec4(p, 1.0)));
+        }
+    }
+
     void addVertices(int accessor, const glm::dmat4& world) {
-        for (const glm::vec3& p : readVec3Floats(model_, accessor, "POSITION"))
+        for (const glm::vec3& p : readPositions(model_, accessor, "POSITION"))
             addPoint(glm::dvec3(world * glm::dvec4(glm::dvec3(p), 1.0)));
     }
 

@@ -12,6 +12,7 @@
 
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_document.h"
+#include "scene/gltf_draco.h"
 #include "scene/tangents.h"
 
 namespace vkpt::gltf {
@@ -68,9 +69,18 @@ bool isFinite(const glm::vec3& v) {
     return !glm::any(glm::isnan(v)) && !glm::any(glm::isinf(v));
 }
 
-std::vector<glm::vec3> worldPositions(const tinygltf::Model& model, int accessor,
-                                      const glm::dmat4& world, const std::string& where) {
-    std::vector<glm::vec3> positions = readVec3Floats(model, accessor, where + ": POSITION");
+// A primitive's vertices as stored (from accessors or decoded from Draco), before the node
+// transform.
+struct LocalVertices {
+    std::vector<glm::vec3> positions;
+    std::optional<std::vector<glm::vec3>> normals;
+    std::optional<std::vector<glm::vec2>> texcoords;
+    std::vector<std::uint32_t> indices;
+    bool indexed = false; // indices came from the file, not 0, 1, 2, ...
+};
+
+void transformPositions(std::vector<glm::vec3>& positions, const glm::dmat4& world,
+                        const std::string& where) {
     for (std::size_t i = 0; i < positions.size(); ++i) {
         // Transform in double: scenes such as ToyCar scale by 1e-4 in the node tree.
         positions[i] = glm::vec3(world * glm::dvec4(glm::dvec3(positions[i]), 1.0));
@@ -79,7 +89,6 @@ std::vector<glm::vec3> worldPositions(const tinygltf::Model& model, int accessor
                               " has a non-finite position");
         }
     }
-    return positions;
 }
 
 // Normals transform by the inverse transpose of the linear part. The cofactor matrix is that
@@ -91,10 +100,8 @@ glm::dmat3 normalMatrix(const glm::dmat3& m) {
     return glm::determinant(m) < 0.0 ? -cofactor : cofactor;
 }
 
-std::vector<glm::vec3> worldNormals(const tinygltf::Model& model, int accessor,
-                                    const glm::dmat4& world, std::size_t vertexCount,
-                                    const std::string& where) {
-    std::vector<glm::vec3> normals = readVec3Floats(model, accessor, where + ": NORMAL");
+void transformNormals(std::vector<glm::vec3>& normals, const glm::dmat4& world,
+                      std::size_t vertexCount, const std::string& where) {
     if (normals.size() != vertexCount) {
         throw GltfProblem(where + ": NORMAL has " + std::to_string(normals.size()) +
                           " elements but POSITION has " + std::to_string(vertexCount));
@@ -102,7 +109,6 @@ std::vector<glm::vec3> worldNormals(const tinygltf::Model& model, int accessor,
     const glm::dmat3 transform = normalMatrix(glm::dmat3(world));
     for (glm::vec3& normal : normals)
         normal = glm::vec3(transform * glm::dvec3(normal));
-    return normals;
 }
 
 // TANGENT in world space: xyz by the transform's linear part (tangents lie along the surface,
@@ -113,7 +119,7 @@ std::optional<std::vector<glm::vec4>> worldTangents(const tinygltf::Model& model
                                                     const glm::dmat4& world,
                                                     std::size_t vertexCount,
                                                     const std::string& where) {
-    std::vector<glm::vec4> tangents = readVec4Floats(model, accessor, where + ": TANGENT");
+    std::vector<glm::vec4> tangents = readTangents(model, accessor, where + ": TANGENT");
     if (tangents.size() != vertexCount) {
         throw GltfProblem(where + ": TANGENT has " + std::to_string(tangents.size()) +
                           " elements but POSITION has " + std::to_string(vertexCount));
@@ -133,9 +139,8 @@ std::optional<std::vector<glm::vec4>> worldTangents(const tinygltf::Model& model
 
 // TEXCOORD_0 as stored: texture coordinates do not depend on the node transform. A NaN would
 // become a texel index on the GPU, so non-finite values are rejected.
-std::vector<glm::vec2> vertexTexcoords(const tinygltf::Model& model, int accessor,
-                                       std::size_t vertexCount, const std::string& where) {
-    std::vector<glm::vec2> texcoords = readTexcoords(model, accessor, where + ": TEXCOORD_0");
+void checkTexcoords(const std::vector<glm::vec2>& texcoords, std::size_t vertexCount,
+                    const std::string& where) {
     if (texcoords.size() != vertexCount) {
         throw GltfProblem(where + ": TEXCOORD_0 has " + std::to_string(texcoords.size()) +
                           " elements but POSITION has " + std::to_string(vertexCount));
@@ -146,54 +151,97 @@ std::vector<glm::vec2> vertexTexcoords(const tinygltf::Model& model, int accesso
                               " has a non-finite TEXCOORD_0");
         }
     }
-    return texcoords;
 }
 
-std::vector<std::uint32_t> triangleIndices(const tinygltf::Model& model,
-                                           const tinygltf::Primitive& primitive,
-                                           std::size_t vertexCount, const std::string& where) {
-    std::vector<std::uint32_t> indices;
-    if (primitive.indices >= 0) {
-        indices = readIndices(model, primitive.indices, where + ": indices");
-    } else {
-        indices.resize(vertexCount);
-        std::iota(indices.begin(), indices.end(), 0u);
-    }
-    if (indices.size() % 3 != 0) {
-        throw GltfProblem(where + ": " + std::to_string(indices.size()) +
-                          (primitive.indices >= 0 ? " indices" : " vertices") +
+void checkTriangleIndices(const LocalVertices& vertices, const std::string& where) {
+    const std::size_t vertexCount = vertices.positions.size();
+    if (vertices.indices.size() % 3 != 0) {
+        throw GltfProblem(where + ": " + std::to_string(vertices.indices.size()) +
+                          (vertices.indexed ? " indices" : " vertices") +
                           " do not make whole triangles");
     }
-    for (std::uint32_t index : indices) {
+    for (std::uint32_t index : vertices.indices) {
         if (index >= vertexCount) {
             throw GltfProblem(where + ": index " + std::to_string(index) + " >= vertex count " +
                               std::to_string(vertexCount));
         }
     }
-    return indices;
+}
+
+// The attributes not decoded from Draco are read from their accessors, as
+// KHR_draco_mesh_compression allows for attributes it does not list.
+void readRemainingAttributes(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
+                             bool withTexcoords, const std::string& where,
+                             LocalVertices& vertices) {
+    if (const std::optional<int> normal = attributeAccessor(primitive, "NORMAL");
+        normal && !vertices.normals) {
+        vertices.normals = readNormals(model, *normal, where + ": NORMAL");
+    }
+    if (const std::optional<int> texcoord = attributeAccessor(primitive, "TEXCOORD_0");
+        texcoord && withTexcoords && !vertices.texcoords) {
+        vertices.texcoords = readTexcoords(model, *texcoord, where + ": TEXCOORD_0");
+    }
+}
+
+LocalVertices readDracoVertices(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
+                                bool withTexcoords, const std::string& where) {
+    DracoPrimitive decoded = decodeDracoPrimitive(model, primitive, withTexcoords, where);
+    LocalVertices vertices;
+    vertices.positions = std::move(decoded.positions);
+    vertices.normals = std::move(decoded.normals);
+    vertices.texcoords = std::move(decoded.texcoords);
+    vertices.indices = std::move(decoded.indices);
+    vertices.indexed = true;
+    return vertices;
+}
+
+LocalVertices readAccessorVertices(const tinygltf::Model& model,
+                                   const tinygltf::Primitive& primitive, const std::string& where) {
+    const std::optional<int> position = attributeAccessor(primitive, "POSITION");
+    if (!position) throw GltfProblem(where + ": no POSITION attribute");
+    LocalVertices vertices;
+    vertices.positions = readPositions(model, *position, where + ": POSITION");
+    vertices.indexed = primitive.indices >= 0;
+    if (vertices.indexed) {
+        vertices.indices = readIndices(model, primitive.indices, where + ": indices");
+    } else {
+        vertices.indices.resize(vertices.positions.size());
+        std::iota(vertices.indices.begin(), vertices.indices.end(), 0u);
+    }
+    return vertices;
+}
+
+LocalVertices readLocalVertices(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
+                                bool withTexcoords, const std::string& where) {
+    LocalVertices vertices = isDracoPrimitive(primitive)
+                                 ? readDracoVertices(model, primitive, withTexcoords, where)
+                                 : readAccessorVertices(model, primitive, where);
+    readRemainingAttributes(model, primitive, withTexcoords, where, vertices);
+    return vertices;
 }
 
 WorldGeometry readWorldGeometry(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
                                 const glm::dmat4& world, Texcoords texcoords, Tangents tangents,
                                 const std::string& where) {
-    const std::optional<int> position = attributeAccessor(primitive, "POSITION");
-    if (!position) throw GltfProblem(where + ": no POSITION attribute");
     WorldGeometry geometry;
-    geometry.positions = worldPositions(model, *position, world, where);
-    if (const std::optional<int> normal = attributeAccessor(primitive, "NORMAL")) {
-        geometry.normals = worldNormals(model, *normal, world, geometry.positions.size(), where);
-    }
     geometry.withTexcoords = texcoords == Texcoords::Read;
-    if (const std::optional<int> texcoord = attributeAccessor(primitive, "TEXCOORD_0");
-        texcoord && geometry.withTexcoords) {
-        geometry.texcoords = vertexTexcoords(model, *texcoord, geometry.positions.size(), where);
-    }
+    LocalVertices vertices = readLocalVertices(model, primitive, geometry.withTexcoords, where);
+    const std::size_t vertexCount = vertices.positions.size();
+    transformPositions(vertices.positions, world, where);
+    if (vertices.normals) transformNormals(*vertices.normals, world, vertexCount, where);
+    if (vertices.texcoords) checkTexcoords(*vertices.texcoords, vertexCount, where);
+    checkTriangleIndices(vertices, where);
+    geometry.positions = std::move(vertices.positions);
+    geometry.normals = std::move(vertices.normals);
+    geometry.texcoords = std::move(vertices.texcoords);
+    geometry.indices = std::move(vertices.indices);
     geometry.tangentMode = tangents;
+    // A Draco primitive's TANGENT, if any, is inside the compressed data, which the decoder does
+    // not map; its frames are generated instead, as for a file without TANGENT.
     if (const std::optional<int> tangent = attributeAccessor(primitive, "TANGENT");
-        tangent && tangents == Tangents::Read) {
-        geometry.tangents = worldTangents(model, *tangent, world, geometry.positions.size(), where);
+        tangent && tangents == Tangents::Read && !isDracoPrimitive(primitive)) {
+        geometry.tangents = worldTangents(model, *tangent, world, vertexCount, where);
     }
-    geometry.indices = triangleIndices(model, primitive, geometry.positions.size(), where);
     geometry.mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
     return geometry;
 }

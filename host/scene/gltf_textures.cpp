@@ -13,9 +13,12 @@ namespace {
 
 constexpr const char* kTextureTransform = "KHR_texture_transform";
 
-// Image sources other than the core `source` (PNG or JPEG) that files use; none is decoded.
-const char* const kExtensionSources[] = {"KHR_texture_basisu", "EXT_texture_webp",
-                                         "EXT_texture_avif", "MSFT_texture_dds"};
+constexpr const char* kTextureWebp = "EXT_texture_webp";
+
+// Image sources other than the core `source` (PNG or JPEG) and EXT_texture_webp's that files
+// use; none is decoded.
+const char* const kExtensionSources[] = {"KHR_texture_basisu", "EXT_texture_avif",
+                                         "MSFT_texture_dds"};
 
 std::string textureName(int index) {
     return "texture " + std::to_string(index);
@@ -90,12 +93,28 @@ int TextureTable::use(int gltfTexture, const std::string& where) {
     return slot;
 }
 
+namespace {
+
+// EXT_texture_webp names the image to use; the core `source`, when there is one, is the PNG or
+// JPEG fallback for viewers without WebP, used here only when the extension names none.
+int imageSource(const tinygltf::Texture& texture, const std::string& where) {
+    if (const tinygltf::Value* webp = findExtension(texture.extensions, kTextureWebp)) {
+        const int source = readIndex(*webp, "source", where + ": " + kTextureWebp);
+        if (source >= 0) return source;
+    }
+    return texture.source;
+}
+
+} // namespace
+
 SceneTexture TextureTable::convertTexture(const tinygltf::Texture& texture, int gltfTexture,
                                           const std::string& where) {
-    if (texture.source == -1) failWithoutSource(texture, gltfTexture, where);
+    const std::string name = where + ": " + textureName(gltfTexture);
+    const int source = imageSource(texture, name);
+    if (source == -1) failWithoutSource(texture, gltfTexture, where);
     SceneTexture converted;
-    applySampler(model_, texture.sampler, where + ": " + textureName(gltfTexture), converted);
-    converted.image = useImage(texture.source, where + ": " + textureName(gltfTexture));
+    applySampler(model_, texture.sampler, name, converted);
+    converted.image = useImage(source, name);
     return converted;
 }
 

@@ -269,7 +269,7 @@ const InvalidCase kInvalidCases[] = {
      "mesh 0, primitive 0: POSITION: accessor 0 is sparse, which vkpt does not support"},
     {"NoTriangles", "no_triangles.gltf", "the scene has no triangles"},
     {"UnsupportedRequiredExtension", "required_extension.gltf",
-     "required extension KHR_draco_mesh_compression is not supported"},
+     "required extensions KHR_texture_basisu, EXT_mesh_gpu_instancing are not supported"},
     {"NodeCycle", "node_cycle.gltf", "node 0: the node hierarchy has a cycle"},
     {"MissingNode", "missing_node.gltf", "scene 0: node 7 does not exist (the file has 2 nodes)"},
     {"MissingMaterial", "missing_material.gltf",
@@ -294,9 +294,26 @@ const InvalidCase kInvalidCases[] = {
     {"UndecodableImage", "image_undecodable.gltf",
      "image 0: cannot decode the PNG data (bad zlib header)"},
     {"ImageNotPngOrJpeg", "image_not_png.gltf",
-     "image 0: not a PNG or JPEG image (the formats glTF 2.0 allows)"},
+     "image 0: not a PNG, JPEG or WebP image (the formats glTF 2.0 and EXT_texture_webp "
+     "allow)"},
     {"MissingImageFile", "missing_image.gltf",
      "image 0: cannot find the image file 'missing_image.png'"},
+    {"CorruptDracoData", "draco_corrupt.gltf",
+     "mesh 0, primitive 0: KHR_draco_mesh_compression: the Draco data does not decode (Input is "
+     "not a mesh.)"},
+    {"TruncatedMeshoptStream", "meshopt_truncated.gltf",
+     "buffer view 0: EXT_meshopt_compression: the compressed data does not decode (the stream is "
+     "truncated or malformed)"},
+    {"MeshoptFilterOnWrongStride", "meshopt_filter_stride.gltf",
+     "buffer view 0: EXT_meshopt_compression: the filter does not apply to this mode and "
+     "byteStride"},
+    {"UncompressedViewOnMeshoptFallback", "meshopt_fallback_read.gltf",
+     "buffer view 0 reads the EXT_meshopt_compression fallback buffer 1 without decoding, and "
+     "that buffer holds no data"},
+    {"QuantizedNormalNotNormalized", "quantized_normal_not_normalized.gltf",
+     "mesh 0, primitive 0: NORMAL: accessor 2 is VEC3 of BYTE but not normalized, as normals "
+     "must be"},
+    {"UndecodableWebp", "webp_undecodable.gltf", "image 0: cannot decode the WebP data"},
     {"TextureOnTexcoord1", "texcoord_1.gltf",
      "material 0: baseColorTexture: reads TEXCOORD_1; only TEXCOORD_0 is supported"},
 };

@@ -1,0 +1,59 @@
+// gltf_extensions.cpp — the list of extensions vkpt implements and the two checks against it.
+#include "scene/gltf_extensions.h"
+
+#include <algorithm>
+
+#include "scene/gltf_document.h"
+
+namespace vkpt::gltf {
+namespace {
+
+// Extensions that change what vkpt renders and that it implements. (KHR_implicit_shapes only
+// for spheres, gltf_shapes.cpp; KHR_materials_specular without its textures.) The compression
+// extensions are decoded while loading: Draco (gltf_draco.cpp), meshopt (gltf_meshopt.cpp),
+// quantized attributes (gltf_accessors.cpp) and WebP images (gltf_webp.cpp).
+const std::vector<std::string> kSupportedExtensions = {"KHR_materials_emissive_strength",
+                                                       "KHR_materials_specular",
+                                                       "KHR_texture_transform",
+                                                       "KHR_lights_punctual",
+                                                       "KHR_implicit_shapes",
+                                                       "KHR_draco_mesh_compression",
+                                                       "EXT_meshopt_compression",
+                                                       "KHR_mesh_quantization",
+                                                       "EXT_texture_webp"};
+
+std::string joinNames(const std::vector<std::string>& names) {
+    std::string joined;
+    for (const std::string& name : names)
+        joined += (joined.empty() ? "" : ", ") + name;
+    return joined;
+}
+
+void appendOnce(std::vector<std::string>& names, const std::string& name) {
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+}
+
+} // namespace
+
+bool isSupportedExtension(const std::string& extension) {
+    return std::find(kSupportedExtensions.begin(), kSupportedExtensions.end(), extension) !=
+           kSupportedExtensions.end();
+}
+
+void checkRequiredExtensions(const std::vector<std::string>& extensionsRequired) {
+    const std::vector<std::string> unsupported = ignoredExtensions(extensionsRequired);
+    if (unsupported.empty()) return;
+    throw GltfProblem(
+        std::string(unsupported.size() == 1 ? "required extension " : "required extensions ") +
+        joinNames(unsupported) + (unsupported.size() == 1 ? " is" : " are") + " not supported");
+}
+
+std::vector<std::string> ignoredExtensions(const std::vector<std::string>& extensionsUsed) {
+    std::vector<std::string> ignored;
+    for (const std::string& extension : extensionsUsed) {
+        if (!isSupportedExtension(extension)) appendOnce(ignored, extension);
+    }
+    return ignored;
+}
+
+} // namespace vkpt::gltf
