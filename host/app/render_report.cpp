@@ -77,6 +77,7 @@ void writeFeatures(JsonWriter& json, const RenderReport& r) {
     json.field("emissiveTextures", f.emissiveTextures);
     json.field("textureCoordinates", f.textureCoordinates());
     json.field("alphaMask", f.alphaMask).field("doubleSided", f.doubleSided);
+    json.field("transmission", f.transmission);
     json.field("triangles", f.triangles).field("spheres", f.spheres);
     json.field("emissiveTriangles", f.emissiveTriangles);
     json.field("emissiveSpheres", f.emissiveSpheres);

@@ -31,9 +31,14 @@ using gltf::GltfProblem;
 
 // Extensions that change what vkpt renders and that it implements. (KHR_implicit_shapes only
 // for spheres, gltf_shapes.cpp; KHR_materials_specular without its textures.)
-const std::vector<std::string> kSupportedExtensions = {
-    "KHR_materials_emissive_strength", "KHR_materials_specular", "KHR_texture_transform",
-    "KHR_lights_punctual", "KHR_implicit_shapes"};
+const std::vector<std::string> kSupportedExtensions = {"KHR_materials_emissive_strength",
+                                                       "KHR_materials_specular",
+                                                       "KHR_texture_transform",
+                                                       "KHR_lights_punctual",
+                                                       "KHR_implicit_shapes",
+                                                       "KHR_materials_transmission",
+                                                       "KHR_materials_ior",
+                                                       "KHR_materials_volume"};
 
 bool isSupported(const std::string& extension) {
     return std::find(kSupportedExtensions.begin(), kSupportedExtensions.end(), extension) !=

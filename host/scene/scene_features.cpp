@@ -55,6 +55,7 @@ void addMaterial(const SceneMaterial& material, SceneFeatures& features) {
     features.emissiveTextures |= material.emissiveTexture.texture >= 0;
     features.alphaMask |= material.alphaMode == AlphaMode::Mask;
     features.doubleSided |= material.doubleSided;
+    features.transmission |= material.usesDielectricExtensions();
 }
 
 std::uint32_t emittingTriangles(const Scene& scene) {
@@ -109,6 +110,7 @@ std::array<bool, FEATURE_COUNT> SceneFeatures::kernelFeatures() const {
     on[FEATURE_ENVIRONMENT_MAP] = environmentMap;
     on[FEATURE_EMITTER_CDF] = emitterCdf();
     on[FEATURE_DOUBLE_SIDED] = doubleSided;
+    on[FEATURE_TRANSMISSION] = transmission;
     return on;
 }
 
@@ -135,7 +137,7 @@ SceneFeatures generalFeatures(const SceneFeatures& used) {
     SceneFeatures all;
     all.diffuseMaterials = all.metallicRoughnessMaterials = true;
     all.baseColorTextures = all.metallicRoughnessTextures = all.emissiveTextures = true;
-    all.alphaMask = all.doubleSided = true;
+    all.alphaMask = all.doubleSided = all.transmission = true;
     all.triangles = all.spheres = true;
     all.emissiveTriangles = all.emissiveSpheres = true;
     all.pointLights = all.spotLights = all.directionalLights = true;
@@ -156,6 +158,7 @@ std::string describeFeatures(const SceneFeatures& features) {
     if (!textures.empty()) names.push_back("textures (" + joined(textures) + ")");
     appendIf(features.alphaMask, "alpha mask", names);
     appendIf(features.doubleSided, "double-sided", names);
+    appendIf(features.transmission, "transmission", names);
     appendIf(features.triangles, "triangles", names);
     appendIf(features.spheres, "spheres", names);
     appendIf(features.emissiveTriangles, "emissive triangles", names);

@@ -21,6 +21,9 @@ struct SceneFeatures {
     bool emissiveTextures = false;
     bool alphaMask = false;   // some material has alphaMode MASK
     bool doubleSided = false; // some material is double-sided
+    // KHR_materials_transmission / _ior / _volume: some material transmits, bounds a volume
+    // or has an ior other than 1.5 (shared/bsdf_dielectric.h).
+    bool transmission = false;
     bool triangles = false;
     bool spheres = false;
     bool emissiveTriangles = false;

@@ -26,5 +26,7 @@ layout(constant_id = FEATURE_ENVIRONMENT_MAP) const bool featureEnvironmentMap =
 layout(constant_id = FEATURE_EMITTER_CDF) const bool featureEmitterCdf = true;
 // Some material is double-sided: emission may leave the back face.
 layout(constant_id = FEATURE_DOUBLE_SIDED) const bool featureDoubleSided = true;
+// KHR_materials_transmission, _ior, _volume: glass lobes, volumes, an ior other than 1.5.
+layout(constant_id = FEATURE_TRANSMISSION) const bool featureTransmission = true;
 
 #endif // VKPT_FEATURES_GLSL

@@ -54,22 +54,28 @@ TextureSlot textureSlotFrom(uvec4 a, uvec4 b) {
     return TextureSlot(texelVec3(a), a.w, texelVec3(b), b.w);
 }
 
+#define MATERIAL_TEXELS 14u
+
 TextureSlot fetchTextureSlot(uint material, uint first) {
-    return textureSlotFrom(RECORD_TEXEL(materialTexels, 10u, material, first),
-                           RECORD_TEXEL(materialTexels, 10u, material, first + 1u));
+    return textureSlotFrom(RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, material, first),
+                           RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, material, first + 1u));
 }
 
-// Ten texels, of which the compiler keeps the fetches of the fields a kernel reads.
+// Fourteen texels, of which the compiler keeps the fetches of the fields a kernel reads.
+// Texels 10–13: transmission, ior and volume.
 Material fetchMaterial(uint i) {
-    uvec4 colour = RECORD_TEXEL(materialTexels, 10u, i, 0u);
-    uvec4 emission = RECORD_TEXEL(materialTexels, 10u, i, 1u);
-    uvec4 factors = RECORD_TEXEL(materialTexels, 10u, i, 2u);
-    uvec4 specular = RECORD_TEXEL(materialTexels, 10u, i, 3u);
+    uvec4 colour = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 0u);
+    uvec4 emission = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 1u);
+    uvec4 factors = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 2u);
+    uvec4 specular = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 3u);
+    vec4 glass = texelVec4(RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 10u));
+    uvec4 volume = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 11u);
     return Material(texelVec4(colour), texelVec3(emission), emission.w,
                     uintBitsToFloat(factors.x), uintBitsToFloat(factors.y),
                     uintBitsToFloat(factors.z), factors.w, texelVec3(specular),
                     uintBitsToFloat(specular.w), fetchTextureSlot(i, 4u), fetchTextureSlot(i, 6u),
-                    fetchTextureSlot(i, 8u));
+                    fetchTextureSlot(i, 8u), glass.x, glass.y, glass.z, glass.w,
+                    texelVec3(volume), volume.w, fetchTextureSlot(i, 12u));
 }
 
 TextureInfo fetchTextureInfo(uint i) {
@@ -106,10 +112,12 @@ ShadowRay fetchShadowRay(uint i) {
 }
 
 PathState fetchPathState(uint slot) {
-    uvec4 a = RECORD_TEXEL(pathStateTexels, 3u, slot, 0u);
-    uvec4 b = RECORD_TEXEL(pathStateTexels, 3u, slot, 1u);
-    uvec4 c = RECORD_TEXEL(pathStateTexels, 3u, slot, 2u);
-    return PathState(texelVec3(a), a.w, texelVec3(b), b.w, texelVec3(c), uintBitsToFloat(c.w));
+    uvec4 a = RECORD_TEXEL(pathStateTexels, 4u, slot, 0u);
+    uvec4 b = RECORD_TEXEL(pathStateTexels, 4u, slot, 1u);
+    uvec4 c = RECORD_TEXEL(pathStateTexels, 4u, slot, 2u);
+    uvec4 d = RECORD_TEXEL(pathStateTexels, 4u, slot, 3u);
+    return PathState(texelVec3(a), a.w, texelVec3(b), b.w, texelVec3(c), uintBitsToFloat(c.w),
+                     texelVec3(d), d.w);
 }
 
 #endif // VKPT_RECORDS_GLSL

@@ -71,6 +71,10 @@ bool sceneHasDoubleSided() {
     return featureDoubleSided;
 }
 
+bool sceneHasTransmission() {
+    return featureTransmission;
+}
+
 // trace_closest's record of a hit as the shared code takes it.
 TriangleHit triangleHitOf(HitRecord hit) {
     return TriangleHit(hit.t, hit.u, hit.v, true);

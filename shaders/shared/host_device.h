@@ -18,6 +18,7 @@ using glm::bitCount;
 using glm::clamp;
 using glm::cross;
 using glm::dot;
+using glm::exp;
 using glm::findLSB;
 using glm::floatBitsToInt;
 using glm::floatBitsToUint;
@@ -176,6 +177,15 @@ struct Material {
     TextureSlot baseColorTexture; // sRGB; alpha in .a
     TextureSlot metallicRoughnessTexture; // linear; roughness in .g, metallic in .b
     TextureSlot emissiveTexture;          // sRGB
+    // KHR_materials_transmission, KHR_materials_ior and KHR_materials_volume
+    // (shared/bsdf_dielectric.h, docs/scene-model.md), 64 bytes from offset 160.
+    float transmission; // transmissionFactor: the share of the non-metal part that is glass
+    float ior;          // index of refraction (1.5 when absent)
+    float iorF0;        // ((ior − 1)/(ior + 1))², computed in double: 0.04f exactly at 1.5
+    float thickness;    // thicknessFactor: 0 thin-walled, > 0 the mesh bounds a volume
+    vec3 attenuationCoefficient;     // σ = −ln(attenuationColor)/attenuationDistance, per unit
+    uint unusedVolume;               // keeps the vec3 16-byte aligned
+    TextureSlot transmissionTexture; // linear; transmission in .r
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -245,7 +255,8 @@ struct EnvironmentParams {
 #define FEATURE_ENVIRONMENT_MAP 6
 #define FEATURE_EMITTER_CDF 7
 #define FEATURE_DOUBLE_SIDED 8
-#define FEATURE_COUNT 9
+#define FEATURE_TRANSMISSION 9 // transmission, a volume, or an ior other than 1.5
+#define FEATURE_COUNT 10
 
 // ---------------------------------------------------------------------------------------------
 // Pinhole camera. Pixel (0, 0) is the top-left; a sample at (x + u, y + v) maps to the
@@ -270,12 +281,16 @@ static_assert(sizeof(Triangle) == 48 && offsetof(Triangle, materialIndex) == 12 
 static_assert(sizeof(TriangleNormals) == 48 && offsetof(TriangleNormals, n2) == 32);
 static_assert(sizeof(TextureSlot) == 32 && offsetof(TextureSlot, texture) == 12 &&
               offsetof(TextureSlot, transformRow1) == 16);
-static_assert(sizeof(Material) == 160 && offsetof(Material, emission) == 16 &&
-              offsetof(Material, flags) == 28 && offsetof(Material, metallic) == 32 &&
-              offsetof(Material, alphaMode) == 44 && offsetof(Material, specularColor) == 48 &&
-              offsetof(Material, specular) == 60 && offsetof(Material, baseColorTexture) == 64 &&
+static_assert(offsetof(Material, emission) == 16 && offsetof(Material, flags) == 28 &&
+              offsetof(Material, metallic) == 32 && offsetof(Material, alphaMode) == 44 &&
+              offsetof(Material, specularColor) == 48 && offsetof(Material, specular) == 60 &&
+              offsetof(Material, baseColorTexture) == 64 &&
               offsetof(Material, metallicRoughnessTexture) == 96 &&
               offsetof(Material, emissiveTexture) == 128);
+static_assert(sizeof(Material) == 224 && offsetof(Material, transmission) == 160 &&
+              offsetof(Material, thickness) == 172 &&
+              offsetof(Material, attenuationCoefficient) == 176 &&
+              offsetof(Material, transmissionTexture) == 192);
 static_assert(sizeof(TextureInfo) == 16);
 static_assert(sizeof(Emitter) == 64 && offsetof(Emitter, direction) == 16 &&
               offsetof(Emitter, primitive) == 28 && offsetof(Emitter, intensity) == 32 &&

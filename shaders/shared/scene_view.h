@@ -18,7 +18,7 @@
 //   environmentTexels[], environmentCdf[] (environment.h)
 //   bool sceneHasMetallicRoughness(), sceneHasTextures(), sceneHasSpheres(),
 //        sceneHasPunctualLights(), sceneHasEnvironment(), sceneHasEmitterCdf(),
-//        sceneHasDoubleSided()
+//        sceneHasDoubleSided(), sceneHasTransmission()
 #ifndef VKPT_SCENE_VIEW_H
 #define VKPT_SCENE_VIEW_H
 
@@ -103,6 +103,9 @@ VKPT_FN bool sceneHasEmitterCdf(VKPT_SCENE_PARAM_ONLY) {
 }
 VKPT_FN bool sceneHasDoubleSided(VKPT_SCENE_PARAM_ONLY) {
     return scene.features[FEATURE_DOUBLE_SIDED];
+}
+VKPT_FN bool sceneHasTransmission(VKPT_SCENE_PARAM_ONLY) {
+    return scene.features[FEATURE_TRANSMISSION];
 }
 
 } // namespace vkpt::gpu

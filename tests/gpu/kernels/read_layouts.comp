@@ -138,6 +138,13 @@ void main() {
     putTextureSlot(materials[i].baseColorTexture);
     putTextureSlot(materials[i].metallicRoughnessTexture);
     putTextureSlot(materials[i].emissiveTexture);
+    putFloat(materials[i].transmission);
+    putFloat(materials[i].ior);
+    putFloat(materials[i].iorF0);
+    putFloat(materials[i].thickness);
+    putVec3(materials[i].attenuationCoefficient);
+    putUint(materials[i].unusedVolume);
+    putTextureSlot(materials[i].transmissionTexture);
 
     cursor = LAYOUT_OFFSET_TEXTURES + i * LAYOUT_WORDS_TEXTURE_INFO;
     putUint(textures[i].texelOffset);
@@ -173,6 +180,8 @@ void main() {
     putUint(pathStates[i].sampleIndex);
     putVec3(pathStates[i].lightScale);
     putFloat(pathStates[i].previousBsdfPdf);
+    putVec3(pathStates[i].mediumCoefficient);
+    putUint(pathStates[i].unusedMedium);
 
     cursor = LAYOUT_OFFSET_SHADOW_RAYS + i * LAYOUT_WORDS_SHADOW_RAY;
     putVec3(shadowRays[i].origin);
