@@ -309,7 +309,7 @@ def absorbing_slab():
     view whose medium keeps (0.8, 0.5, 0.2) of the light over 0.25: Beer–Lambert in a uniform
     environment, e^(−σ·0.5/cos θ) (tests/image/glass_render_test.cpp)."""
     s = FeatureScene()
-    s.box("slab", [-20.0, -20.0, -0.5], [20.0, 20.0, 0.0],
+    s.box("slab", [-1.0, -1.0, -0.5], [1.0, 1.0, 0.0],
           s.glass("absorbing slab", ior=1.0, thickness=0.5, attenuation_color=(0.8, 0.5, 0.2),
                   attenuation_distance=0.25))
     s.camera([0.0, 0.0, 1.0], 30.0)
