@@ -53,6 +53,7 @@ void addMaterial(const SceneMaterial& material, SceneFeatures& features) {
     features.baseColorTextures |= material.baseColorTexture.texture >= 0;
     features.metallicRoughnessTextures |= material.metallicRoughnessTexture.texture >= 0;
     features.emissiveTextures |= material.emissiveTexture.texture >= 0;
+    features.transmissionTextures |= material.transmissionTexture.texture >= 0;
     features.alphaMask |= material.alphaMode == AlphaMode::Mask;
     features.doubleSided |= material.doubleSided;
     features.transmission |= material.usesDielectricExtensions();
@@ -137,6 +138,7 @@ SceneFeatures generalFeatures(const SceneFeatures& used) {
     SceneFeatures all;
     all.diffuseMaterials = all.metallicRoughnessMaterials = true;
     all.baseColorTextures = all.metallicRoughnessTextures = all.emissiveTextures = true;
+    all.transmissionTextures = true;
     all.alphaMask = all.doubleSided = all.transmission = true;
     all.triangles = all.spheres = true;
     all.emissiveTriangles = all.emissiveSpheres = true;
@@ -155,6 +157,7 @@ std::string describeFeatures(const SceneFeatures& features) {
     appendIf(features.baseColorTextures, "base colour", textures);
     appendIf(features.metallicRoughnessTextures, "metallic-roughness", textures);
     appendIf(features.emissiveTextures, "emissive", textures);
+    appendIf(features.transmissionTextures, "transmission", textures);
     if (!textures.empty()) names.push_back("textures (" + joined(textures) + ")");
     appendIf(features.alphaMask, "alpha mask", names);
     appendIf(features.doubleSided, "double-sided", names);
