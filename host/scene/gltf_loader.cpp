@@ -30,7 +30,8 @@ namespace {
 using gltf::GltfProblem;
 
 // Extensions that change what vkpt renders and that it implements. (KHR_implicit_shapes only
-// for spheres, gltf_shapes.cpp; KHR_materials_specular without its textures.)
+// for spheres, gltf_shapes.cpp; KHR_materials_specular without its textures;
+// KHR_materials_volume without thicknessTexture, which a path tracer does not need.)
 const std::vector<std::string> kSupportedExtensions = {"KHR_materials_emissive_strength",
                                                        "KHR_materials_specular",
                                                        "KHR_texture_transform",
