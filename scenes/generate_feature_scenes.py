@@ -3,7 +3,9 @@
 model each (scenes/test/features/): analytic spheres, glTF metallic-roughness (GGX)
 materials, textures with KHR_texture_transform and alpha MASK, normal textures (with generated
 and stored tangents), KHR_lights_punctual lights, a scene lit only by the environment (with a
-tiny equirectangular .hdr), and an orthographic camera.
+tiny equirectangular .hdr), an orthographic camera, and glass: KHR_materials_transmission,
+KHR_materials_ior and KHR_materials_volume (smooth and rough, solid and thin-walled, clear and
+absorbing).
 
 Run from anywhere:  python3 scenes/generate_feature_scenes.py
 
@@ -16,7 +18,8 @@ import math
 import struct
 from pathlib import Path
 
-from generate_loader_scenes import (Gltf, data_uri, floats, png_bytes, primitive, write,
+from generate_loader_scenes import (Gltf, data_uri, floats, json_text, png_bytes, primitive,
+                                    write,
                                     write_embedded)
 
 FEATURES_DIR = Path(__file__).resolve().parent / "test" / "features"
@@ -25,6 +28,9 @@ EMISSIVE_STRENGTH = "KHR_materials_emissive_strength"
 TEXTURE_TRANSFORM = "KHR_texture_transform"
 PUNCTUAL = "KHR_lights_punctual"
 SHAPES = "KHR_implicit_shapes"
+TRANSMISSION = "KHR_materials_transmission"
+IOR = "KHR_materials_ior"
+VOLUME = "KHR_materials_volume"
 UNSIGNED_SHORT = 5123
 ARRAY_BUFFER = 34962
 FLOAT = 5126
@@ -64,6 +70,24 @@ class FeatureScene(Gltf):
             m["doubleSided"] = True
         m.update(extra)
         return self.add("materials", m)
+
+    def glass(self, name, base=(1.0, 1.0, 1.0), roughness=0.0, ior=1.5, thickness=None,
+              attenuation_color=None, attenuation_distance=None, transmission=1.0):
+        """A KHR_materials_transmission material (metallic 0) with KHR_materials_ior and, when
+        thickness is given, KHR_materials_volume (thickness 0: thin-walled)."""
+        extensions = {TRANSMISSION: {"transmissionFactor": transmission}, IOR: {"ior": ior}}
+        self.use(TRANSMISSION)
+        self.use(IOR)
+        if thickness is not None:
+            volume = {"thicknessFactor": thickness}
+            if attenuation_color is not None:
+                volume["attenuationColor"] = list(attenuation_color)
+            if attenuation_distance is not None:
+                volume["attenuationDistance"] = attenuation_distance
+            extensions[VOLUME] = volume
+            self.use(VOLUME)
+        return self.material(name, base, metallic=0.0, roughness=roughness,
+                             extensions=extensions)
 
     def quad(self, name, corner, edge_u, edge_v, material, uv_scale=1.0, tangent=None,
              **node):
@@ -143,6 +167,11 @@ class FeatureScene(Gltf):
         if self.extensions:
             self.doc["extensionsUsed"] = sorted(self.extensions)
         self.scene(self.roots)
+        if not self.doc.get("bufferViews"):
+            # Spheres alone need no binary data, and an empty data URI is not valid base64.
+            self.doc.pop("buffers", None)
+            write(FEATURES_DIR / name, json_text(self.doc))
+            return
         write_embedded(FEATURES_DIR / name, self)
 
 
@@ -313,6 +342,50 @@ def environment_room():
     s.save("environment.gltf")
 
 
+def glass_room():
+    """Glass in a room under a quad light: a smooth solid ball (ior 1.5), a rough one, a tinted
+    thin-walled pane, and an absorbing block (a volume of ior 1.33)."""
+    s = FeatureScene()
+    white = s.material("white", (0.75, 0.75, 0.75), diffuse=True)
+    room(s, s.material("floor", (0.6, 0.55, 0.5), diffuse=True), white)
+    s.sphere("smooth glass ball", (-0.7, 0.3, 0.1), 0.3,
+             s.glass("smooth glass", thickness=0.6))
+    s.sphere("rough glass ball", (0.05, 0.3, -0.1), 0.3,
+             s.glass("rough glass", roughness=0.3, thickness=0.6))
+    # Lifted off the floor: a face coplanar with the floor would leave the nearer of two
+    # equal hits to traversal order.
+    s.box("absorbing block", [0.45, 0.02, -0.3], [0.95, 0.47, 0.2],
+          s.glass("absorbing water", ior=1.33, thickness=0.5, attenuation_color=(0.3, 0.6, 0.9),
+                  attenuation_distance=0.3))
+    s.quad("thin pane", [-0.9, 0.0, 0.6], [0.8, 0.0, 0.0], [0.0, 0.7, 0.0],
+           s.glass("thin tinted pane", base=(0.7, 0.9, 0.8), roughness=0.2, thickness=0.0))
+    s.quad("light", [-0.5, 1.6, -0.5], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0],
+           s.material("light", (0.0, 0.0, 0.0), diffuse=True, emission=(1.0, 1.0, 1.0),
+                      strength=6.0))
+    s.save("glass.gltf")
+
+
+def glass_ball():
+    """A smooth, lossless glass ball (ior 1.5) alone: in a uniform environment every pixel
+    sees exactly the environment's radiance (tests/image/glass_render_test.cpp)."""
+    s = FeatureScene()
+    s.sphere("glass ball", (0.0, 0.0, 0.0), 1.0, s.glass("clear glass", thickness=2.0))
+    s.camera([0.0, 0.0, 3.0], 45.0)
+    s.save("glass-ball.gltf")
+
+
+def absorbing_slab():
+    """A clear slab (ior 1: no refraction, no reflection) of thickness 0.5 across the whole
+    view whose medium keeps (0.8, 0.5, 0.2) of the light over 0.25: Beer–Lambert in a uniform
+    environment, e^(−σ·0.5/cos θ) (tests/image/glass_render_test.cpp)."""
+    s = FeatureScene()
+    s.box("slab", [-1.0, -1.0, -0.5], [1.0, 1.0, 0.0],
+          s.glass("absorbing slab", ior=1.0, thickness=0.5, attenuation_color=(0.8, 0.5, 0.2),
+                  attenuation_distance=0.25))
+    s.camera([0.0, 0.0, 1.0], 30.0)
+    s.save("absorbing-slab.gltf")
+
+
 def radiance_hdr(width, height, texel):
     """A Radiance .hdr (flat, not run-length encoded) of texel(x, y) → (r, g, b)."""
     def rgbe(r, g, b):
@@ -347,6 +420,9 @@ def main():
     environment_room()
     normal_map()
     orthographic()
+    glass_room()
+    glass_ball()
+    absorbing_slab()
     write(FEATURES_DIR / "sky.hdr", radiance_hdr(32, 16, sky_texel))
 
 

@@ -540,6 +540,35 @@ def specular():
     return gltf
 
 
+def glass():
+    # Material 0: KHR_materials_transmission 0.8 with a transmissionTexture, KHR_materials_ior
+    # 1.33 and KHR_materials_volume (thickness 0.5, attenuationColor (0.5, 0.25, 1) after 2, and
+    # a thicknessTexture: not read, one note). Material 1: none of them (the defaults).
+    # Material 2: ior 0, the extension's "not a dielectric", read as the default 1.5.
+    gltf = Gltf()
+    gltf.doc["extensionsUsed"] = ["KHR_materials_ior", "KHR_materials_transmission",
+                                  "KHR_materials_volume"]
+    gltf.doc["images"] = [{"uri": data_uri(TEXTURE_PNG, "image/png")}]
+    gltf.doc["textures"] = [{"source": 0}]
+    gltf.doc["materials"] = [
+        {"name": "water", "pbrMetallicRoughness": {"metallicFactor": 0},
+         "extensions": {
+             "KHR_materials_transmission": {"transmissionFactor": 0.8,
+                                            "transmissionTexture": {"index": 0}},
+             "KHR_materials_ior": {"ior": 1.33},
+             "KHR_materials_volume": {"thicknessFactor": 0.5,
+                                      "attenuationColor": [0.5, 0.25, 1.0],
+                                      "attenuationDistance": 2.0,
+                                      "thicknessTexture": {"index": 0}}}},
+        {"name": "plain", "pbrMetallicRoughness": {"metallicFactor": 0}},
+        {"name": "ior zero", "pbrMetallicRoughness": {"metallicFactor": 0},
+         "extensions": {"KHR_materials_ior": {"ior": 0}}},
+    ]
+    position = gltf.positions(TRIANGLE_POSITIONS)
+    gltf.scene([gltf.node(mesh=gltf.mesh([primitive(position, material=m) for m in (0, 1, 2)]))])
+    return gltf
+
+
 VALID_SCENES = [
     # (file, builder, writer, what it exercises)
     ("indices_u8.gltf", lambda: quad(UNSIGNED_BYTE), write_embedded,
@@ -578,6 +607,8 @@ VALID_SCENES = [
     ("far_away.gltf", far_away, write_embedded,
      "a triangle, a sphere and a point light 1e6 from the origin: recentred together"),
     ("specular.gltf", specular, write_embedded, "KHR_materials_specular factors and a texture"),
+    ("glass.gltf", glass, write_embedded,
+     "KHR_materials_transmission, KHR_materials_ior and KHR_materials_volume"),
 ]
 
 
@@ -784,6 +815,14 @@ def missing_accessor():
     return embedded_text(gltf)
 
 
+def glass_material_scene(extensions):
+    gltf = triangle(material=0)
+    gltf.doc["extensionsUsed"] = sorted(extensions)
+    gltf.doc["materials"] = [{"pbrMetallicRoughness": {"metallicFactor": 0},
+                              "extensions": extensions}]
+    return embedded_text(gltf)
+
+
 def light_scene(light):
     gltf = triangle()
     gltf.doc["extensionsUsed"] = ["KHR_lights_punctual"]
@@ -908,6 +947,14 @@ def write_invalid_scenes():
         ("partial_triangle.gltf", partial_triangle(), "4 indices"),
         ("normal_count_mismatch.gltf", normal_count_mismatch(), "2 normals for 3 positions"),
         ("missing_accessor.gltf", missing_accessor(), "POSITION is accessor 7 of 3"),
+        ("transmission_out_of_range.gltf", glass_material_scene(
+            {"KHR_materials_transmission": {"transmissionFactor": 1.5}}),
+         "a transmissionFactor of 1.5"),
+        ("ior_below_one.gltf", glass_material_scene({"KHR_materials_ior": {"ior": 0.5}}),
+         "an ior of 0.5"),
+        ("attenuation_distance_zero.gltf", glass_material_scene(
+            {"KHR_materials_volume": {"thicknessFactor": 1, "attenuationDistance": 0}}),
+         "an attenuationDistance of 0"),
         ("light_type.gltf", light_scene({"type": "area"}), "a light of type 'area'"),
         ("light_negative_intensity.gltf", light_scene({"type": "point", "intensity": -2}),
          "a point light of intensity -2"),

@@ -78,6 +78,7 @@ void writeFeatures(JsonWriter& json, const RenderReport& r) {
     json.field("normalTextures", f.normalTextures);
     json.field("textureCoordinates", f.textureCoordinates());
     json.field("alphaMask", f.alphaMask).field("doubleSided", f.doubleSided);
+    json.field("transmission", f.transmission);
     json.field("triangles", f.triangles).field("spheres", f.spheres);
     json.field("emissiveTriangles", f.emissiveTriangles);
     json.field("emissiveSpheres", f.emissiveSpheres);

@@ -1,6 +1,7 @@
 // gpu_materials.cpp — SceneMaterial → gpu::Material, SceneTexture + SceneImage → texels.
 #include "prepare/gpu_materials.h"
 
+#include <cmath>
 #include <limits>
 
 #include "common/errors.h"
@@ -17,6 +18,30 @@ gpu::TextureSlot makeSlot(const TextureReference& reference) {
     slot.transformRow1 = glm::vec3(m[0][1], m[1][1], m[2][1]);
     slot.texture = reference.texture < 0 ? NO_TEXTURE : std::uint32_t(reference.texture);
     return slot;
+}
+
+// KHR_materials_ior: the dielectric's normal-incidence reflectance ((ior − 1)/(ior + 1))²
+// (the extension's formula with an outside ior of 1), in double so that ior 1.5 gives 0.04f,
+// the constant the BRDF used before the extension, to the bit.
+float iorF0(float ior) {
+    const double r = (double(ior) - 1.0) / (double(ior) + 1.0);
+    return float(r * r);
+}
+
+// KHR_materials_volume's Beer–Lambert coefficient per channel: light that travels
+// attenuationDistance keeps attenuationColor, so σ = −ln(attenuationColor)/attenuationDistance.
+// An infinite distance is no attenuation; a black channel is opaque (the largest float, whose
+// product with any distance past 1e-38 still ends the light).
+glm::vec3 attenuationCoefficient(const SceneMaterial& m) {
+    if (!(m.thickness > 0.0f) || std::isinf(m.attenuationDistance)) return glm::vec3(0.0f);
+    glm::vec3 sigma;
+    for (int c = 0; c < 3; ++c) {
+        const double colour = double(m.attenuationColor[c]);
+        const double value = colour > 0.0 ? -std::log(colour) / double(m.attenuationDistance)
+                                          : double(std::numeric_limits<float>::max());
+        sigma[c] = float(std::min(value, double(std::numeric_limits<float>::max())));
+    }
+    return sigma;
 }
 
 std::uint32_t samplerBits(const SceneTexture& texture) {
@@ -46,6 +71,12 @@ std::vector<gpu::Material> makeGpuMaterials(const std::vector<SceneMaterial>& ma
         g.emissiveTexture = makeSlot(m.emissiveTexture);
         g.normalTexture = makeSlot(m.normalTexture);
         g.normalScale = m.normalScale;
+        g.transmission = m.transmission;
+        g.ior = m.ior;
+        g.iorF0 = iorF0(m.ior);
+        g.thickness = m.thickness;
+        g.attenuationCoefficient = attenuationCoefficient(m);
+        g.transmissionTexture = makeSlot(m.transmissionTexture);
         result.push_back(g);
     }
     return result;

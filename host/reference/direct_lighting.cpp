@@ -2,6 +2,7 @@
 #include "reference/direct_lighting.h"
 
 #include "shared/light_connection.h"
+#include "shared/volume.h"
 
 namespace vkpt {
 
@@ -13,6 +14,7 @@ DirectLightSample sampleDirectLight(SceneTracer& tracer, const gpu::SurfacePoint
     result.unweighted = c.contribution;
     result.lightPdf = c.lightPdf;
     result.bsdfPdf = c.bsdfPdf;
+    result.distance = gpu::segmentLength(c.direction, c.tMax);
     result.contributes = true;
     return result;
 }

@@ -12,6 +12,7 @@ struct DirectLightSample {
     glm::vec3 unweighted{0.0f}; // f·Le·cos θ (punctual: f·E·cos θ), before division by the pdf
     float lightPdf = 0.0f;      // solid angle; for a punctual light its selection probability
     float bsdfPdf = 0.0f;       // of the BSDF sampler in the same direction; 0 for punctual
+    float distance = 0.0f;      // length of the shadow ray; VKPT_FAR to a light at infinity
     bool contributes = false;   // false: no emitter, back face, below the surface or shadowed
 };
 

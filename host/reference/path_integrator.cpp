@@ -9,6 +9,7 @@
 #include "shared/ray_offset.h"
 #include "shared/rng.h"
 #include "shared/sampling.h"
+#include "shared/volume.h"
 
 namespace vkpt {
 
@@ -17,6 +18,8 @@ namespace {
 struct PathVertex {
     const gpu::SurfacePoint& surface;
     std::uint32_t bounce; // scattering events before this vertex
+    glm::vec3 medium;     // σ of the medium the vertex's light samples travel in (volume.h)
+    bool inVolume;        // the scene has volumes: light samples are attenuated by `medium`
 };
 
 // Light samples at one vertex, each weighted against the BSDF strategy (Veach 1997, 9.2.4:
@@ -31,9 +34,12 @@ glm::vec3 estimateDirectWithMis(IntegratorContext& context, const SampleKey& key
                                         DIM_LIGHT_FIRST + i);
         DirectLightSample d = sampleDirectLight(context.tracer, vertex.surface, u);
         if (!d.contributes) continue;
+        glm::vec3 unweighted = d.unweighted;
+        if (vertex.inVolume)
+            unweighted = unweighted * gpu::beerLambertTransmittance(vertex.medium, d.distance);
         // A punctual light has bsdfPdf 0: no BSDF sample can reach it, so its weight is 1.
         float weight = gpu::powerHeuristic(n, d.lightPdf, 1.0f, d.bsdfPdf);
-        sum += d.unweighted * (weight / (n * d.lightPdf));
+        sum += unweighted * (weight / (n * d.lightPdf));
     }
     return sum;
 }
@@ -65,7 +71,7 @@ glm::vec3 environmentSeen(const gpu::SceneView& view, const glm::vec3& direction
     glm::vec3 radiance = gpu::environmentRadianceAlong(unit, view);
     if (bounce == 0 || radiance == glm::vec3(0.0f)) return radiance;
     float pdfLight = gpu::environmentLightPdf(unit, view);
-    return radiance * gpu::powerHeuristic(1.0f, previousBsdfPdf, lightSamples, pdfLight);
+    return radiance * gpu::emissionMisWeight(previousBsdfPdf, lightSamples, pdfLight);
 }
 
 } // namespace
@@ -81,42 +87,51 @@ glm::vec3 integratePath(IntegratorContext& context, const SampleKey& key, const 
     glm::vec3 origin = ray.origin;
     glm::vec3 direction = ray.direction;
     float previousBsdfPdf = 0.0f;
+    const bool volumes = gpu::sceneHasTransmission(view);
+    glm::vec3 medium(0.0f); // σ of the medium the ray travels in; 0 outside every volume
     for (std::uint32_t bounce = 0;; ++bounce) {
         RayKind kind = bounce == 0 ? RayKind::Camera : RayKind::Extension;
         ClosestHit hit = context.tracer.closest(origin, direction, kind);
         if (!hit.hit) {
+            if (volumes) throughput *= gpu::beerLambertTransmittance(medium, VKPT_FAR);
             if (scene.features.environment && gpu::pathFilterKeeps(filter, bounce))
                 radiance += throughput *
                             environmentSeen(view, direction, bounce, previousBsdfPdf, lightSamples);
             break;
         }
+        if (volumes)
+            throughput *=
+                gpu::beerLambertTransmittance(medium, gpu::segmentLength(direction, hit.t));
         gpu::SurfacePoint surface = context.tracer.surfaceAt(hit, origin, direction);
         glm::vec3 emitted = gpu::emittedRadiance(surface);
         if (emitted != glm::vec3(0.0f) && gpu::pathFilterKeeps(filter, bounce)) {
             float weight = 1.0f;
             if (bounce > 0) {
                 float pdfLight = gpu::lightPdf(surface, origin, view);
-                weight = gpu::powerHeuristic(1.0f, previousBsdfPdf, lightSamples, pdfLight);
+                weight = gpu::emissionMisWeight(previousBsdfPdf, lightSamples, pdfLight);
             }
             radiance += throughput * emitted * weight;
         }
         if (bounce >= settings.maxDepth) break;
-        PathVertex vertex{surface, bounce};
+        PathVertex vertex{surface, bounce, medium, volumes};
         if (gpu::pathFilterKeeps(filter, bounce + 1))
             radiance += throughput * estimateDirectWithMis(context, key, vertex);
         ScatterSample scatter = sampleScatter(key, vertex);
         if (!scatter.bsdf.valid || !(scatter.bsdf.pdf > 0.0f) ||
-            glm::dot(scatter.direction, surface.geometricNormal) <= 0.0f)
+            !gpu::continuesOnItsSide(scatter.bsdf, scatter.direction, surface.geometricNormal))
             break;
         throughput *= scatter.bsdf.weight;
         float survival =
             gpu::russianRouletteSurvival(throughput, bounce + 1, settings.rrStartDepth);
         if (scatter.russianRoulette >= survival) break;
         throughput /= survival;
-        previousBsdfPdf = scatter.bsdf.pdf;
-        origin = gpu::offsetFromSurface(surface.position, surface.geometricNormal,
-                                        surface.coordinateScale);
+        previousBsdfPdf = gpu::misPdfOfBsdfSample(scatter.bsdf);
+        origin = gpu::offsetFromSurface(
+            surface.position, gpu::continuationNormal(scatter.bsdf, surface.geometricNormal),
+            surface.coordinateScale);
         direction = scatter.direction;
+        if (volumes && gpu::bsdfSampleTransmits(scatter.bsdf))
+            medium = gpu::mediumAfterTransmission(medium, surface, view);
     }
     return radiance;
 }

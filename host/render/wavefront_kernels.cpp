@@ -32,7 +32,8 @@ struct KernelInfo {
 
 const std::array<KernelInfo, kWavefrontKernelCount>& kernelTable() {
     static const std::array<KernelInfo, kWavefrontKernelCount> table = {{
-        {kernels::kGenerateCameraRaysName, VKPT_KERNEL_BINDINGS(GENERATE_CAMERA_RAYS_BINDINGS)},
+        {kernels::kGenerateCameraRaysName, VKPT_KERNEL_BINDINGS(GENERATE_CAMERA_RAYS_BINDINGS),
+         true},
         {kernels::kPrepareDispatchesName, VKPT_KERNEL_BINDINGS(PREPARE_DISPATCHES_BINDINGS)},
         {kernels::kTraceClosestName, VKPT_KERNEL_BINDINGS(TRACE_CLOSEST_BINDINGS), true},
         {kernels::kShadeHitsName, VKPT_KERNEL_BINDINGS(SHADE_HITS_BINDINGS), true},

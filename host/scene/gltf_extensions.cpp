@@ -9,7 +9,8 @@ namespace vkpt::gltf {
 namespace {
 
 // Extensions that change what vkpt renders and that it implements. (KHR_implicit_shapes only
-// for spheres, gltf_shapes.cpp; KHR_materials_specular without its textures.) The compression
+// for spheres, gltf_shapes.cpp; KHR_materials_specular without its textures;
+// KHR_materials_volume without thicknessTexture, which a path tracer does not need.) The compression
 // extensions are decoded while loading: Draco (gltf_draco.cpp), meshopt (gltf_meshopt.cpp),
 // quantized attributes (gltf_accessors.cpp) and WebP images (gltf_webp.cpp).
 const std::vector<std::string> kSupportedExtensions = {"KHR_materials_emissive_strength",
@@ -17,6 +18,9 @@ const std::vector<std::string> kSupportedExtensions = {"KHR_materials_emissive_s
                                                        "KHR_texture_transform",
                                                        "KHR_lights_punctual",
                                                        "KHR_implicit_shapes",
+                                                       "KHR_materials_transmission",
+                                                       "KHR_materials_ior",
+                                                       "KHR_materials_volume",
                                                        "KHR_draco_mesh_compression",
                                                        "EXT_meshopt_compression",
                                                        "KHR_mesh_quantization",

@@ -1,7 +1,9 @@
 // gltf_materials.cpp — reads the core material factors, the base colour, metallic-roughness,
-// emissive and normal textures, KHR_materials_emissive_strength and KHR_materials_specular.
+// emissive and normal textures, KHR_materials_emissive_strength, KHR_materials_specular, and the
+// glass of KHR_materials_transmission, KHR_materials_ior and KHR_materials_volume.
 #include "scene/gltf_materials.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "scene/gltf_document.h"
@@ -12,6 +14,9 @@ namespace {
 
 constexpr const char* kEmissiveStrength = "KHR_materials_emissive_strength";
 constexpr const char* kSpecular = "KHR_materials_specular";
+constexpr const char* kTransmission = "KHR_materials_transmission";
+constexpr const char* kIor = "KHR_materials_ior";
+constexpr const char* kVolume = "KHR_materials_volume";
 
 std::string materialName(std::size_t index) {
     return "material " + std::to_string(index);
@@ -95,6 +100,77 @@ void readNormalTexture(const tinygltf::NormalTextureInfo& normal, TextureTable& 
     converted.normalScale = static_cast<float>(normal.scale);
 }
 
+// An extension's textureInfo object as tinygltf's TextureInfo, so that the core reader checks
+// its index, texCoord and KHR_texture_transform.
+tinygltf::TextureInfo textureInfoOf(const tinygltf::Value& object, const std::string& where) {
+    tinygltf::TextureInfo info;
+    info.index = readIndex(object, "index", where);
+    info.texCoord = std::max(0, readIndex(object, "texCoord", where));
+    if (const tinygltf::Value* extensions = findMember(object, "extensions")) {
+        if (const tinygltf::Value* transform = findMember(*extensions, "KHR_texture_transform"))
+            info.extensions["KHR_texture_transform"] = *transform;
+    }
+    return info;
+}
+
+double readUnitNumber(const tinygltf::Value& object, const std::string& key, double fallback,
+                      const std::string& where) {
+    const double value = readNumber(object, key, fallback, where);
+    if (value < 0.0 || value > 1.0) throw GltfProblem(where + ": " + key + " must be in [0, 1]");
+    return value;
+}
+
+// KHR_materials_transmission: the share of the non-metal part that is glass
+// (transmissionFactor × transmissionTexture.r, both in [0, 1]).
+void readTransmission(const tinygltf::Material& material, std::size_t index, TextureTable& textures,
+                      SceneMaterial& converted) {
+    const tinygltf::Value* extension = findExtension(material.extensions, kTransmission);
+    if (extension == nullptr) return;
+    const std::string where = materialName(index) + ": " + kTransmission;
+    converted.transmission =
+        static_cast<float>(readUnitNumber(*extension, "transmissionFactor", 0.0, where));
+    if (const tinygltf::Value* texture = findMember(*extension, "transmissionTexture")) {
+        const std::string place = where + ": transmissionTexture";
+        converted.transmissionTexture =
+            readTextureReference(textureInfoOf(*texture, place), textures, place);
+    }
+}
+
+// KHR_materials_ior: ior >= 1 (the extension also allows 0, meaning "not a dielectric", for
+// compatibility with other formats; vkpt reads it as 1.5, the glTF default).
+void readIor(const tinygltf::Material& material, std::size_t index, SceneMaterial& converted) {
+    const tinygltf::Value* extension = findExtension(material.extensions, kIor);
+    if (extension == nullptr) return;
+    const std::string where = materialName(index) + ": " + kIor;
+    const double ior = readNumber(*extension, "ior", 1.5, where);
+    if (ior == 0.0) return;
+    if (!(ior >= 1.0)) throw GltfProblem(where + ": ior must be >= 1 (or 0)");
+    converted.ior = static_cast<float>(ior);
+}
+
+// KHR_materials_volume: thicknessFactor > 0 makes the mesh the boundary of a volume whose
+// medium attenuates light by Beer–Lambert's law. thicknessTexture is a rasteriser's hint for
+// the distance light travels inside; a path tracer measures that distance on the geometry, so
+// it is not read (materialNotes says so).
+void readVolume(const tinygltf::Material& material, std::size_t index, SceneMaterial& converted) {
+    const tinygltf::Value* extension = findExtension(material.extensions, kVolume);
+    if (extension == nullptr) return;
+    const std::string where = materialName(index) + ": " + kVolume;
+    const double thickness = readNumber(*extension, "thicknessFactor", 0.0, where);
+    if (thickness < 0.0) throw GltfProblem(where + ": thicknessFactor must be >= 0");
+    const std::vector<double> color =
+        readNumbers(*extension, "attenuationColor", {1.0, 1.0, 1.0}, where);
+    for (double c : color)
+        if (c < 0.0 || c > 1.0) throw GltfProblem(where + ": attenuationColor must be in [0, 1]");
+    converted.thickness = static_cast<float>(thickness);
+    converted.attenuationColor = glm::vec3(glm::dvec3(color[0], color[1], color[2]));
+    if (findMember(*extension, "attenuationDistance") != nullptr) {
+        const double distance = readNumber(*extension, "attenuationDistance", 0.0, where);
+        if (!(distance > 0.0)) throw GltfProblem(where + ": attenuationDistance must be > 0");
+        converted.attenuationDistance = static_cast<float>(distance);
+    }
+}
+
 void readTextures(const tinygltf::Material& material, std::size_t index, TextureTable& textures,
                   SceneMaterial& converted) {
     const std::string where = materialName(index) + ": ";
@@ -124,6 +200,9 @@ SceneMaterial convertMaterial(const tinygltf::Material& material, std::size_t in
     checkFinite(converted, index);
     readSpecular(material, index, converted);
     readTextures(material, index, textures, converted);
+    readTransmission(material, index, textures, converted);
+    readIor(material, index, converted);
+    readVolume(material, index, converted);
     return converted;
 }
 
@@ -144,13 +223,30 @@ std::vector<SceneMaterial> convertMaterials(const tinygltf::Model& model, Textur
     return materials;
 }
 
+bool hasThicknessTexture(const tinygltf::Material& material) {
+    const tinygltf::Value* extension = findExtension(material.extensions, kVolume);
+    return extension != nullptr && findMember(*extension, "thicknessTexture") != nullptr;
+}
+
+std::string materialCount(std::size_t count) {
+    return std::to_string(count) + (count == 1 ? " material" : " materials");
+}
+
 std::vector<std::string> materialNotes(const tinygltf::Model& model) {
-    std::size_t count = 0;
-    for (const tinygltf::Material& material : model.materials)
-        count += hasSpecularTexture(material) ? 1 : 0;
-    if (count == 0) return {};
-    return {"ignoring the " + std::string(kSpecular) + " textures of " + std::to_string(count) +
-            (count == 1 ? " material" : " materials") + " (only its factors are supported)"};
+    std::size_t specularTextures = 0, thicknessTextures = 0;
+    for (const tinygltf::Material& material : model.materials) {
+        specularTextures += hasSpecularTexture(material) ? 1 : 0;
+        thicknessTextures += hasThicknessTexture(material) ? 1 : 0;
+    }
+    std::vector<std::string> notes;
+    if (specularTextures > 0)
+        notes.push_back("ignoring the " + std::string(kSpecular) + " textures of " +
+                        materialCount(specularTextures) + " (only its factors are supported)");
+    if (thicknessTextures > 0)
+        notes.push_back("ignoring the " + std::string(kVolume) + " thicknessTexture of " +
+                        materialCount(thicknessTextures) +
+                        " (a rasteriser's hint: the path tracer measures thickness on the mesh)");
+    return notes;
 }
 
 SceneMaterial defaultMaterial() {

@@ -38,11 +38,23 @@ struct SceneMaterial {
     float normalScale = 1.0f;                  // normalTexture.scale
 
     bool hasNormalMap() const { return normalTexture.texture >= 0; }
+    // KHR_materials_transmission, KHR_materials_ior, KHR_materials_volume (the extensions'
+    // defaults: opaque, ior 1.5, thin-walled, no attenuation).
+    float transmission = 0.0f;            // transmissionFactor
+    TextureReference transmissionTexture; // linear, transmission in R
+    float ior = 1.5f;
+    float thickness = 0.0f;           // thicknessFactor; 0: thin-walled
+    glm::vec3 attenuationColor{1.0f}; // transmittance after attenuationDistance
+    float attenuationDistance = std::numeric_limits<float>::infinity();
 
-    // Lambertian only: the glTF model with no metal and no specular layer.
+    // Lambertian only: the glTF model with no metal, no specular layer and no glass.
     bool isDiffuseOnly() const {
-        return metallic == 0.0f && specular == 0.0f && metallicRoughnessTexture.texture < 0;
+        return metallic == 0.0f && specular == 0.0f && metallicRoughnessTexture.texture < 0 &&
+               !transmits();
     }
+    bool transmits() const { return transmission > 0.0f || transmissionTexture.texture >= 0; }
+    // Whether shading needs the dielectric extensions' data (FEATURE_TRANSMISSION).
+    bool usesDielectricExtensions() const { return transmits() || ior != 1.5f || thickness > 0.0f; }
 };
 
 // Decoded image pixels, 8 bits per channel, RGBA packed R in the low byte, row 0 first

@@ -54,8 +54,10 @@ void addMaterial(const SceneMaterial& material, SceneFeatures& features) {
     features.metallicRoughnessTextures |= material.metallicRoughnessTexture.texture >= 0;
     features.emissiveTextures |= material.emissiveTexture.texture >= 0;
     features.normalTextures |= material.hasNormalMap();
+    features.transmissionTextures |= material.transmissionTexture.texture >= 0;
     features.alphaMask |= material.alphaMode == AlphaMode::Mask;
     features.doubleSided |= material.doubleSided;
+    features.transmission |= material.usesDielectricExtensions();
 }
 
 std::uint32_t emittingTriangles(const Scene& scene) {
@@ -111,6 +113,7 @@ std::array<bool, FEATURE_COUNT> SceneFeatures::kernelFeatures() const {
     on[FEATURE_EMITTER_CDF] = emitterCdf();
     on[FEATURE_DOUBLE_SIDED] = doubleSided;
     on[FEATURE_NORMAL_MAPS] = normalTextures;
+    on[FEATURE_TRANSMISSION] = transmission;
     return on;
 }
 
@@ -137,8 +140,8 @@ SceneFeatures generalFeatures(const SceneFeatures& used) {
     SceneFeatures all;
     all.diffuseMaterials = all.metallicRoughnessMaterials = true;
     all.baseColorTextures = all.metallicRoughnessTextures = all.emissiveTextures = true;
-    all.normalTextures = true;
-    all.alphaMask = all.doubleSided = true;
+    all.normalTextures = all.transmissionTextures = true;
+    all.alphaMask = all.doubleSided = all.transmission = true;
     all.triangles = all.spheres = true;
     all.emissiveTriangles = all.emissiveSpheres = true;
     all.pointLights = all.spotLights = all.directionalLights = true;
@@ -157,9 +160,11 @@ std::string describeFeatures(const SceneFeatures& features) {
     appendIf(features.metallicRoughnessTextures, "metallic-roughness", textures);
     appendIf(features.emissiveTextures, "emissive", textures);
     appendIf(features.normalTextures, "normal", textures);
+    appendIf(features.transmissionTextures, "transmission", textures);
     if (!textures.empty()) names.push_back("textures (" + joined(textures) + ")");
     appendIf(features.alphaMask, "alpha mask", names);
     appendIf(features.doubleSided, "double-sided", names);
+    appendIf(features.transmission, "transmission", names);
     appendIf(features.triangles, "triangles", names);
     appendIf(features.spheres, "spheres", names);
     appendIf(features.emissiveTriangles, "emissive triangles", names);

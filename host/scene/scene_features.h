@@ -19,9 +19,13 @@ struct SceneFeatures {
     bool baseColorTextures = false;
     bool metallicRoughnessTextures = false;
     bool emissiveTextures = false;
-    bool normalTextures = false; // some material has a normal texture (and so tangents)
-    bool alphaMask = false;      // some material has alphaMode MASK
-    bool doubleSided = false;    // some material is double-sided
+    bool normalTextures = false;       // some material has a normal texture (and so tangents)
+    bool transmissionTextures = false; // KHR_materials_transmission's texture
+    bool alphaMask = false;            // some material has alphaMode MASK
+    bool doubleSided = false;          // some material is double-sided
+    // KHR_materials_transmission / _ior / _volume: some material transmits, bounds a volume
+    // or has an ior other than 1.5 (shared/bsdf_dielectric.h).
+    bool transmission = false;
     bool triangles = false;
     bool spheres = false;
     bool emissiveTriangles = false;
@@ -35,7 +39,8 @@ struct SceneFeatures {
     bool general = false; // --general: all switches on, and the CDF read even for one emitter
 
     bool textures() const {
-        return baseColorTextures || metallicRoughnessTextures || emissiveTextures || normalTextures;
+        return baseColorTextures || metallicRoughnessTextures || emissiveTextures ||
+               normalTextures || transmissionTextures;
     }
     // TEXCOORD_0 is needed only to read textures.
     bool textureCoordinates() const { return textures(); }

@@ -2,6 +2,7 @@
 // (active pixel of the chunk) · k + (sample j of the pass), into half 0 of the ray queue.
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#include "lib/features.glsl"
 #include "lib/frame.glsl"
 #include "shared/camera.h"
 #include "shared/rng.h"
@@ -30,7 +31,14 @@ void main() {
     vec4 jitter = randomFloats(frame.seed, pixel, sampleIndex, 0u, DIM_CAMERA);
     vec2 film = vec2(float(x) + jitter.x, float(y) + jitter.y);
     vec3 direction = cameraRayDirection(frame.camera, film);
-    pathStates[slot] = PathState(vec3(1.0), pixel, vec3(0.0), sampleIndex, vec3(0.0), 0.0);
+    pathStates[slot].throughput = vec3(1.0);
+    pathStates[slot].pixel = pixel;
+    pathStates[slot].radiance = vec3(0.0);
+    pathStates[slot].sampleIndex = sampleIndex;
+    pathStates[slot].lightScale = vec3(0.0);
+    pathStates[slot].previousBsdfPdf = 0.0;
+    // Paths start outside every volume (shared/volume.h).
+    if (featureTransmission) pathStates[slot].mediumCoefficient = vec3(0.0);
     rays[slot] = RayRecord(cameraRayOrigin(frame.camera, film), slot, direction, 0u);
     if (slot == 0u) queueCounters[COUNTER_RAYS] = slots;
 }

@@ -15,6 +15,7 @@ VKPT_DECLARE_BUFFERS(SHADE_HITS_BINDINGS)
 #include "lib/counters.glsl"
 #include "lib/lights.glsl"
 #include "shared/rng.h"
+#include "shared/volume.h"
 
 // Ray i of this bounce: what it hit, whose path it carries, and its light-sample records.
 struct Vertex {
@@ -55,6 +56,8 @@ void storePathState(uint slot, PathState before, PathState after) {
         pathStates[slot].lightScale = after.lightScale;
     if (floatBitsToUint(after.previousBsdfPdf) != floatBitsToUint(before.previousBsdfPdf))
         pathStates[slot].previousBsdfPdf = after.previousBsdfPdf;
+    if (featureTransmission && !sameBits(after.mediumCoefficient, before.mediumCoefficient))
+        pathStates[slot].mediumCoefficient = after.mediumCoefficient;
 }
 
 void clearLightSamples(uint ray) {
@@ -73,6 +76,12 @@ void writePathLightSamples(Vertex vertex, PathState state) {
         ShadowRay shadow = makeLightSampleRay(vertex.surface, random4(state, DIM_LIGHT_FIRST + k),
                                               pdfLight, pdfBsdf);
         if (shadow.flags != SHADOW_NONE) {
+            // Inside a volume the shadow ray crosses its medium (glass boundaries block it).
+            if (featureTransmission)
+                shadow.contribution =
+                    shadow.contribution *
+                    beerLambertTransmittance(state.mediumCoefficient,
+                                             segmentLength(shadow.direction, shadow.tMax));
             // A punctual light has pdfBsdf 0: no BSDF sample can reach it, so its weight is 1.
             float weight = powerHeuristic(count, pdfLight, 1.0, pdfBsdf);
             shadow.contribution = shadow.contribution * (weight / (count * pdfLight));
@@ -98,15 +107,18 @@ void continuePath(Vertex vertex, inout PathState state, inout Shading shading) {
     Basis basis = makeBasis(s.shadingNormal);
     BsdfSample bsdf = sampleBsdf(s.shading, worldToBasis(basis, s.outgoing), vec2(u.x, u.y), u.w);
     vec3 direction = basisToWorld(basis, bsdf.direction);
-    if (!bsdf.valid || !(bsdf.pdf > 0.0) || dot(direction, s.geometricNormal) <= 0.0) return;
+    if (!bsdf.valid || !(bsdf.pdf > 0.0) || !continuesOnItsSide(bsdf, direction, s.geometricNormal))
+        return;
     state.throughput *= bsdf.weight;
     float survival =
         russianRouletteSurvival(state.throughput, passParams.bounce + 1u, frame.rrStartDepth);
     if (u.z >= survival) return;
     state.throughput /= survival;
-    state.previousBsdfPdf = bsdf.pdf;
-    vec3 origin = offsetFromSurface(vertex.surface.position, vertex.surface.geometricNormal,
-                                    vertex.surface.coordinateScale);
+    state.previousBsdfPdf = misPdfOfBsdfSample(bsdf);
+    vec3 origin = offsetFromSurface(s.position, continuationNormal(bsdf, s.geometricNormal),
+                                    s.coordinateScale);
+    if (featureTransmission && bsdfSampleTransmits(bsdf))
+        state.mediumCoefficient = mediumAfterTransmission(state.mediumCoefficient, s);
     shading.continues = true;
     shading.next = RayRecord(origin, vertex.record.slot, direction, 0u);
 }
@@ -119,8 +131,7 @@ void shadePathVertex(Vertex vertex, inout PathState state, inout Shading shading
         float weight = 1.0;
         if (bounce > 0u) {
             float pdfLight = lightPdf(vertex.surface, vertex.record.origin);
-            weight =
-                powerHeuristic(1.0, state.previousBsdfPdf, float(frame.lightSamples), pdfLight);
+            weight = emissionMisWeight(state.previousBsdfPdf, float(frame.lightSamples), pdfLight);
         }
         state.radiance += state.throughput * emitted * weight;
     }
@@ -191,10 +202,12 @@ void shadeMiss(RayRecord record) {
     vec3 radiance = environmentRadianceAlong(unit);
     if (radiance == vec3(0.0)) return;
     PathState state = fetchPathState(record.slot);
+    if (featureTransmission && frame.integrator == INTEGRATOR_PATH)
+        state.throughput *= beerLambertTransmittance(state.mediumCoefficient, VKPT_FAR);
     if (frame.integrator == INTEGRATOR_PATH && bounce > 0u) {
         float pdfLight = environmentLightPdf(unit);
-        radiance = radiance *
-                   powerHeuristic(1.0, state.previousBsdfPdf, float(frame.lightSamples), pdfLight);
+        radiance =
+            radiance * emissionMisWeight(state.previousBsdfPdf, float(frame.lightSamples), pdfLight);
     }
     pathStates[record.slot].radiance = state.radiance + state.throughput * radiance;
 }
@@ -215,6 +228,10 @@ Shading shadeRay(uint i) {
             makeSurfacePoint(hit.triangle, triangleHitOf(hit), record.origin, record.direction);
         PathState before = fetchPathState(record.slot);
         PathState state = before;
+        // The segment to this hit crossed the path's medium (Beer–Lambert, shared/volume.h).
+        if (featureTransmission && frame.integrator == INTEGRATOR_PATH)
+            state.throughput *= beerLambertTransmittance(state.mediumCoefficient,
+                                                         segmentLength(record.direction, hit.t));
         if (frame.integrator == INTEGRATOR_NORMALS) {
             state.radiance = 0.5 * vertex.surface.rawShadingNormal + 0.5;
         } else if (frame.integrator == INTEGRATOR_PATH) {

@@ -28,5 +28,7 @@ layout(constant_id = FEATURE_EMITTER_CDF) const bool featureEmitterCdf = true;
 layout(constant_id = FEATURE_DOUBLE_SIDED) const bool featureDoubleSided = true;
 // Some material has a normal texture: shading reads triangleTangents and bends the normal.
 layout(constant_id = FEATURE_NORMAL_MAPS) const bool featureNormalMaps = true;
+// KHR_materials_transmission, _ior, _volume: glass lobes, volumes, an ior other than 1.5.
+layout(constant_id = FEATURE_TRANSMISSION) const bool featureTransmission = true;
 
 #endif // VKPT_FEATURES_GLSL

@@ -57,7 +57,7 @@ TriangleTangents fetchTriangleTangents(uint i) {
                             texelVec4(RECORD_TEXEL(triangleTangentTexels, 3u, i, 2u)));
 }
 
-#define MATERIAL_TEXELS 13u // sizeof(Material) / 16
+#define MATERIAL_TEXELS 17u // sizeof(Material) / 16
 
 TextureSlot textureSlotFrom(uvec4 a, uvec4 b) {
     return TextureSlot(texelVec3(a), a.w, texelVec3(b), b.w);
@@ -68,19 +68,23 @@ TextureSlot fetchTextureSlot(uint material, uint first) {
                            RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, material, first + 1u));
 }
 
-// Thirteen texels, of which the compiler keeps the fetches of the fields a kernel reads.
+// Seventeen texels, of which the compiler keeps the fetches of the fields a kernel reads.
+// Texels 10–12: the normal texture; 13–16: transmission, ior and volume.
 Material fetchMaterial(uint i) {
     uvec4 colour = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 0u);
     uvec4 emission = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 1u);
     uvec4 factors = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 2u);
     uvec4 specular = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 3u);
+    vec4 glass = texelVec4(RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 13u));
+    uvec4 volume = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 14u);
     return Material(texelVec4(colour), texelVec3(emission), emission.w,
                     uintBitsToFloat(factors.x), uintBitsToFloat(factors.y),
                     uintBitsToFloat(factors.z), factors.w, texelVec3(specular),
                     uintBitsToFloat(specular.w), fetchTextureSlot(i, 4u), fetchTextureSlot(i, 6u),
                     fetchTextureSlot(i, 8u), fetchTextureSlot(i, 10u),
                     uintBitsToFloat(RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 12u).x), 0u,
-                    0u, 0u);
+                    0u, 0u, glass.x, glass.y, glass.z, glass.w, texelVec3(volume), volume.w,
+                    fetchTextureSlot(i, 15u));
 }
 
 TextureInfo fetchTextureInfo(uint i) {
@@ -117,10 +121,12 @@ ShadowRay fetchShadowRay(uint i) {
 }
 
 PathState fetchPathState(uint slot) {
-    uvec4 a = RECORD_TEXEL(pathStateTexels, 3u, slot, 0u);
-    uvec4 b = RECORD_TEXEL(pathStateTexels, 3u, slot, 1u);
-    uvec4 c = RECORD_TEXEL(pathStateTexels, 3u, slot, 2u);
-    return PathState(texelVec3(a), a.w, texelVec3(b), b.w, texelVec3(c), uintBitsToFloat(c.w));
+    uvec4 a = RECORD_TEXEL(pathStateTexels, 4u, slot, 0u);
+    uvec4 b = RECORD_TEXEL(pathStateTexels, 4u, slot, 1u);
+    uvec4 c = RECORD_TEXEL(pathStateTexels, 4u, slot, 2u);
+    uvec4 d = RECORD_TEXEL(pathStateTexels, 4u, slot, 3u);
+    return PathState(texelVec3(a), a.w, texelVec3(b), b.w, texelVec3(c), uintBitsToFloat(c.w),
+                     texelVec3(d), d.w);
 }
 
 #endif // VKPT_RECORDS_GLSL

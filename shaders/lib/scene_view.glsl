@@ -79,6 +79,10 @@ bool sceneHasNormalMaps() {
     return featureNormalMaps;
 }
 
+bool sceneHasTransmission() {
+    return featureTransmission;
+}
+
 // trace_closest's record of a hit as the shared code takes it.
 TriangleHit triangleHitOf(HitRecord hit) {
     return TriangleHit(hit.t, hit.u, hit.v, true);

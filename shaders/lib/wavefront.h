@@ -97,7 +97,11 @@ struct PathState {
     vec3 radiance; // gathered so far, in the reference's order of additions
     uint sampleIndex;
     vec3 lightScale;       // factor of this bounce's light-sample sum: throughput at the vertex
-    float previousBsdfPdf; // solid-angle pdf of the BSDF sample that made the current ray
+    float previousBsdfPdf; // solid-angle pdf of the BSDF sample that made the current ray, or
+                           // PDF_NOT_LIGHT_SAMPLED (shared/path_rules.h)
+    // KHR_materials_volume: the medium the current ray travels in (shared/volume.h).
+    vec3 mediumCoefficient; // Beer–Lambert σ per unit length; 0 outside every volume
+    uint unusedMedium;
 };
 
 // A ray queue entry. The rays buffer holds two queues of slotCount entries: bounce b reads half
@@ -182,8 +186,9 @@ static_assert(sizeof(FrameParams) == 176 && offsetof(FrameParams, seed) == 80 &&
               offsetof(FrameParams, unused0) == 136 && offsetof(FrameParams, sampleClamp) == 140 &&
               offsetof(FrameParams, environment) == 144);
 static_assert(sizeof(PassParams) == 32);
-static_assert(sizeof(PathState) == 48 && offsetof(PathState, radiance) == 16 &&
-              offsetof(PathState, lightScale) == 32 && offsetof(PathState, previousBsdfPdf) == 44);
+static_assert(sizeof(PathState) == 64 && offsetof(PathState, radiance) == 16 &&
+              offsetof(PathState, lightScale) == 32 && offsetof(PathState, previousBsdfPdf) == 44 &&
+              offsetof(PathState, mediumCoefficient) == 48);
 static_assert(sizeof(RayRecord) == 32 && offsetof(RayRecord, direction) == 16);
 static_assert(sizeof(HitRecord) == 16);
 static_assert(sizeof(ShadowRay) == 48 && offsetof(ShadowRay, tMax) == 28 &&

@@ -13,11 +13,14 @@
 // 1 − s·max F of its own half vector, not what the specular lobe reflects at wo, so a white
 // dielectric reflects more than it receives at grazing views (tests/unit/bsdf_test.cpp
 // measures it; KhronosGroup/glTF#1853 discusses the coupling).
+// With KHR_materials_transmission the non-metal part is mix(dielectric, glass, transmission),
+// the glass lobe of bsdf_dielectric.h; KHR_materials_ior sets F0 = ((ior − 1)/(ior + 1))².
 // A material without MATERIAL_METALLIC_ROUGHNESS is Lambertian and keeps the exact arithmetic
 // of the Lambertian path (docs/scene-model.md), so scenes made only of it render as before.
 #ifndef VKPT_BSDF_H
 #define VKPT_BSDF_H
 
+#include "bsdf_dielectric.h"
 #include "host_device.h"
 #include "sampling.h"
 
@@ -44,6 +47,11 @@ struct ShadingMaterial {
     float specular;         // KHR_materials_specular factor s
     float alpha;            // GGX α = roughness², at least VKPT_MIN_GGX_ALPHA
     bool metallicRoughness; // false: the Lambertian material
+    // KHR_materials_transmission, _ior and _volume (bsdf_dielectric.h).
+    float transmission; // share of the non-metal part that is glass; 0: opaque
+    float iorF0;        // ((ior − 1)/(ior + 1))², the dielectric's F0 before specularColor
+    float eta;          // ior beyond the surface / ior on wo's side; thin-walled: the ior
+    bool thinWalled;    // no volume behind the surface
 };
 
 // roughness is perceptual; it is clamped to [0, 1] (the glTF range) before squaring.
@@ -58,7 +66,27 @@ VKPT_FN ShadingMaterial makeShadingMaterial(vec3 baseColor, float metallic, floa
     float r = clamp(roughness, 0.0f, 1.0f);
     m.alpha = max(r * r, VKPT_MIN_GGX_ALPHA);
     m.metallicRoughness = metallicRoughness;
+    m.transmission = 0.0f;
+    m.iorF0 = 0.04f; // ior 1.5
+    m.eta = 1.5f;
+    m.thinWalled = true;
     return m;
+}
+
+// The material's glass lobe: roughness as the opaque lobes', transmitted light tinted by the
+// base colour (KHR_materials_transmission).
+VKPT_FN DielectricLobe glassLobeOf(ShadingMaterial m) {
+    DielectricLobe lobe;
+    lobe.alpha = m.alpha;
+    lobe.eta = m.eta;
+    lobe.tint = m.baseColor;
+    lobe.thinWalled = m.thinWalled;
+    return lobe;
+}
+
+// The probability of sampling the glass lobe: its share of the material.
+VKPT_FN float glassLobeProbability(ShadingMaterial m) {
+    return (1.0f - m.metallic) * m.transmission;
 }
 
 VKPT_FN float maxComponent(vec3 v) {
@@ -76,9 +104,10 @@ VKPT_FN vec3 schlickFresnel(vec3 f0, float cosTheta) {
     return f0 + (vec3(1.0f) - f0) * schlickWeight(cosTheta);
 }
 
-// The dielectric's normal-incidence reflectance: IOR 1.5 (0.04) tinted by KHR_materials_specular.
+// The dielectric's normal-incidence reflectance: ((ior − 1)/(ior + 1))² (KHR_materials_ior; 0.04
+// at the default 1.5) tinted by KHR_materials_specular.
 VKPT_FN vec3 dielectricF0(ShadingMaterial m) {
-    return min(0.04f * m.specularColor, vec3(1.0f));
+    return min(m.iorF0 * m.specularColor, vec3(1.0f));
 }
 
 // GGX (Trowbridge–Reitz) normal distribution for a unit half vector h in the local frame,
@@ -136,7 +165,9 @@ VKPT_FN vec3 sampleGgxVisibleNormal(vec3 wo, float alpha, vec2 u) {
 // 0 unless both directions are above the shading normal's plane.
 VKPT_FN vec3 evaluateBsdf(ShadingMaterial m, vec3 wo, vec3 wi) {
     if (!m.metallicRoughness) return wi.z > 0.0f ? m.baseColor * VKPT_INV_PI : vec3(0.0f);
-    if (!(wo.z > 0.0f && wi.z > 0.0f)) return vec3(0.0f);
+    vec3 glass = vec3(0.0f); // for wi on either side; delta lobes excluded
+    if (m.transmission > 0.0f) glass = evaluateDielectric(glassLobeOf(m), wo, wi);
+    if (!(wo.z > 0.0f && wi.z > 0.0f)) return glassLobeProbability(m) * glass;
     vec3 h = normalize(wo + wi);
     // V·H and L·H are equal in exact arithmetic; the rounding of h makes them differ by
     // (wo − wi)·δh, which near retro-reflection is ulps of 1, not of V·H. Their mean cancels
@@ -148,6 +179,7 @@ VKPT_FN vec3 evaluateBsdf(ShadingMaterial m, vec3 wo, vec3 wi) {
     vec3 fresnel = f0 + (vec3(1.0f) - f0) * fresnelWeight;
     vec3 dielectric = m.baseColor * VKPT_INV_PI * (1.0f - m.specular * maxComponent(fresnel)) +
                       specular * m.specular * fresnel;
+    if (m.transmission > 0.0f) dielectric = mix(dielectric, glass, m.transmission);
     return mix(dielectric, metal, m.metallic);
 }
 
@@ -180,17 +212,23 @@ VKPT_FN float mixtureBsdfPdf(ShadingMaterial m, vec3 wo, vec3 wi, float specular
     return mix(diffusePdf, specularPdf, specularProbability);
 }
 
+// With glass, the mixture is glass with probability glassLobeProbability, the opaque lobes
+// otherwise (their pdf is 0 below the surface, and a smooth glass's is 0 everywhere).
 VKPT_FN float bsdfPdf(ShadingMaterial m, vec3 wo, vec3 wi) {
     if (!m.metallicRoughness) return cosineHemispherePdf(wi.z);
-    if (!(wo.z > 0.0f && wi.z > 0.0f)) return 0.0f;
-    return mixtureBsdfPdf(m, wo, wi, specularLobeProbability(m, wo.z));
+    float glassProbability = glassLobeProbability(m);
+    float glass = glassProbability > 0.0f ? dielectricPdf(glassLobeOf(m), wo, wi) : 0.0f;
+    if (!(wo.z > 0.0f && wi.z > 0.0f)) return glassProbability * glass;
+    float opaque = mixtureBsdfPdf(m, wo, wi, specularLobeProbability(m, wo.z));
+    return glassProbability > 0.0f ? mix(opaque, glass, glassProbability) : opaque;
 }
 
 struct BsdfSample {
     vec3 direction; // local frame
     float pdf;      // solid angle, bsdfPdf(m, wo, direction)
-    vec3 weight;    // f · cos θi / pdf
+    vec3 weight;    // f · |cos θi| / pdf
     bool valid;
+    bool delta; // a delta lobe (smooth glass): pdf is the discrete probability of the choice
 };
 
 VKPT_FN BsdfSample invalidBsdfSample() {
@@ -199,6 +237,25 @@ VKPT_FN BsdfSample invalidBsdfSample() {
     s.pdf = 0.0f;
     s.weight = vec3(0.0f);
     s.valid = false;
+    s.delta = false;
+    return s;
+}
+
+// The glass lobe, chosen with probability glassProbability; uChoice picks reflection or
+// refraction. A delta sample's weight is the lobe's own (its share of the material cancels
+// against the probability of choosing it); a rough one is weighed by the whole mixture.
+VKPT_FN BsdfSample sampleGlassLobe(ShadingMaterial m, vec3 wo, vec2 u, float uChoice,
+                                   float glassProbability) {
+    BsdfSample s = invalidBsdfSample();
+    DielectricLobe lobe = glassLobeOf(m);
+    DielectricSample d = sampleDielectric(lobe, wo, u, uChoice);
+    if (!d.valid) return s;
+    s.direction = d.direction;
+    s.delta = dielectricIsDelta(lobe);
+    s.pdf = s.delta ? glassProbability * d.pdf : bsdfPdf(m, wo, d.direction);
+    if (!(s.pdf > 0.0f)) return s;
+    s.weight = s.delta ? d.weight : evaluateBsdf(m, wo, d.direction) * (abs(d.direction.z) / s.pdf);
+    s.valid = true;
     return s;
 }
 
@@ -215,6 +272,12 @@ VKPT_FN BsdfSample sampleBsdf(ShadingMaterial m, vec3 wo, vec2 uDirection, float
         return s;
     }
     if (!(wo.z > 0.0f)) return s;
+    float glassProbability = glassLobeProbability(m);
+    if (glassProbability > 0.0f) {
+        if (uLobe < glassProbability)
+            return sampleGlassLobe(m, wo, uDirection, uLobe / glassProbability, glassProbability);
+        uLobe = (uLobe - glassProbability) / (1.0f - glassProbability);
+    }
     float specularProbability = specularLobeProbability(m, wo.z);
     vec3 wi;
     if (uLobe < specularProbability) {
@@ -225,6 +288,8 @@ VKPT_FN BsdfSample sampleBsdf(ShadingMaterial m, vec3 wo, vec2 uDirection, float
     }
     if (!(wi.z > 0.0f)) return s;
     float pdf = mixtureBsdfPdf(m, wo, wi, specularProbability);
+    if (glassProbability > 0.0f)
+        pdf = mix(pdf, dielectricPdf(glassLobeOf(m), wo, wi), glassProbability);
     if (!(pdf > 0.0f)) return s;
     s.direction = wi;
     s.pdf = pdf;

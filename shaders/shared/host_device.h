@@ -18,6 +18,7 @@ using glm::bitCount;
 using glm::clamp;
 using glm::cross;
 using glm::dot;
+using glm::exp;
 using glm::findLSB;
 using glm::floatBitsToInt;
 using glm::floatBitsToUint;
@@ -194,6 +195,15 @@ struct Material {
     uint normalUnused0;
     uint normalUnused1;
     uint normalUnused2;
+    // KHR_materials_transmission, KHR_materials_ior and KHR_materials_volume
+    // (shared/bsdf_dielectric.h, docs/scene-model.md), 64 bytes from offset 208.
+    float transmission; // transmissionFactor: the share of the non-metal part that is glass
+    float ior;          // index of refraction (1.5 when absent)
+    float iorF0;        // ((ior − 1)/(ior + 1))², computed in double: 0.04f exactly at 1.5
+    float thickness;    // thicknessFactor: 0 thin-walled, > 0 the mesh bounds a volume
+    vec3 attenuationCoefficient;     // σ = −ln(attenuationColor)/attenuationDistance, per unit
+    uint unusedVolume;               // keeps the vec3 16-byte aligned
+    TextureSlot transmissionTexture; // linear; transmission in .r
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -264,7 +274,8 @@ struct EnvironmentParams {
 #define FEATURE_EMITTER_CDF 7
 #define FEATURE_DOUBLE_SIDED 8
 #define FEATURE_NORMAL_MAPS 9
-#define FEATURE_COUNT 10
+#define FEATURE_TRANSMISSION 10 // transmission, a volume, or an ior other than 1.5
+#define FEATURE_COUNT 11
 
 // ---------------------------------------------------------------------------------------------
 // The camera (shared/camera.h). Pixel (0, 0) is the top-left; a sample at (x + u, y + v) has
@@ -305,8 +316,11 @@ static_assert(offsetof(Material, emission) == 16 && offsetof(Material, flags) ==
               offsetof(Material, metallicRoughnessTexture) == 96 &&
               offsetof(Material, emissiveTexture) == 128);
 static_assert(sizeof(TriangleTangents) == 48 && offsetof(TriangleTangents, t2) == 32);
-static_assert(sizeof(Material) == 208 && offsetof(Material, normalTexture) == 160 &&
-              offsetof(Material, normalScale) == 192);
+static_assert(offsetof(Material, normalTexture) == 160 && offsetof(Material, normalScale) == 192);
+static_assert(sizeof(Material) == 272 && offsetof(Material, transmission) == 208 &&
+              offsetof(Material, thickness) == 220 &&
+              offsetof(Material, attenuationCoefficient) == 224 &&
+              offsetof(Material, transmissionTexture) == 240);
 static_assert(sizeof(TextureInfo) == 16);
 static_assert(sizeof(Emitter) == 64 && offsetof(Emitter, direction) == 16 &&
               offsetof(Emitter, primitive) == 28 && offsetof(Emitter, intensity) == 32 &&

@@ -24,7 +24,11 @@ VKPT_FN bool hasTexture(TextureSlot slot VKPT_SCENE_PARAM) {
 VKPT_FN bool hasAnyTexture(Material m VKPT_SCENE_PARAM) {
     return hasTexture(m.baseColorTexture VKPT_SCENE_ARG) ||
            hasTexture(m.metallicRoughnessTexture VKPT_SCENE_ARG) ||
-           hasTexture(m.emissiveTexture VKPT_SCENE_ARG);
+           hasTexture(m.emissiveTexture VKPT_SCENE_ARG) ||
+           (sceneHasNormalMaps(VKPT_SCENE_ARG_ONLY) &&
+            hasTexture(m.normalTexture VKPT_SCENE_ARG)) ||
+           (sceneHasTransmission(VKPT_SCENE_ARG_ONLY) &&
+            hasTexture(m.transmissionTexture VKPT_SCENE_ARG));
 }
 
 // TEXCOORD_0 at barycentrics (u, v) of primitive `index`, or at the outward normal of a sphere.

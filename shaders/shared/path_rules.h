@@ -3,7 +3,9 @@
 #ifndef VKPT_PATH_RULES_H
 #define VKPT_PATH_RULES_H
 
+#include "bsdf.h"
 #include "host_device.h"
+#include "sampling.h"
 
 #ifdef __cplusplus
 namespace vkpt::gpu {
@@ -37,6 +39,42 @@ VKPT_FN bool pathFilterKeeps(uint pathFilter, uint scatterCount) {
 VKPT_FN float areaToSolidAnglePdf(float pdfArea, float distanceSquared, float cosAtLight) {
     float c = abs(cosAtLight);
     return c > 0.0f ? pdfArea * distanceSquared / c : 0.0f;
+}
+
+// Multiple importance sampling of emission found by a BSDF sample (docs/integrator.md): the
+// pdf a path keeps for the next vertex's weight (PathState::previousBsdfPdf on the device) is
+// PDF_NOT_LIGHT_SAMPLED when light sampling could not have produced the direction: a delta
+// lobe (light sampling never evaluates one) or a transmission (a shadow ray starts on the side
+// the path arrived from, and glass blocks shadow rays). Emission then counts with weight 1.
+#define PDF_NOT_LIGHT_SAMPLED -1.0f
+
+VKPT_FN bool bsdfSampleTransmits(BsdfSample s) {
+    return s.direction.z < 0.0f;
+}
+
+VKPT_FN float misPdfOfBsdfSample(BsdfSample s) {
+    return (s.delta || bsdfSampleTransmits(s)) ? PDF_NOT_LIGHT_SAMPLED : s.pdf;
+}
+
+// The power heuristic of one BSDF sample against N light samples (Veach 1997, §9.2.4), or 1
+// when light sampling could not have chosen the direction.
+VKPT_FN float emissionMisWeight(float previousBsdfPdf, float lightSamples, float pdfLight) {
+    if (previousBsdfPdf < 0.0f) return 1.0f;
+    return powerHeuristic(1.0f, previousBsdfPdf, lightSamples, pdfLight);
+}
+
+// Whether a sampled world direction continues the path: a reflection must leave above the
+// geometric surface and a transmission below it. An interpolated shading normal can put either
+// on the wrong side, where a reflection would re-enter the surface or a transmission leak
+// back; such a path ends, as a reflection below the surface always did.
+VKPT_FN bool continuesOnItsSide(BsdfSample s, vec3 direction, vec3 geometricNormal) {
+    float side = dot(direction, geometricNormal);
+    return bsdfSampleTransmits(s) ? side < 0.0f : side > 0.0f;
+}
+
+// The normal along which the next ray's origin leaves the surface: to the side it goes.
+VKPT_FN vec3 continuationNormal(BsdfSample s, vec3 geometricNormal) {
+    return bsdfSampleTransmits(s) ? -geometricNormal : geometricNormal;
 }
 
 #ifdef __cplusplus

@@ -19,7 +19,7 @@
 //   environmentTexels[], environmentCdf[] (environment.h)
 //   bool sceneHasMetallicRoughness(), sceneHasTextures(), sceneHasSpheres(),
 //        sceneHasPunctualLights(), sceneHasEnvironment(), sceneHasEmitterCdf(),
-//        sceneHasDoubleSided(), sceneHasNormalMaps()
+//        sceneHasDoubleSided(), sceneHasNormalMaps(), sceneHasTransmission()
 #ifndef VKPT_SCENE_VIEW_H
 #define VKPT_SCENE_VIEW_H
 
@@ -111,6 +111,9 @@ VKPT_FN bool sceneHasDoubleSided(VKPT_SCENE_PARAM_ONLY) {
 }
 VKPT_FN bool sceneHasNormalMaps(VKPT_SCENE_PARAM_ONLY) {
     return scene.features[FEATURE_NORMAL_MAPS];
+}
+VKPT_FN bool sceneHasTransmission(VKPT_SCENE_PARAM_ONLY) {
+    return scene.features[FEATURE_TRANSMISSION];
 }
 
 } // namespace vkpt::gpu

@@ -74,6 +74,19 @@ VKPT_FN vec3 normalMappedShadingNormal(SurfacePoint s, Material m, TriangleHit h
     return bendTowardsViewer(mapped, s.geometricNormal, s.outgoing);
 }
 
+// KHR_materials_transmission, _ior and _volume at the point: the glass share (factor × texture
+// R), F0 from the ior, and the ratio of indices a refraction crosses: ior entering a volume
+// through its front face, 1/ior leaving through its back face (outside every volume is ior 1:
+// docs/integrator.md, the nesting limitation); a thin wall's Fresnel term takes the ior.
+VKPT_FN void applyDielectricExtensions(VKPT_INOUT(ShadingMaterial) shading, Material m,
+                                       bool frontFace, vec2 uv VKPT_SCENE_PARAM) {
+    shading.transmission =
+        m.transmission * sampleSlot(m.transmissionTexture, uv, false VKPT_SCENE_ARG).x;
+    shading.iorF0 = m.iorF0;
+    shading.thinWalled = !(m.thickness > 0.0f);
+    shading.eta = (shading.thinWalled || frontFace) ? m.ior : 1.0f / m.ior;
+}
+
 // The material at the point: factors times textures (each read only when present). Needs
 // s.outgoing for the normal texture's bend.
 VKPT_FN void fillMaterial(VKPT_INOUT(SurfacePoint) s, Triangle primitive,
@@ -83,9 +96,9 @@ VKPT_FN void fillMaterial(VKPT_INOUT(SurfacePoint) s, Triangle primitive,
     float metallic = m.metallic;
     float roughness = m.roughness;
     s.emission = m.emission;
+    vec2 uv = vec2(0.0f);
     if (hasAnyTexture(m VKPT_SCENE_ARG)) {
-        vec2 uv =
-            primitiveUv(s.triangle, primitive, hit.u, hit.v, s.rawShadingNormal VKPT_SCENE_ARG);
+        uv = primitiveUv(s.triangle, primitive, hit.u, hit.v, s.rawShadingNormal VKPT_SCENE_ARG);
         baseColor = m.baseColor * sampleSlot(m.baseColorTexture, uv, true VKPT_SCENE_ARG);
         vec4 metalRough = sampleSlot(m.metallicRoughnessTexture, uv, false VKPT_SCENE_ARG);
         metallic = m.metallic * metalRough.z;
@@ -94,14 +107,14 @@ VKPT_FN void fillMaterial(VKPT_INOUT(SurfacePoint) s, Triangle primitive,
     }
     if (sceneHasNormalMaps(VKPT_SCENE_ARG_ONLY) && hasTexture(m.normalTexture VKPT_SCENE_ARG) &&
         length(s.rawShadingNormal) > 0.0f) {
-        vec2 uv =
-            primitiveUv(s.triangle, primitive, hit.u, hit.v, s.rawShadingNormal VKPT_SCENE_ARG);
         s.shadingNormal = normalMappedShadingNormal(s, m, hit, uv VKPT_SCENE_ARG);
     }
     bool metallicRoughness = sceneHasMetallicRoughness(VKPT_SCENE_ARG_ONLY) &&
                              (m.flags & MATERIAL_METALLIC_ROUGHNESS) != 0u;
     s.shading = makeShadingMaterial(vec3(baseColor), metallic, roughness, m.specular,
                                     m.specularColor, metallicRoughness);
+    if (sceneHasTransmission(VKPT_SCENE_ARG_ONLY))
+        applyDielectricExtensions(s.shading, m, s.frontFace, uv VKPT_SCENE_ARG);
     s.doubleSided =
         sceneHasDoubleSided(VKPT_SCENE_ARG_ONLY) && (m.flags & MATERIAL_DOUBLE_SIDED) != 0u;
 }

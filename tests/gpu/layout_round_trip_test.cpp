@@ -72,7 +72,8 @@ SharedStructs makeStructs() {
         s.bvhNodes.push_back(node);
         s.triangles.push_back({x.v3(), x.u(), x.v3(), x.u(), x.v3(), x.u()});
         s.triangleNormals.push_back({x.v4(), x.v4(), x.v4()});
-        Material m{x.v4(), x.v3(), x.u(), x.f(), x.f(), x.f(), x.u(), x.v3(), x.f(), {}, {}, {}};
+        Material m{x.v4(), x.v3(), x.u(), x.f(), x.f(), x.f(), x.u(),           x.v3(), x.f(), {},
+                   {},     {},     0.0f,  0.0f,  0.0f,  0.0f,  glm::vec3(0.0f), 0u,     {}};
         m.baseColorTexture = makeTextureSlot(x);
         m.metallicRoughnessTexture = makeTextureSlot(x);
         m.emissiveTexture = makeTextureSlot(x);
@@ -81,6 +82,13 @@ SharedStructs makeStructs() {
         m.normalUnused0 = x.u();
         m.normalUnused1 = x.u();
         m.normalUnused2 = x.u();
+        m.transmission = x.f();
+        m.ior = x.f();
+        m.iorF0 = x.f();
+        m.thickness = x.f();
+        m.attenuationCoefficient = x.v3();
+        m.unusedVolume = x.u();
+        m.transmissionTexture = makeTextureSlot(x);
         s.materials.push_back(m);
         s.textures.push_back({x.u(), x.u(), x.u(), x.u()});
         s.emitters.push_back(
@@ -88,7 +96,7 @@ SharedStructs makeStructs() {
         s.environments.push_back(makeEnvironment(x));
         s.cameras.push_back(makeCamera(x));
         s.frames.push_back(makeFrameParams(x));
-        s.pathStates.push_back({x.v3(), x.u(), x.v3(), x.u(), x.v3(), x.f()});
+        s.pathStates.push_back({x.v3(), x.u(), x.v3(), x.u(), x.v3(), x.f(), x.v3(), x.u()});
         s.shadowRays.push_back({x.v3(), x.u(), x.v3(), x.f(), x.v3(), x.f()});
         s.pixelStates.push_back({x.v3(), x.u(), x.v3(), x.u(), x.f(), x.f(), x.u(), x.u()});
     }

@@ -24,7 +24,8 @@ inline std::string sharedScenePath(const std::string& relative) {
 std::vector<std::string> featureTestScenes();
 
 // A scene as loadTestScene loads it; test/features/environment.gltf gets its environment map
-// (test/features/sky.hdr), which vkpt takes from the command line rather than the file.
+// (test/features/sky.hdr), which vkpt takes from the command line rather than the file, and
+// glass-ball.gltf and absorbing-slab.gltf a constant one.
 LoadedTestScene loadFeatureTestScene(const std::string& relative, bool general = false);
 
 // Renders `loaded` on the device with the camera renderTestScene uses, so that both

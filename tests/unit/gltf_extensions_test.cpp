@@ -1,14 +1,18 @@
 // gltf_extensions_test.cpp — the loader's scene model beyond triangles, on the generated files of
 // scenes/loader: decoded textures and their samplers, TEXCOORD_0 per triangle,
 // KHR_texture_transform, KHR_materials_specular, KHR_lights_punctual, KHR_implicit_shapes
-// spheres, and recentring with spheres and lights.
+// spheres, KHR_materials_transmission, KHR_materials_ior and KHR_materials_volume, and recentring
+// with spheres and lights.
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "prepare/gpu_materials.h"
 #include "scene/gltf_loader.h"
 #include "scene/gltf_textures.h"
 
@@ -219,6 +223,71 @@ TEST(GltfSpecular, ReadsFactorsAndNotesTheTexturesItIgnores) {
     EXPECT_FALSE(core.isDiffuseOnly());
     EXPECT_EQ(notes, kLoaderDir + "specular.gltf: ignoring the KHR_materials_specular textures "
                                   "of 1 material (only its factors are supported)\n");
+}
+
+// --- KHR_materials_transmission, KHR_materials_ior, KHR_materials_volume ---------------------
+
+TEST(GltfGlass, ReadsTransmissionIorAndVolumeAndNotesTheThicknessTexture) {
+    std::string notes;
+    const Scene scene = load("glass.gltf", &notes);
+    ASSERT_EQ(scene.materials.size(), 3u);
+    const SceneMaterial& water = scene.materials[0];
+    EXPECT_EQ(water.transmission, 0.8f);
+    EXPECT_GE(water.transmissionTexture.texture, 0);
+    EXPECT_EQ(water.ior, 1.33f);
+    EXPECT_EQ(water.thickness, 0.5f);
+    EXPECT_EQ(water.attenuationColor, glm::vec3(0.5f, 0.25f, 1.0f));
+    EXPECT_EQ(water.attenuationDistance, 2.0f);
+    EXPECT_FALSE(water.isDiffuseOnly());
+    EXPECT_TRUE(water.usesDielectricExtensions());
+    const SceneMaterial& plain = scene.materials[1]; // the extensions' defaults
+    EXPECT_EQ(plain.transmission, 0.0f);
+    EXPECT_LT(plain.transmissionTexture.texture, 0);
+    EXPECT_EQ(plain.ior, 1.5f);
+    EXPECT_EQ(plain.thickness, 0.0f);
+    EXPECT_EQ(plain.attenuationColor, glm::vec3(1.0f));
+    EXPECT_TRUE(std::isinf(plain.attenuationDistance));
+    EXPECT_FALSE(plain.usesDielectricExtensions());
+    EXPECT_EQ(scene.materials[2].ior, 1.5f); // ior 0: "not a dielectric", the default
+    EXPECT_EQ(notes, kLoaderDir + "glass.gltf: ignoring the KHR_materials_volume "
+                                  "thicknessTexture of 1 material (a rasteriser's hint: the path "
+                                  "tracer measures thickness on the mesh)\n");
+}
+
+// The device record: F0 from the ior in double (0.04f exactly at 1.5, so opaque materials
+// shade as before the extension), and σ = −ln(attenuationColor)/attenuationDistance.
+TEST(GltfGlass, DeviceMaterialHoldsF0AndTheAttenuationCoefficient) {
+    const Scene scene = load("glass.gltf");
+    const std::vector<gpu::Material> device = makeGpuMaterials(scene.materials);
+    const gpu::Material& water = device[0];
+    EXPECT_EQ(water.transmission, 0.8f);
+    EXPECT_EQ(water.ior, 1.33f);
+    EXPECT_NEAR(water.iorF0, (0.33 / 2.33) * (0.33 / 2.33), 1e-7);
+    EXPECT_EQ(water.thickness, 0.5f);
+    EXPECT_NEAR(water.attenuationCoefficient.x, std::log(2.0) / 2.0, 1e-7);
+    EXPECT_NEAR(water.attenuationCoefficient.y, std::log(4.0) / 2.0, 1e-7);
+    EXPECT_EQ(water.attenuationCoefficient.z, 0.0f);
+    EXPECT_NE(water.transmissionTexture.texture, NO_TEXTURE);
+    const gpu::Material& plain = device[1];
+    EXPECT_EQ(plain.iorF0, 0.04f);
+    EXPECT_EQ(plain.attenuationCoefficient, glm::vec3(0.0f));
+    EXPECT_EQ(plain.transmissionTexture.texture, NO_TEXTURE);
+}
+
+// The Khronos sample that motivated the extensions loads with none of them reported ignored.
+TEST(GltfGlass, TransmissionTestSampleLoadsWithoutIgnoringTheExtensions) {
+    const std::string path = VKPT_SCENES_DIR "/../../shared/scenes/TransmissionTest/"
+                                             "TransmissionTest.glb";
+    if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " is not present";
+    testing::internal::CaptureStderr();
+    const Scene scene = loadGltfScene(path);
+    const std::string notes = testing::internal::GetCapturedStderr();
+    for (const char* extension :
+         {"KHR_materials_transmission", "KHR_materials_ior", "KHR_materials_volume"})
+        EXPECT_EQ(notes.find(extension), std::string::npos) << notes;
+    const bool anyTransmits = std::any_of(scene.materials.begin(), scene.materials.end(),
+                                          [](const SceneMaterial& m) { return m.transmits(); });
+    EXPECT_TRUE(anyTransmits);
 }
 
 // --- KHR_lights_punctual -------------------------------------------------------------------

@@ -282,6 +282,11 @@ const InvalidCase kInvalidCases[] = {
      "mesh 0, primitive 0: POSITION: accessor 7 does not exist (the file has 3 accessors)"},
     {"UnknownLightType", "light_type.gltf",
      "light 0: type 'area' is not point, spot or directional"},
+    {"TransmissionOutOfRange", "transmission_out_of_range.gltf",
+     "material 0: KHR_materials_transmission: transmissionFactor must be in [0, 1]"},
+    {"IorBelowOne", "ior_below_one.gltf", "material 0: KHR_materials_ior: ior must be >= 1 (or 0)"},
+    {"AttenuationDistanceZero", "attenuation_distance_zero.gltf",
+     "material 0: KHR_materials_volume: attenuationDistance must be > 0"},
     {"NegativeLightIntensity", "light_negative_intensity.gltf",
      "light 0: intensity must not be negative"},
     {"SpotInnerConeWiderThanOuter", "light_spot_cone.gltf",
@@ -359,7 +364,8 @@ struct SharedScene {
     glm::vec3 boundsMax;
     std::size_t cameras;
     std::size_t emissiveMaterials;
-    std::size_t images; // decoded: those the materials' base colour, MR and emissive slots use
+    std::size_t images; // decoded: those the materials' base colour, MR, emissive and
+                        // transmission slots use
 };
 
 // Figures from shared/scenes/README.md (bounds printed there with six significant digits).
@@ -404,7 +410,7 @@ const SharedScene kSharedScenes[] = {
      {0.826243f, 0.620546f, 1.36801f},
      1,
      1,
-     8},
+     9}, // 8 for the core slots, 1 more for KHR_materials_transmission's transmissionTexture
 };
 
 std::size_t emissiveMaterialCount(const Scene& scene) {

@@ -38,8 +38,10 @@ std::string kinds(const SceneFeatures& f) {
         {f.metallicRoughnessTextures, "mrTex"},
         {f.emissiveTextures, "emissiveTex"},
         {f.normalTextures, "normalTex"},
+        {f.transmissionTextures, "transmissionTex"},
         {f.alphaMask, "mask"},
         {f.doubleSided, "doubleSided"},
+        {f.transmission, "transmission"},
         {f.triangles, "triangles"},
         {f.spheres, "spheres"},
         {f.emissiveTriangles, "emissiveTriangles"},
@@ -69,6 +71,8 @@ TEST(SceneFeatures, OfTheLoaderScenes) {
               "mr baseColorTex emissiveTex triangles emissiveTriangles | 2");
     // Metallic 0 alone is not Lambertian: the core specular layer stays (specular 1).
     EXPECT_EQ(kinds(featuresOf("spheres.gltf")), "mr triangles spheres emissiveSpheres | 1");
+    // KHR_materials_transmission (with a texture), _ior and _volume.
+    EXPECT_EQ(kinds(featuresOf("glass.gltf")), "mr transmissionTex transmission triangles | 0");
     EXPECT_EQ(kinds(featuresOf("lights.gltf")), "mr triangles point spot directional | 3");
     EXPECT_EQ(kinds(featuresOf("specular.gltf")), "diffuse mr triangles | 0");
 }
@@ -182,6 +186,12 @@ TEST(SceneFeatures, MapToTheKernelSpecialisationConstants) {
     f = {};
     f.doubleSided = true;
     EXPECT_EQ(f.kernelFeatures(), only(FEATURE_DOUBLE_SIDED));
+    f = {};
+    f.transmission = true;
+    EXPECT_EQ(f.kernelFeatures(), only(FEATURE_TRANSMISSION));
+    f = {};
+    f.transmissionTextures = true;
+    EXPECT_EQ(f.kernelFeatures(), only(FEATURE_TEXTURES));
     // Kinds that need no kernel switch of their own.
     f = {};
     f.diffuseMaterials = f.triangles = f.emissiveTriangles = f.emissiveSpheres = true;
@@ -195,7 +205,8 @@ TEST(SceneFeatures, GeneralTurnsEverythingOnAndKeepsTheEmitterCount) {
     used.emitterCount = 1;
     const SceneFeatures general = generalFeatures(used);
     EXPECT_EQ(kinds(general),
-              "diffuse mr baseColorTex mrTex emissiveTex mask doubleSided triangles spheres "
+              "diffuse mr baseColorTex mrTex emissiveTex transmissionTex mask doubleSided "
+              "transmission triangles spheres "
               "emissiveTriangles emissiveSpheres point spot directional environment "
               "environmentMap | 1");
     EXPECT_TRUE(general.general);

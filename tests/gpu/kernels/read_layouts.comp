@@ -147,6 +147,13 @@ void main() {
     putUint(materials[i].normalUnused0);
     putUint(materials[i].normalUnused1);
     putUint(materials[i].normalUnused2);
+    putFloat(materials[i].transmission);
+    putFloat(materials[i].ior);
+    putFloat(materials[i].iorF0);
+    putFloat(materials[i].thickness);
+    putVec3(materials[i].attenuationCoefficient);
+    putUint(materials[i].unusedVolume);
+    putTextureSlot(materials[i].transmissionTexture);
 
     cursor = LAYOUT_OFFSET_TEXTURES + i * LAYOUT_WORDS_TEXTURE_INFO;
     putUint(textures[i].texelOffset);
@@ -182,6 +189,8 @@ void main() {
     putUint(pathStates[i].sampleIndex);
     putVec3(pathStates[i].lightScale);
     putFloat(pathStates[i].previousBsdfPdf);
+    putVec3(pathStates[i].mediumCoefficient);
+    putUint(pathStates[i].unusedMedium);
 
     cursor = LAYOUT_OFFSET_SHADOW_RAYS + i * LAYOUT_WORDS_SHADOW_RAY;
     putVec3(shadowRays[i].origin);

@@ -156,6 +156,13 @@ void main() {
     materials[i].normalUnused0 = takeUint();
     materials[i].normalUnused1 = takeUint();
     materials[i].normalUnused2 = takeUint();
+    materials[i].transmission = takeFloat();
+    materials[i].ior = takeFloat();
+    materials[i].iorF0 = takeFloat();
+    materials[i].thickness = takeFloat();
+    materials[i].attenuationCoefficient = takeVec3();
+    materials[i].unusedVolume = takeUint();
+    materials[i].transmissionTexture = takeTextureSlot();
 
     cursor = LAYOUT_OFFSET_TEXTURES + i * LAYOUT_WORDS_TEXTURE_INFO;
     textures[i].texelOffset = takeUint();
@@ -191,6 +198,8 @@ void main() {
     pathStates[i].sampleIndex = takeUint();
     pathStates[i].lightScale = takeVec3();
     pathStates[i].previousBsdfPdf = takeFloat();
+    pathStates[i].mediumCoefficient = takeVec3();
+    pathStates[i].unusedMedium = takeUint();
 
     cursor = LAYOUT_OFFSET_SHADOW_RAYS + i * LAYOUT_WORDS_SHADOW_RAY;
     shadowRays[i].origin = takeVec3();
