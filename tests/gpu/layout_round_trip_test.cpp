@@ -72,8 +72,16 @@ SharedStructs makeStructs() {
         s.bvhNodes.push_back(node);
         s.triangles.push_back({x.v3(), x.u(), x.v3(), x.u(), x.v3(), x.u()});
         s.triangleNormals.push_back({x.v4(), x.v4(), x.v4()});
-        Material m{x.v4(), x.v3(), x.u(), x.f(), x.f(), x.f(), x.u(),           x.v3(), x.f(), {},
-                   {},     {},     0.0f,  0.0f,  0.0f,  0.0f,  glm::vec3(0.0f), 0u,     {}};
+        Material m{};
+        m.baseColor = x.v4();
+        m.emission = x.v3();
+        m.flags = x.u();
+        m.metallic = x.f();
+        m.roughness = x.f();
+        m.alphaCutoff = x.f();
+        m.alphaMode = x.u();
+        m.specularColor = x.v3();
+        m.specular = x.f();
         m.baseColorTexture = makeTextureSlot(x);
         m.metallicRoughnessTexture = makeTextureSlot(x);
         m.emissiveTexture = makeTextureSlot(x);

@@ -19,9 +19,22 @@ TextureSlot emptySlot() {
     return {vec3(1.0f, 0.0f, 0.0f), NO_TEXTURE, vec3(0.0f, 1.0f, 0.0f), 0u};
 }
 
+// Every field named, so that a field added to Material later starts at zero here rather than
+// breaking the initialiser; the texture slots are empty and the extensions at their defaults.
 Material diffuse(vec3 baseColor, vec3 emission = vec3(0.0f)) {
-    return {vec4(baseColor, 1.0f), emission,   0u,   0.0f,        1.0f,        0.5f,
-            ALPHA_MODE_OPAQUE,     vec3(1.0f), 0.0f, emptySlot(), emptySlot(), emptySlot()};
+    Material m{};
+    m.baseColor = vec4(baseColor, 1.0f);
+    m.emission = emission;
+    m.roughness = 1.0f;
+    m.alphaCutoff = 0.5f;
+    m.alphaMode = ALPHA_MODE_OPAQUE;
+    m.specularColor = vec3(1.0f);
+    m.baseColorTexture = m.metallicRoughnessTexture = m.emissiveTexture = emptySlot();
+    m.normalTexture = m.transmissionTexture = emptySlot();
+    m.normalScale = 1.0f;
+    m.ior = 1.5f;
+    m.iorF0 = 0.04f;
+    return m;
 }
 
 // A one-triangle (or one-sphere) scene: the triangle in z = -1, counter-clockwise seen from
