@@ -72,7 +72,8 @@ SharedStructs makeStructs() {
         s.bvhNodes.push_back(node);
         s.triangles.push_back({x.v3(), x.u(), x.v3(), x.u(), x.v3(), x.u()});
         s.triangleNormals.push_back({x.v4(), x.v4(), x.v4()});
-        Material m{x.v4(), x.v3(), x.u(), x.f(), x.f(), x.f(), x.u(), x.v3(), x.f(), {}, {}, {}};
+        Material m{x.v4(), x.v3(), x.u(), x.f(), x.f(), x.f(), x.u(), x.v3(), x.f(),
+                   {},     {},     {},    {},    0.0f,  0u,    0u,    0u};
         m.baseColorTexture = makeTextureSlot(x);
         m.metallicRoughnessTexture = makeTextureSlot(x);
         m.emissiveTexture = makeTextureSlot(x);

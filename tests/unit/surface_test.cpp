@@ -21,7 +21,8 @@ TextureSlot emptySlot() {
 
 Material diffuse(vec3 baseColor, vec3 emission = vec3(0.0f)) {
     return {vec4(baseColor, 1.0f), emission,   0u,   0.0f,        1.0f,        0.5f,
-            ALPHA_MODE_OPAQUE,     vec3(1.0f), 0.0f, emptySlot(), emptySlot(), emptySlot()};
+            ALPHA_MODE_OPAQUE,     vec3(1.0f), 0.0f, emptySlot(), emptySlot(), emptySlot(),
+            emptySlot(),           1.0f,       0u,   0u,          0u};
 }
 
 // A one-triangle (or one-sphere) scene: the triangle in z = -1, counter-clockwise seen from
