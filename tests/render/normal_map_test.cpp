@@ -94,7 +94,9 @@ TEST_P(NormalMappedFurnace, GainsNoEnergyAndIsNeverBlackWhereTheFlatSurfaceIsLit
                 metal ? "metal" : "diffuse", flatMean.mean, flatMean.standardError, mappedMean.mean,
                 mappedMean.standardError);
     // The Lambertian white floor reflects the environment exactly; rough metal loses some.
-    if (!metal) EXPECT_NEAR(flatMean.mean, 1.0, 3.0 * flatMean.standardError + 1e-5);
+    if (!metal) {
+        EXPECT_NEAR(flatMean.mean, 1.0, 3.0 * flatMean.standardError + 1e-5);
+    }
     // One-sided 3σ: a gain of energy would show as a mean above 1.
     EXPECT_LE(mappedMean.mean, 1.0 + 3.0 * mappedMean.standardError + 1e-5);
     std::size_t black = 0;
@@ -106,8 +108,8 @@ TEST_P(NormalMappedFurnace, GainsNoEnergyAndIsNeverBlackWhereTheFlatSurfaceIsLit
 }
 
 INSTANTIATE_TEST_SUITE_P(DiffuseAndMetal, NormalMappedFurnace, testing::Values(false, true),
-                         [](const testing::TestParamInfo<bool>& info) {
-                             return std::string(info.param ? "RoughMetal" : "Lambertian");
+                         [](const testing::TestParamInfo<bool>& test) {
+                             return std::string(test.param ? "RoughMetal" : "Lambertian");
                          });
 
 } // namespace

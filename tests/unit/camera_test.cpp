@@ -194,7 +194,8 @@ TEST(GpuCamera, OrthographicRaysAreParallelFromTheImagePlane) {
     camera.position = {1, 2, 3};
     camera.projection = CameraProjection::Orthographic;
     camera.ymag = 0.5f;
-    camera.xmag = 7.0f; // not used: the image's aspect decides the width
+    camera.xmag = 7.0f;                     // not used: the image's aspect decides the width
+    camera.forward = {-0.0f, -0.0f, -1.0f}; // as a node transform gives it
     const gpu::Camera gpuCamera = makeGpuCamera(camera, 200, 100);
     EXPECT_EQ(gpuCamera.projection, CAMERA_ORTHOGRAPHIC);
     EXPECT_FLOAT_EQ(gpuCamera.orthoHalfHeight, 0.5f);
@@ -204,6 +205,9 @@ TEST(GpuCamera, OrthographicRaysAreParallelFromTheImagePlane) {
         expectNear(gpu::cameraRayOrigin(gpuCamera, corners[i]), origins[i], 1e-6f);
         EXPECT_EQ(gpu::cameraRayDirection(gpuCamera, corners[i]), glm::vec3(0, 0, -1));
     }
+    // No −0 in the shared direction: the device's BVH walk reads direction signs bit by bit.
+    EXPECT_FALSE(std::signbit(gpuCamera.forward.x));
+    EXPECT_FALSE(std::signbit(gpuCamera.forward.y));
 }
 
 // --- Cameras placed by glTF nodes ----------------------------------------------------------

@@ -195,7 +195,8 @@ TEST(SceneFeatures, GeneralTurnsEverythingOnAndKeepsTheEmitterCount) {
     used.emitterCount = 1;
     const SceneFeatures general = generalFeatures(used);
     EXPECT_EQ(kinds(general),
-              "diffuse mr baseColorTex mrTex emissiveTex mask doubleSided triangles spheres "
+              "diffuse mr baseColorTex mrTex emissiveTex normalTex mask doubleSided triangles "
+              "spheres "
               "emissiveTriangles emissiveSpheres point spot directional environment "
               "environmentMap | 1");
     EXPECT_TRUE(general.general);
