@@ -329,7 +329,7 @@ def default_scene():
 
 def cameras():
     # Cameras come in node-walk order: "rotated" (node 1), then "child" (node 4, under a parent
-    # rotated 90 degrees about X); the orthographic one is skipped.
+    # rotated 90 degrees about X), with the orthographic one (node 2) between them.
     gltf = Gltf()
     gltf.doc["cameras"] = [
         {"name": "rotated", "type": "perspective", "perspective": {"yfov": 0.5, "znear": 0.1}},
@@ -591,7 +591,7 @@ VALID_SCENES = [
      "material factors, emissive strength, alpha modes, a primitive without material"),
     ("default_scene.gltf", default_scene, write_embedded, "two scenes, `scene` selects the second"),
     ("cameras.gltf", cameras, write_embedded,
-     "perspective cameras on rotated and child nodes, one orthographic camera"),
+     "perspective cameras on rotated and child nodes, an orthographic camera between them"),
     ("extensions.gltf", extensions, write_embedded,
      "extensionsUsed with supported, unsupported and repeated entries"),
     ("textured.gltf", textured, write_embedded,

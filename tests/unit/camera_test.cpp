@@ -9,6 +9,7 @@
 #include "common/errors.h"
 #include "scene/camera.h"
 #include "scene/gltf_loader.h"
+#include "shared/camera.h"
 
 namespace vkpt {
 namespace {
@@ -174,12 +175,47 @@ TEST(GpuCamera, CarriesFieldOfViewAspectAndImageSize) {
     expectNear(gpuCamera.right, {1, 0, 0}); // the default camera looks down -Z with +Y up
 }
 
+TEST(GpuCamera, PerspectiveRaysStartAtThePositionThroughThePinholesPlane) {
+    SceneCamera camera;
+    camera.position = {1, 2, 3};
+    camera.yfov = 0.8f;
+    const gpu::Camera gpuCamera = makeGpuCamera(camera, 200, 100);
+    EXPECT_EQ(gpuCamera.projection, CAMERA_PERSPECTIVE);
+    EXPECT_EQ(gpu::cameraRayOrigin(gpuCamera, {0.0f, 0.0f}), camera.position);
+    // The top-left corner: tan(yfov/2) up and twice that (the aspect) to the left.
+    const float t = std::tan(0.4f);
+    expectNear(gpu::cameraRayDirection(gpuCamera, {0.0f, 0.0f}),
+               glm::normalize(glm::vec3(-2.0f * t, t, -1.0f)));
+}
+
+// glTF orthographic camera: ymag is the half-height; the image's aspect sets the half-width.
+TEST(GpuCamera, OrthographicRaysAreParallelFromTheImagePlane) {
+    SceneCamera camera;
+    camera.position = {1, 2, 3};
+    camera.projection = CameraProjection::Orthographic;
+    camera.ymag = 0.5f;
+    camera.xmag = 7.0f;                     // not used: the image's aspect decides the width
+    camera.forward = {-0.0f, -0.0f, -1.0f}; // as a node transform gives it
+    const gpu::Camera gpuCamera = makeGpuCamera(camera, 200, 100);
+    EXPECT_EQ(gpuCamera.projection, CAMERA_ORTHOGRAPHIC);
+    EXPECT_FLOAT_EQ(gpuCamera.orthoHalfHeight, 0.5f);
+    const glm::vec2 corners[] = {{0, 0}, {200, 0}, {0, 100}, {200, 100}, {100, 50}};
+    const glm::vec3 origins[] = {{0, 2.5f, 3}, {2, 2.5f, 3}, {0, 1.5f, 3}, {2, 1.5f, 3}, {1, 2, 3}};
+    for (std::size_t i = 0; i < 5; ++i) {
+        expectNear(gpu::cameraRayOrigin(gpuCamera, corners[i]), origins[i], 1e-6f);
+        EXPECT_EQ(gpu::cameraRayDirection(gpuCamera, corners[i]), glm::vec3(0, 0, -1));
+    }
+    // No −0 in the shared direction: the device's BVH walk reads direction signs bit by bit.
+    EXPECT_FALSE(std::signbit(gpuCamera.forward.x));
+    EXPECT_FALSE(std::signbit(gpuCamera.forward.y));
+}
+
 // --- Cameras placed by glTF nodes ----------------------------------------------------------
 
 TEST(GltfCameras, RotatedScaledNodeMapsMinusZAndKeepsUnitVectors) {
     // Node: translation (1, 2, 3), 90 degrees about +Y, scale 2: local -Z becomes world -X.
     const Scene scene = loadGltfScene(kLoaderDir + "cameras.gltf");
-    ASSERT_EQ(scene.cameras.size(), 2u);
+    ASSERT_EQ(scene.cameras.size(), 3u);
     const SceneCamera& camera = scene.cameras[0];
     EXPECT_EQ(camera.name, "rotated");
     expectNear(camera.position, {1, 2, 3});
@@ -191,8 +227,8 @@ TEST(GltfCameras, RotatedScaledNodeMapsMinusZAndKeepsUnitVectors) {
 TEST(GltfCameras, ChildCameraInheritsItsParentsRotation) {
     // Parent: translation (0, 0, 10), 90 degrees about +X: -Z becomes +Y, +Y becomes +Z.
     const Scene scene = loadGltfScene(kLoaderDir + "cameras.gltf");
-    ASSERT_EQ(scene.cameras.size(), 2u);
-    const SceneCamera& camera = scene.cameras[1];
+    ASSERT_EQ(scene.cameras.size(), 3u);
+    const SceneCamera& camera = scene.cameras[2];
     EXPECT_EQ(camera.name, "child");
     expectNear(camera.position, {0, 0, 10});
     expectNear(camera.forward, {0, 1, 0});
@@ -200,13 +236,18 @@ TEST(GltfCameras, ChildCameraInheritsItsParentsRotation) {
     EXPECT_FLOAT_EQ(camera.yfov, 1.0f);
 }
 
-TEST(GltfCameras, SkipsOrthographicCamerasWithOneNote) {
+TEST(GltfCameras, LoadsOrthographicCamerasSilently) {
     const std::string path = kLoaderDir + "cameras.gltf";
     testing::internal::CaptureStderr();
     const Scene scene = loadGltfScene(path);
-    EXPECT_EQ(testing::internal::GetCapturedStderr(),
-              path + ": ignoring 1 orthographic camera (only perspective cameras are supported)\n");
-    EXPECT_EQ(scene.cameras.size(), 2u);
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+    ASSERT_EQ(scene.cameras.size(), 3u);
+    const SceneCamera& camera = scene.cameras[1]; // node 2, in walk order between the others
+    EXPECT_EQ(camera.name, "ortho");
+    EXPECT_EQ(camera.projection, CameraProjection::Orthographic);
+    EXPECT_FLOAT_EQ(camera.xmag, 1.0f);
+    EXPECT_FLOAT_EQ(camera.ymag, 1.0f);
+    expectNear(camera.forward, {0, 0, -1});
 }
 
 } // namespace

@@ -56,6 +56,9 @@ void expectNormals(const Scene& scene, std::size_t t, const glm::vec3& expected)
 void expectSizesConsistent(const Scene& scene) {
     EXPECT_EQ(scene.positions.size(), 3 * scene.triangleCount());
     EXPECT_EQ(scene.normals.size(), 3 * scene.triangleCount());
+    const bool normalMapped = std::any_of(scene.materials.begin(), scene.materials.end(),
+                                          [](const SceneMaterial& m) { return m.hasNormalMap(); });
+    EXPECT_EQ(scene.tangents.size(), normalMapped ? 3 * scene.triangleCount() : 0);
     for (std::uint32_t material : scene.materialIndices)
         EXPECT_LT(material, scene.materials.size());
 }
@@ -364,8 +367,9 @@ struct SharedScene {
     glm::vec3 boundsMax;
     std::size_t cameras;
     std::size_t emissiveMaterials;
-    std::size_t images; // decoded: those the materials' base colour, MR, emissive and
+    std::size_t images; // decoded: those the materials' base colour, MR, emissive, normal and
                         // transmission slots use
+    std::size_t normalMapped = 0; // materials with a normal texture
 };
 
 // Figures from shared/scenes/README.md (bounds printed there with six significant digits).
@@ -394,7 +398,8 @@ const SharedScene kSharedScenes[] = {
      {0.942495f, 0.900995f, 0.812845f},
      0,
      1,
-     3},
+     4,
+     1},
     {"ToyCar",
      "ToyCar/ToyCar.gltf",
      108936,
@@ -402,7 +407,8 @@ const SharedScene kSharedScenes[] = {
      {0.0384478f, 0.0126166f, 0.0369811f},
      8,
      1,
-     4},
+     6,
+     2},
     {"TransmissionTest",
      "TransmissionTest/TransmissionTest.glb",
      128775,
@@ -447,6 +453,34 @@ TEST_P(GltfLoaderSharedScene, MatchesTheCountsAndBoundsOfTheReadme) {
     const float tolerance = 1e-5f * glm::length(expected.boundsMax - expected.boundsMin);
     expectNear(bounds.min, expected.boundsMin, tolerance);
     expectNear(bounds.max, expected.boundsMax, tolerance);
+}
+
+// Normal textures are honoured: read, with a tangent frame (unit, orthogonal to the shading
+// normal, w = ±1) at every corner of a normal-mapped triangle, and no note that one is ignored.
+TEST_P(GltfLoaderSharedScene, HonoursNormalTextures) {
+    const SharedScene& expected = GetParam();
+    testing::internal::CaptureStderr();
+    const Scene scene = loadGltfScene(kSharedScenesDir + expected.file);
+    const std::string notes = testing::internal::GetCapturedStderr();
+    // (Not "normal" alone: a checkout's path may contain the word.)
+    EXPECT_EQ(notes.find("normal map"), std::string::npos) << notes;
+    EXPECT_EQ(notes.find("normalTexture"), std::string::npos) << notes;
+    const auto mapped =
+        std::size_t(std::count_if(scene.materials.begin(), scene.materials.end(),
+                                  [](const SceneMaterial& m) { return m.hasNormalMap(); }));
+    EXPECT_EQ(mapped, expected.normalMapped);
+    if (mapped == 0) return;
+    ASSERT_EQ(scene.tangents.size(), scene.positions.size());
+    std::size_t checked = 0;
+    for (std::size_t c = 0; c < scene.tangents.size(); ++c) {
+        if (!scene.materials[scene.materialIndices[c / 3]].hasNormalMap()) continue;
+        const glm::vec4& t = scene.tangents[c];
+        ASSERT_NEAR(glm::length(glm::vec3(t)), 1.0f, 1e-4f) << "corner " << c;
+        ASSERT_NEAR(glm::dot(glm::vec3(t), scene.normals[c]), 0.0f, 1e-4f) << "corner " << c;
+        ASSERT_TRUE(t.w == 1.0f || t.w == -1.0f) << "corner " << c;
+        ++checked;
+    }
+    EXPECT_GT(checked, 0u);
 }
 
 INSTANTIATE_TEST_SUITE_P(SharedScenes, GltfLoaderSharedScene, testing::ValuesIn(kSharedScenes),
