@@ -18,6 +18,7 @@ packages=(
     # runs the array-job recipe (label slurm); python3-yaml parses the OpenJD template (farm).
     openimageio-tools slurm-wlm munge python3-yaml
     clang-format # ci/format_check.sh: the C++ sources against .clang-format
+    clang libclang-rt-dev # the fuzz preset: clang with libFuzzer, ASan and UBSan runtimes
 )
 
 missing=()

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # test.sh — the whole test suite from a fresh clone: dependencies, build, the format check
 # (ci/format_check.sh), then every CTest label (unit, cli, render, gpu, image, extremes, farm,
-# slurm, study) on lavapipe with validation on.
+# slurm, study) on lavapipe with validation on; then the fuzz build (clang, preset fuzz) and its
+# short fuzz run over the glTF loader (label fuzz, about a minute).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -9,3 +10,5 @@ bash ci/build.sh ci
 bash ci/format_check.sh
 source ci/lavapipe_env.sh
 ctest --preset ci "$@"
+bash ci/build.sh fuzz
+ctest --preset fuzz

@@ -15,7 +15,9 @@ struct LoadOptions {
 // Loads the default scene (`scene`, else scene 0): TRIANGLES primitives of every mesh node, with
 // their materials; the textures those materials use (decoded; TEXCOORD_0 read only then);
 // KHR_lights_punctual lights; KHR_implicit_shapes spheres (gltf_shapes.cpp); and the perspective
-// cameras. Throws InputError, one line naming the file and the place, for any bad input,
+// cameras. Compressed files are decoded on the way: Draco and meshopt geometry, quantized
+// attributes, WebP images (docs/scene-model.md, "Compressed files"). Throws InputError, one line
+// naming the file and the place, for any bad input,
 // including sparse accessors, other primitive modes, undecodable images and unsupported required
 // extensions. What it ignores (orthographic cameras, unsupported extensions in extensionsUsed,
 // KHR_materials_specular textures) it notes on stderr, one line each, and only once the load has
