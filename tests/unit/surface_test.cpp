@@ -5,12 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include "shared/light_connection.h"
 #include "shared/lights.h"
 #include "shared/materials.h"
 #include "shared/surface.h"
+#include "shared/volume.h"
 
 namespace vkpt::gpu {
 namespace {
@@ -210,6 +212,52 @@ TEST(SharedLights, LightSampleMatchesLightPdfAndConnectsBothEnds) {
     EXPECT_TRUE(light.valid);
     EXPECT_EQ(light.radiance, vec3(0.0f));
     EXPECT_FALSE(connectLightSample(receiver, u, scene.view()).valid);
+}
+
+// KHR_materials_transmission, _ior, _volume at a hit, only where the scene's features include
+// them: a volume's front face refracts with η = ior and enters its medium, its back face with
+// 1/ior and leaves it; a thin wall keeps η = ior and the medium it is in.
+TEST(SharedSurface, GlassSetsEtaByTheSideAndTheMediumAfterTransmission) {
+    TinyScene scene;
+    Material& m = scene.materials[0];
+    m.flags |= MATERIAL_METALLIC_ROUGHNESS;
+    m.transmission = 0.75f;
+    m.ior = 1.25f;
+    m.iorF0 = 0.0123f;
+    m.thickness = 1.0f;
+    m.attenuationCoefficient = vec3(0.5f, 1.0f, 2.0f);
+    const vec3 target(-0.5f, -0.5f, -1.0f), above(0.0f), below(0.0f, 0.0f, -2.0f);
+    EXPECT_EQ(hitFrom(scene, above, target).shading.transmission, 0.0f); // feature off
+    scene.features[FEATURE_METALLIC_ROUGHNESS] = true;
+    scene.features[FEATURE_TRANSMISSION] = true;
+    SurfacePoint front = hitFrom(scene, above, target);
+    EXPECT_EQ(front.shading.transmission, 0.75f);
+    EXPECT_EQ(front.shading.iorF0, 0.0123f);
+    EXPECT_EQ(front.shading.eta, 1.25f);
+    EXPECT_FALSE(front.shading.thinWalled);
+    const vec3 outside(0.0f), inside(0.5f, 1.0f, 2.0f);
+    EXPECT_EQ(mediumAfterTransmission(outside, front, scene.view()), inside);
+    SurfacePoint back = hitFrom(scene, below, target);
+    EXPECT_EQ(back.shading.eta, 1.0f / 1.25f);
+    EXPECT_EQ(mediumAfterTransmission(inside, back, scene.view()), outside);
+    scene.materials[0].thickness = 0.0f;
+    SurfacePoint thin = hitFrom(scene, below, target);
+    EXPECT_TRUE(thin.shading.thinWalled);
+    EXPECT_EQ(thin.shading.eta, 1.25f);
+    EXPECT_EQ(mediumAfterTransmission(inside, thin, scene.view()), inside);
+}
+
+// Beer–Lambert: e^(−σd) per channel, 1 for a clear medium even to infinity, 0 for an absorbing
+// one to infinity.
+TEST(SharedSurface, BeerLambertTransmittance) {
+    const vec3 t = beerLambertTransmittance(vec3(0.0f, 1.0f, 2.0f), 0.5f);
+    EXPECT_EQ(t.x, 1.0f);
+    EXPECT_NEAR(t.y, std::exp(-0.5f), 1e-7f);
+    EXPECT_NEAR(t.z, std::exp(-1.0f), 1e-7f);
+    EXPECT_EQ(beerLambertTransmittance(vec3(0.0f), VKPT_FAR), vec3(1.0f));
+    EXPECT_EQ(beerLambertTransmittance(vec3(1e-3f), VKPT_FAR), vec3(0.0f));
+    EXPECT_EQ(segmentLength(vec3(0.0f, 3.0f, 4.0f), 0.5f), 2.5f);
+    EXPECT_EQ(segmentLength(vec3(1.0f, 0.0f, 0.0f), VKPT_FAR), VKPT_FAR);
 }
 
 } // namespace
