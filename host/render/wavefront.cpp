@@ -142,11 +142,13 @@ std::unique_ptr<GpuTimer> makeTimer(const GpuContext& context, const WavefrontOp
 
 class WavefrontRenderer {
 public:
-    WavefrontRenderer(GpuContext& context, const PreparedScene& scene, const gpu::Camera& camera,
-                      const RenderSettings& settings, const WavefrontOptions& options)
+    // `uploaded` is `scene` on the device (uploadScene); the renderer reads only its features.
+    WavefrontRenderer(GpuContext& context, DeviceScene uploaded, const PreparedScene& scene,
+                      const gpu::Camera& camera, const RenderSettings& settings,
+                      const WavefrontOptions& options)
         : context_(context), settings_(settings), camera_(camera), options_(options),
           plan_(samplePlanFor(camera, settings, options)), budget_(plan_.range.size()),
-          pixelCount_(camera.width * camera.height), scene_(uploadScene(context, scene)),
+          pixelCount_(camera.width * camera.height), scene_(std::move(uploaded)),
           buffers_(context, slotCountFor(context, settings, plan_, options), settings.lightSamples,
                    pixelCount_),
           table_(makeBufferTable(scene_, buffers_)),
@@ -447,7 +449,16 @@ WavefrontResult WavefrontRenderer::run() {
 WavefrontResult renderWavefront(GpuContext& context, const PreparedScene& scene,
                                 const gpu::Camera& camera, const RenderSettings& settings,
                                 const WavefrontOptions& options) {
-    WavefrontRenderer renderer(context, scene, camera, settings, options);
+    WavefrontRenderer renderer(context, uploadScene(context, scene), scene, camera, settings,
+                               options);
+    return renderer.run();
+}
+
+WavefrontResult renderWavefrontReleasing(GpuContext& context, PreparedScene& scene,
+                                         const gpu::Camera& camera, const RenderSettings& settings,
+                                         const WavefrontOptions& options) {
+    WavefrontRenderer renderer(context, uploadSceneAndRelease(context, scene), scene, camera,
+                               settings, options);
     return renderer.run();
 }
 

@@ -82,4 +82,11 @@ WavefrontResult renderWavefront(GpuContext& context, const PreparedScene& scene,
                                 const gpu::Camera& camera, const RenderSettings& settings,
                                 const WavefrontOptions& options = {});
 
+// The same, freeing each of the scene's device arrays on the host once it is uploaded (its
+// features, tree, counts and everything else stay): for a caller that does not read them
+// again, so that a large scene is not held twice (vkpt).
+WavefrontResult renderWavefrontReleasing(GpuContext& context, PreparedScene& scene,
+                                         const gpu::Camera& camera, const RenderSettings& settings,
+                                         const WavefrontOptions& options = {});
+
 } // namespace vkpt
