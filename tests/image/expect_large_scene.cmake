@@ -15,7 +15,7 @@ endforeach()
 file(MAKE_DIRECTORY "${WORK}")
 set(scene "${WORK}/large_room.gltf")
 execute_process(COMMAND "${GENERATOR}" --textured --triangles ${TRIANGLES} "${scene}"
-                RESULT_VARIABLE result ERROR_VARIABLE stderr TIMEOUT 120)
+                RESULT_VARIABLE result ERROR_VARIABLE stderr TIMEOUT 600)
 if(NOT result STREQUAL "0")
     message(FATAL_ERROR "write_room_scene failed (${result}): ${stderr}")
 endif()
@@ -24,7 +24,7 @@ set(stats "${WORK}/large_room.json")
 set(command "${VKPT}" --spp 1 --res 24 24 --max-depth 2 --stats-json "${stats}"
     -o "${WORK}/large_room.pfm" "${scene}")
 execute_process(COMMAND ${command} RESULT_VARIABLE result OUTPUT_VARIABLE stdout
-                ERROR_VARIABLE stderr TIMEOUT 240)
+                ERROR_VARIABLE stderr TIMEOUT 1500)
 file(REMOVE "${scene}" "${WORK}/large_room.bin")
 set(report "\ncommand: ${command}\nexit: ${result}\nstderr: [${stderr}]\nstdout: [${stdout}]")
 if(NOT result STREQUAL "0")
