@@ -158,12 +158,10 @@ int render(const Invocation& invocation) {
     const std::optional<Image> reference = loadReferenceFor(invocation.convergence, settings);
     SceneSetup setup = setUpScene(settings, kProgram);
     part.attachScene(setup);
-    // Everything that reads the host's copy of the scene runs before the render, which frees the
-    // device arrays' copies as they are uploaded (and the tree here): a large scene is then held
+    // Everything that reads the host's copy of the scene runs before the render frees the device
+    // arrays' copies as they are uploaded (and the tree, just before): a large scene is then held
     // once, not twice, while it renders (docs/benchmarks.md, host memory).
-    part.computeFeatures();
     RenderReport sceneFigures = sceneReport(kProgram, settings, setup);
-    setup.prepared.tree = {};
     const auto start = std::chrono::steady_clock::now();
     installStopHandlers();
     std::fprintf(stderr, "%s: device %s\n", kProgram, describeDevice(context.deviceInfo()).c_str());
@@ -171,9 +169,13 @@ int render(const Invocation& invocation) {
                                invocation.convergence.targetError);
     RenderSettings renderSettings = settings;
     renderSettings.quiet = settings.quiet || printsPassLines(invocation);
+    WavefrontOptions options = wavefrontOptions(invocation, tracker, part);
+    options.beforeSceneUpload = [&part, &setup] {
+        part.computeFeatures();
+        setup.prepared.tree = {};
+    };
     WavefrontResult result =
-        renderWavefrontReleasing(context, setup.prepared, setup.camera, renderSettings,
-                                 wavefrontOptions(invocation, tracker, part));
+        renderWavefrontReleasing(context, setup.prepared, setup.camera, renderSettings, options);
     const std::chrono::duration<double> total = std::chrono::steady_clock::now() - start;
     part.writeResults(result.output, result.records, result.interrupted);
     RenderReport report =
