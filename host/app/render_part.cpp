@@ -82,12 +82,16 @@ void RenderPart::checkResumable(const RenderState& resumed) {
                          " (resume with the --task and --spp the part was started with)");
 }
 
-RenderState RenderPart::stateOf(const std::vector<PixelRecord>& records) {
+void RenderPart::computeFeatures() {
     VKPT_ASSERT(setup_ != nullptr, "attachScene comes first");
     if (features_.empty())
         features_ =
             renderFirstHitFeatures(setup_->prepared, StackIntersectors(setup_->prepared),
                                    setup_->camera, settings_.seed, plan_.crop, settings_.threads);
+}
+
+RenderState RenderPart::stateOf(const std::vector<PixelRecord>& records) {
+    computeFeatures();
     RenderState state;
     state.identity = identity_;
     state.origin.program = program_;

@@ -23,6 +23,9 @@ public:
     // the file: another scene, settings, seed, size, crop, or samples that are not the start
     // of this render's share).
     void attachScene(const SceneSetup& setup);
+    // Computes now the first-hit features every state write records (from the host's copy of
+    // the scene, on the CPU), so that the copy may be freed before the render (vkpt).
+    void computeFeatures();
 
     const SamplePlan& plan() const { return plan_; }
     const std::vector<PixelRecord>* resumeRecords() const {
@@ -50,7 +53,7 @@ private:
     const SceneSetup* setup_ = nullptr;
     StateIdentity identity_;
     std::optional<RenderState> resumed_;
-    std::vector<FeatureRecord> features_; // computed at the first write
+    std::vector<FeatureRecord> features_; // computed at the first write, or before
 };
 
 } // namespace vkpt

@@ -98,7 +98,11 @@ void writeDeviceRun(JsonWriter& json, const DeviceRunReport& d) {
     json.field("sceneBufferBytes", d.sceneBufferBytes);
     json.key("sceneBuffers").beginArray();
     for (const SceneBufferBytes& b : d.sceneBuffers)
-        json.beginObject().field("name", b.name).field("bytes", b.bytes).endObject();
+        json.beginObject()
+            .field("name", b.name)
+            .field("bytes", b.bytes)
+            .field("buffers", b.buffers)
+            .endObject();
     json.endArray();
     json.key("kernels").beginArray();
     for (const KernelTimeTotal& k : d.kernelTimes) {

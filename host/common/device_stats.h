@@ -17,11 +17,12 @@ struct KernelTimeTotal {
     double seconds() const { return double(nanoseconds) * 1e-9; }
 };
 
-// The device memory one of a scene's buffers holds, so that a specialised render and a
+// The device memory one of a scene's arrays holds, so that a specialised render and a
 // --general one can be compared.
 struct SceneBufferBytes {
-    std::string name;        // the buffer's debug name: "bvhNodes", ..., "absentData"
-    std::uint64_t bytes = 0; // its allocation, alignment included
+    std::string name;          // the buffer's debug name: "bvhNodes", ..., "absentData"
+    std::uint64_t bytes = 0;   // its allocation, alignment included (all its chunks together)
+    std::uint32_t buffers = 1; // more than one for an array split across bindings
 };
 
 } // namespace vkpt

@@ -5,6 +5,7 @@
 #include "gpu/context.h"
 #include "gpu/vk_check.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace vkpt {
@@ -16,6 +17,23 @@ namespace {
     throw VulkanError("buffer '" + name + "' is " + formatBytes(size) + ", above this device's " +
                           limitName + " of " + formatBytes(limit),
                       VK_ERROR_OUT_OF_DEVICE_MEMORY);
+}
+
+// What the heap of memory type `typeIndex` has left: its size less what this context holds (all
+// vkpt allocates; other processes' use is not visible without VK_EXT_memory_budget).
+VkDeviceSize heapAvailable(const GpuContext& context, std::uint32_t typeIndex) {
+    const VkPhysicalDeviceMemoryProperties& memory = context.memoryProperties();
+    const VkDeviceSize heap = memory.memoryHeaps[memory.memoryTypes[typeIndex].heapIndex].size;
+    const std::uint64_t inUse = context.memoryStats().bytesInUse;
+    return heap - std::min<VkDeviceSize>(heap, inUse);
+}
+
+[[noreturn]] void throwOutOfMemory(const GpuContext& context, const std::string& name,
+                                   VkDeviceSize size, std::uint32_t typeIndex, VkResult result) {
+    throw VulkanError("cannot allocate " + formatBytes(size) + " for buffer '" + name +
+                          "': this device has " + formatBytes(heapAvailable(context, typeIndex)) +
+                          " available (" + vkResultName(result) + ")",
+                      result);
 }
 
 } // namespace
@@ -78,12 +96,15 @@ void Buffer::allocateAndBind() {
     info.allocationSize = requirements.size;
     info.memoryTypeIndex =
         chooseMemoryType(context_->memoryProperties(), requirements.memoryTypeBits, desc_.location);
+    // A size above what the heap has left is refused here, with both sizes, rather than left
+    // to a driver that may overcommit (lavapipe) or fail without saying how much was free.
+    if (requirements.size > heapAvailable(*context_, info.memoryTypeIndex)) {
+        throwOutOfMemory(*context_, desc_.name, requirements.size, info.memoryTypeIndex,
+                         VK_ERROR_OUT_OF_DEVICE_MEMORY);
+    }
     const VkResult result = vkAllocateMemory(device, &info, nullptr, &memory_);
     if (result != VK_SUCCESS) {
-        throw VulkanError("cannot allocate " + formatBytes(requirements.size) + " of " +
-                              memoryLocationName(desc_.location) + " memory for buffer '" +
-                              desc_.name + "': " + vkResultName(result),
-                          result);
+        throwOutOfMemory(*context_, desc_.name, requirements.size, info.memoryTypeIndex, result);
     }
     allocationSize_ = requirements.size;
     context_->memoryAccounting().recordAllocation(allocationSize_);

@@ -22,9 +22,9 @@ VkDescriptorPool createPool(const GpuContext& context, const std::vector<KernelB
         auto same = std::find_if(sizes.begin(), sizes.end(),
                                  [type](const VkDescriptorPoolSize& s) { return s.type == type; });
         if (same == sizes.end()) {
-            sizes.push_back({type, 1});
+            sizes.push_back({type, binding.count});
         } else {
-            ++same->descriptorCount;
+            same->descriptorCount += binding.count;
         }
     }
     if (sizes.empty()) sizes.push_back({VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1});
@@ -49,6 +49,12 @@ VkBufferUsageFlags usageFor(DescriptorKind kind) {
         return VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
     }
     return 0;
+}
+
+// The descriptor written at element `element` of `binding`.
+const Buffer* elementBuffer(const BufferBinding& binding, std::uint32_t element) {
+    if (binding.elements.empty()) return binding.buffer;
+    return binding.elements[std::min<std::size_t>(element, binding.elements.size() - 1)];
 }
 
 } // namespace
@@ -85,11 +91,22 @@ DescriptorSet::DescriptorSet(DescriptorSet&& other) noexcept
       pool_(std::exchange(other.pool_, VK_NULL_HANDLE)),
       set_(std::exchange(other.set_, VK_NULL_HANDLE)) {}
 
-DescriptorKind DescriptorSet::kindOf(std::uint32_t binding) const {
+const KernelBinding& DescriptorSet::declared(std::uint32_t binding) const {
     for (const KernelBinding& declared : kernelBindings_)
-        if (declared.binding == binding) return declared.kind;
+        if (declared.binding == binding) return declared;
     VKPT_ASSERT(false, "kernel '" + kernelName_ + "' has no binding " + std::to_string(binding));
-    return DescriptorKind::StorageBuffer;
+    return kernelBindings_.front();
+}
+
+void DescriptorSet::checkBuffer(const KernelBinding& declared, const Buffer* buffer) const {
+    VKPT_ASSERT(buffer != nullptr, "kernel '" + kernelName_ + "': binding " +
+                                       std::to_string(declared.binding) + " has no buffer");
+    VKPT_ASSERT(declared.kind != DescriptorKind::UniformTexelBuffer ||
+                    buffer->texelView() != VK_NULL_HANDLE,
+                "buffer '" + buffer->name() + "' is smaller than one texel");
+    VKPT_ASSERT((buffer->usage() & usageFor(declared.kind)) != 0,
+                "buffer '" + buffer->name() + "' lacks the usage of binding " +
+                    std::to_string(declared.binding) + " of kernel '" + kernelName_ + "'");
 }
 
 void DescriptorSet::checkBindings(const std::vector<BufferBinding>& bindings) const {
@@ -103,40 +120,47 @@ void DescriptorSet::checkBindings(const std::vector<BufferBinding>& bindings) co
             });
         VKPT_ASSERT(named == 1, "kernel '" + kernelName_ + "': binding " +
                                     std::to_string(binding.binding) + " given more than once");
-        const DescriptorKind kind = kindOf(binding.binding);
-        const Buffer* buffer = binding.buffer;
-        VKPT_ASSERT(buffer != nullptr, "kernel '" + kernelName_ + "': binding " +
-                                           std::to_string(binding.binding) + " has no buffer");
-        VKPT_ASSERT(kind != DescriptorKind::UniformTexelBuffer ||
-                        buffer->texelView() != VK_NULL_HANDLE,
-                    "buffer '" + buffer->name() + "' is smaller than one texel");
-        VKPT_ASSERT((buffer->usage() & usageFor(kind)) != 0,
-                    "buffer '" + buffer->name() + "' lacks the usage of binding " +
-                        std::to_string(binding.binding) + " of kernel '" + kernelName_ + "'");
+        const KernelBinding& kernelBinding = declared(binding.binding);
+        VKPT_ASSERT(binding.elements.size() <= kernelBinding.count,
+                    "kernel '" + kernelName_ + "': binding " + std::to_string(binding.binding) +
+                        " has " + std::to_string(kernelBinding.count) + " descriptors, " +
+                        std::to_string(binding.elements.size()) + " buffers given");
+        for (std::uint32_t element = 0; element < kernelBinding.count; ++element)
+            checkBuffer(kernelBinding, elementBuffer(binding, element));
     }
 }
 
 void DescriptorSet::update(const std::vector<BufferBinding>& bindings) {
     checkBindings(bindings);
+    std::size_t descriptors = 0;
+    for (const BufferBinding& binding : bindings)
+        descriptors += declared(binding.binding).count;
+    // Writes point into these, so they must not reallocate.
     std::vector<VkDescriptorBufferInfo> infos;
-    infos.reserve(bindings.size()); // writes point into it
+    infos.reserve(descriptors);
     std::vector<VkBufferView> views;
-    views.reserve(bindings.size());
+    views.reserve(descriptors);
     std::vector<VkWriteDescriptorSet> writes;
     for (const BufferBinding& binding : bindings) {
-        const DescriptorKind kind = kindOf(binding.binding);
+        const KernelBinding& kernelBinding = declared(binding.binding);
         VkWriteDescriptorSet write{};
         write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
         write.dstSet = set_;
         write.dstBinding = binding.binding;
-        write.descriptorCount = 1;
-        write.descriptorType = descriptorTypeOf(kind);
-        if (kind == DescriptorKind::UniformTexelBuffer) {
-            views.push_back(binding.buffer->texelView());
-            write.pTexelBufferView = &views.back();
+        write.descriptorCount = kernelBinding.count;
+        write.descriptorType = descriptorTypeOf(kernelBinding.kind);
+        for (std::uint32_t element = 0; element < kernelBinding.count; ++element) {
+            const Buffer* buffer = elementBuffer(binding, element);
+            if (kernelBinding.kind == DescriptorKind::UniformTexelBuffer) {
+                views.push_back(buffer->texelView());
+            } else {
+                infos.push_back({buffer->handle(), 0, VK_WHOLE_SIZE});
+            }
+        }
+        if (kernelBinding.kind == DescriptorKind::UniformTexelBuffer) {
+            write.pTexelBufferView = &views[views.size() - kernelBinding.count];
         } else {
-            infos.push_back({binding.buffer->handle(), 0, VK_WHOLE_SIZE});
-            write.pBufferInfo = &infos.back();
+            write.pBufferInfo = &infos[infos.size() - kernelBinding.count];
         }
         writes.push_back(write);
     }

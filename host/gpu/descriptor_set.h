@@ -17,10 +17,13 @@ class Buffer;
 class GpuContext;
 
 // A buffer bound whole (offset 0, VK_WHOLE_SIZE), or through its texel view where the
-// kernel's binding is a uniform texel buffer.
+// kernel's binding is a uniform texel buffer. A binding of several descriptors (an array,
+// KernelBinding::count) takes element i from elements[i], the last of them past its end, or
+// from `buffer` when elements is empty.
 struct BufferBinding {
     std::uint32_t binding = 0;
     const Buffer* buffer = nullptr;
+    std::vector<const Buffer*> elements{};
 };
 
 class DescriptorSet {
@@ -42,7 +45,8 @@ public:
 
 private:
     void checkBindings(const std::vector<BufferBinding>& bindings) const;
-    DescriptorKind kindOf(std::uint32_t binding) const;
+    const KernelBinding& declared(std::uint32_t binding) const;
+    void checkBuffer(const KernelBinding& declared, const Buffer* buffer) const;
 
     const GpuContext* context_;
     std::string kernelName_;                    // for messages

@@ -5,7 +5,6 @@
 #include "gpu/context.h"
 #include "gpu/vk_check.h"
 
-#include <algorithm>
 #include <utility>
 
 namespace vkpt {
@@ -96,9 +95,9 @@ void Kernel::checkLimits() const {
 
 void Kernel::checkDescriptorCount(DescriptorKind kind, const char* what, const char* limitName,
                                   std::uint32_t limit) const {
-    const auto count = static_cast<std::uint32_t>(
-        std::count_if(desc_.bindings.begin(), desc_.bindings.end(),
-                      [kind](const KernelBinding& binding) { return binding.kind == kind; }));
+    std::uint32_t count = 0;
+    for (const KernelBinding& binding : desc_.bindings)
+        if (binding.kind == kind) count += binding.count;
     if (count <= limit) return;
     throw VulkanError("kernel '" + desc_.name + "' binds " + std::to_string(count) + " " + what +
                           "; this device's " + limitName + " is " + std::to_string(limit),
@@ -108,7 +107,7 @@ void Kernel::checkDescriptorCount(DescriptorKind kind, const char* what, const c
 void Kernel::createLayouts() {
     std::vector<VkDescriptorSetLayoutBinding> bindings;
     for (const KernelBinding& binding : desc_.bindings) {
-        bindings.push_back({binding.binding, descriptorTypeOf(binding.kind), 1,
+        bindings.push_back({binding.binding, descriptorTypeOf(binding.kind), binding.count,
                             VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
     }
     VkDescriptorSetLayoutCreateInfo setInfo{};

@@ -36,6 +36,9 @@ enum class DescriptorKind : std::uint32_t { StorageBuffer, UniformBuffer, Unifor
 struct KernelBinding {
     std::uint32_t binding = 0; // in set 0
     DescriptorKind kind = DescriptorKind::StorageBuffer;
+    // Descriptors at this binding: more than one for a GLSL array of them (a scene array split
+    // across several buffers, lib/scene_arrays.glsl), indexed only by constants.
+    std::uint32_t count = 1;
 };
 
 VkDescriptorType descriptorTypeOf(DescriptorKind kind);

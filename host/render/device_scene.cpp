@@ -1,12 +1,14 @@
 // device_scene.cpp — one named storage buffer per non-empty array of the prepared scene.
 #include "render/device_scene.h"
 
-#include <span>
+#include <algorithm>
 #include <string>
 #include <vector>
 
 #include "common/errors.h"
+#include "gpu/context.h"
 #include "gpu/upload.h"
+#include "gpu/vk_check.h"
 #include "lib/wavefront.h"
 
 namespace vkpt {
@@ -14,14 +16,6 @@ namespace vkpt {
 namespace {
 
 constexpr VkDeviceSize kAbsentDataBytes = 16;
-
-template <typename T>
-std::optional<Buffer> uploadArray(GpuContext& context, std::string name,
-                                  const std::vector<T>& values,
-                                  VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {
-    if (values.empty()) return std::nullopt;
-    return createBufferWithData(context, std::move(name), usage, std::span<const T>(values));
-}
 
 Buffer makeAbsentData(GpuContext& context) {
     Buffer buffer(context,
@@ -52,6 +46,7 @@ void checkTextures(const PreparedScene& scene) {
         checkTextureSlot(scene, material.metallicRoughnessTexture);
         checkTextureSlot(scene, material.emissiveTexture);
         checkTextureSlot(scene, material.normalTexture);
+        checkTextureSlot(scene, material.transmissionTexture);
         textured = textured || hasTexture(material);
     }
     VKPT_ASSERT(!textured || scene.uvs.size() == 3 * scene.triangles.size(),
@@ -90,42 +85,52 @@ void checkScene(const PreparedScene& scene) {
                 "the environment map's CDF does not match its size");
 }
 
-// Each scene binding and the DeviceScene member holding its buffer, in binding order.
-struct SceneBinding {
-    std::uint32_t binding;
-    std::optional<Buffer> DeviceScene::*buffer;
-};
+// The device memory the arrays take, before anything is allocated: a scene that cannot fit
+// fails in one line naming both sizes instead of at whichever buffer comes last.
+void checkDeviceMemory(const GpuContext& context, const PreparedScene& scene) {
+    std::uint64_t needed = 0;
+    for (const SceneArrayDesc& desc : sceneArrayList())
+        needed += desc.bytes(scene).size();
+    const VkDeviceSize heap = context.limits().deviceLocalHeapSize;
+    const std::uint64_t inUse = context.memoryStats().bytesInUse;
+    if (heap == 0 || needed <= heap - std::min<std::uint64_t>(heap, inUse)) return;
+    throw VulkanError("the scene needs " + formatBytes(needed) +
+                          " of device memory; this device has " +
+                          formatBytes(heap - std::min<std::uint64_t>(heap, inUse)) +
+                          " available (device-local heap " + formatBytes(heap) + ", " +
+                          formatBytes(inUse) + " in use)",
+                      VK_ERROR_OUT_OF_DEVICE_MEMORY);
+}
 
-constexpr SceneBinding kSceneBindings[] = {
-    {BINDING_BVH_NODES, &DeviceScene::bvhNodes},
-    {BINDING_TRIANGLES, &DeviceScene::triangles},
-    {BINDING_TRIANGLE_NORMALS, &DeviceScene::triangleNormals},
-    {BINDING_TRIANGLE_TANGENTS, &DeviceScene::triangleTangents},
-    {BINDING_MATERIALS, &DeviceScene::materials},
-    {BINDING_EMITTERS, &DeviceScene::emitters},
-    {BINDING_TRIANGLE_UVS, &DeviceScene::triangleUvs},
-    {BINDING_TEXTURES, &DeviceScene::textures},
-    {BINDING_TEXTURE_TEXELS, &DeviceScene::textureTexels},
-    {BINDING_EMITTER_CDF, &DeviceScene::emitterCdf},
-    {BINDING_ENVIRONMENT_TEXELS, &DeviceScene::environmentTexels},
-    {BINDING_ENVIRONMENT_CDF, &DeviceScene::environmentCdf},
-};
+DeviceScene startUpload(GpuContext& context, const PreparedScene& scene) {
+    checkScene(scene);
+    checkDeviceMemory(context, scene);
+    DeviceScene d{makeAbsentData(context),
+                  {},
+                  static_cast<std::uint32_t>(scene.emitters.size()),
+                  scene.environment};
+    d.arrays.reserve(sceneArrayList().size());
+    return d;
+}
 
 } // namespace
 
 void DeviceScene::bind(BufferTable& table) const {
-    for (const SceneBinding& b : kSceneBindings) {
-        const std::optional<Buffer>& buffer = this->*b.buffer;
-        table.set(b.binding, buffer ? *buffer : absentData);
+    for (const SceneArray& array : arrays) {
+        if (array.chunks.empty()) {
+            table.set(array.desc->binding, absentData);
+        } else {
+            table.setChunks(array.desc->binding, array.chunks, array.chunkLog2);
+        }
     }
 }
 
 std::vector<SceneBufferBytes> DeviceScene::bufferBytes() const {
-    std::vector<SceneBufferBytes> result{{absentData.name(), absentData.allocationSize()}};
-    for (const SceneBinding& b : kSceneBindings) {
-        const std::optional<Buffer>& buffer = this->*b.buffer;
-        if (buffer) result.push_back({buffer->name(), buffer->allocationSize()});
-    }
+    std::vector<SceneBufferBytes> result{{absentData.name(), absentData.allocationSize(), 1}};
+    for (const SceneArray& array : arrays)
+        if (!array.chunks.empty())
+            result.push_back({array.desc->name, array.allocationBytes(),
+                              static_cast<std::uint32_t>(array.chunks.size())});
     return result;
 }
 
@@ -137,25 +142,18 @@ std::uint64_t DeviceScene::totalBytes() const {
 }
 
 DeviceScene uploadScene(GpuContext& context, const PreparedScene& scene) {
-    checkScene(scene);
-    DeviceScene d{makeAbsentData(context)};
-    // Records of 16-byte multiples are fetched as texels (lib/records.glsl), the rest read as
-    // storage buffers (lib/kernel_bindings.h).
-    constexpr VkBufferUsageFlags texels = VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
-    d.bvhNodes = uploadArray(context, "bvhNodes", scene.nodes, texels);
-    d.triangles = uploadArray(context, "triangles", scene.triangles, texels);
-    d.triangleNormals = uploadArray(context, "triangleNormals", scene.normals, texels);
-    d.triangleTangents = uploadArray(context, "triangleTangents", scene.tangents, texels);
-    d.triangleUvs = uploadArray(context, "triangleUvs", scene.uvs);
-    d.materials = uploadArray(context, "materials", scene.materials, texels);
-    d.textures = uploadArray(context, "textures", scene.textures, texels);
-    d.textureTexels = uploadArray(context, "textureTexels", scene.texels);
-    d.emitters = uploadArray(context, "emitters", scene.emitters, texels);
-    d.emitterCdf = uploadArray(context, "emitterCdf", scene.emitterCdf);
-    d.environmentTexels = uploadArray(context, "environmentTexels", scene.environmentTexels);
-    d.environmentCdf = uploadArray(context, "environmentCdf", scene.environmentCdf);
-    d.emitterCount = static_cast<std::uint32_t>(scene.emitters.size());
-    d.environment = scene.environment;
+    DeviceScene d = startUpload(context, scene);
+    for (const SceneArrayDesc& desc : sceneArrayList())
+        d.arrays.push_back(uploadSceneArray(context, desc, desc.bytes(scene)));
+    return d;
+}
+
+DeviceScene uploadSceneAndRelease(GpuContext& context, PreparedScene& scene) {
+    DeviceScene d = startUpload(context, scene);
+    for (const SceneArrayDesc& desc : sceneArrayList()) {
+        d.arrays.push_back(uploadSceneArray(context, desc, desc.bytes(scene)));
+        desc.release(scene);
+    }
     return d;
 }
 

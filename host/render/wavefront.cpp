@@ -140,16 +140,26 @@ std::unique_ptr<GpuTimer> makeTimer(const GpuContext& context, const WavefrontOp
                                       "kernelTimer");
 }
 
+DeviceScene uploadAfterHook(const std::function<DeviceScene()>& upload,
+                            const WavefrontOptions& options) {
+    if (options.beforeSceneUpload) options.beforeSceneUpload();
+    return upload();
+}
+
 class WavefrontRenderer {
 public:
-    WavefrontRenderer(GpuContext& context, const PreparedScene& scene, const gpu::Camera& camera,
+    // `upload` puts `scene` on the device (uploadScene); it runs after the working buffers exist,
+    // so that a render too large for the device fails before the scene's upload and before
+    // options.beforeSceneUpload. The renderer reads only the scene's features.
+    WavefrontRenderer(GpuContext& context, const std::function<DeviceScene()>& upload,
+                      const PreparedScene& scene, const gpu::Camera& camera,
                       const RenderSettings& settings, const WavefrontOptions& options)
         : context_(context), settings_(settings), camera_(camera), options_(options),
           plan_(samplePlanFor(camera, settings, options)), budget_(plan_.range.size()),
-          pixelCount_(camera.width * camera.height), scene_(uploadScene(context, scene)),
+          pixelCount_(camera.width * camera.height),
           buffers_(context, slotCountFor(context, settings, plan_, options), settings.lightSamples,
                    pixelCount_),
-          table_(makeBufferTable(scene_, buffers_)),
+          scene_(uploadAfterHook(upload, options)), table_(makeBufferTable(scene_, buffers_)),
           pipelines_(context, table_, kernelFeaturesFor(scene, options)),
           timer_(makeTimer(context, options)),
           recorder_(pipelines_, buffers_, timer_.get(),
@@ -183,8 +193,8 @@ private:
     SamplePlan plan_;
     std::uint32_t budget_; // samples per pixel of the plan's range
     std::uint32_t pixelCount_;
-    DeviceScene scene_;
     WorkBuffers buffers_;
+    DeviceScene scene_;
     BufferTable table_;
     WavefrontPipelines pipelines_;
     std::unique_ptr<GpuTimer> timer_;
@@ -447,7 +457,17 @@ WavefrontResult WavefrontRenderer::run() {
 WavefrontResult renderWavefront(GpuContext& context, const PreparedScene& scene,
                                 const gpu::Camera& camera, const RenderSettings& settings,
                                 const WavefrontOptions& options) {
-    WavefrontRenderer renderer(context, scene, camera, settings, options);
+    WavefrontRenderer renderer(
+        context, [&] { return uploadScene(context, scene); }, scene, camera, settings, options);
+    return renderer.run();
+}
+
+WavefrontResult renderWavefrontReleasing(GpuContext& context, PreparedScene& scene,
+                                         const gpu::Camera& camera, const RenderSettings& settings,
+                                         const WavefrontOptions& options) {
+    WavefrontRenderer renderer(
+        context, [&] { return uploadSceneAndRelease(context, scene); }, scene, camera, settings,
+        options);
     return renderer.run();
 }
 

@@ -56,6 +56,11 @@ struct WavefrontOptions {
     // checkpointSeconds; passes are cut short so that one ends in time.
     double checkpointSeconds = 0.0;
     std::function<void(const std::vector<PixelRecord>&)> checkpoint;
+    // Called once the working buffers exist, before the scene is uploaded: the last moment to
+    // read the host's copy of the scene that renderWavefrontReleasing frees, and one at which
+    // the device has already accepted the render's size (vkpt computes its state's first-hit
+    // features here, which takes long at sizes the device would refuse).
+    std::function<void()> beforeSceneUpload;
 };
 
 struct WavefrontResult {
@@ -81,5 +86,12 @@ struct WavefrontResult {
 WavefrontResult renderWavefront(GpuContext& context, const PreparedScene& scene,
                                 const gpu::Camera& camera, const RenderSettings& settings,
                                 const WavefrontOptions& options = {});
+
+// The same, freeing each of the scene's device arrays on the host once it is uploaded (its
+// features, tree, counts and everything else stay): for a caller that does not read them
+// again, so that a large scene is not held twice (vkpt).
+WavefrontResult renderWavefrontReleasing(GpuContext& context, PreparedScene& scene,
+                                         const gpu::Camera& camera, const RenderSettings& settings,
+                                         const WavefrontOptions& options = {});
 
 } // namespace vkpt

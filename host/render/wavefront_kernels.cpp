@@ -7,6 +7,7 @@
 #include "common/errors.h"
 #include "lib/kernel_bindings.h"
 #include "lib/wavefront.h"
+#include "render/scene_arrays.h"
 #include "vkpt_kernels.h"
 
 namespace vkpt {
@@ -23,8 +24,17 @@ struct KernelInfo {
 
 // The entries of a lib/kernel_bindings.h list as KernelBindings, in the list's order.
 #define VKPT_UNIFORM_BINDING(binding) {binding, DescriptorKind::UniformBuffer},
-#define VKPT_TEXEL_BINDING(binding) {binding, DescriptorKind::UniformTexelBuffer},
-#define VKPT_STORAGE_BINDING(binding, access, Type, name) {binding, DescriptorKind::StorageBuffer},
+// A splittable scene array is a descriptor array (lib/scene_arrays.glsl): a SCENE storage entry,
+// or a texel entry of the scene array list.
+#define VKPT_TEXEL_BINDING(binding)                                                                \
+    {binding, DescriptorKind::UniformTexelBuffer,                                                  \
+     isSplittableSceneBinding(binding) ? SCENE_ARRAY_MAX_CHUNKS : 1u},
+#define VKPT_DESCRIPTORS_READ 1u
+#define VKPT_DESCRIPTORS_WRITE 1u
+#define VKPT_DESCRIPTORS_READ_WRITE 1u
+#define VKPT_DESCRIPTORS_SCENE SCENE_ARRAY_MAX_CHUNKS
+#define VKPT_STORAGE_BINDING(binding, access, Type, name)                                          \
+    {binding, DescriptorKind::StorageBuffer, VKPT_DESCRIPTORS_##access},
 #define VKPT_KERNEL_BINDINGS(LIST)                                                                 \
     std::vector<KernelBinding> {                                                                   \
         LIST(VKPT_UNIFORM_BINDING, VKPT_TEXEL_BINDING, VKPT_STORAGE_BINDING)                       \
@@ -66,12 +76,33 @@ std::vector<SpecializationConstant> featureConstants(const SceneFeatures& featur
     return constants;
 }
 
+void BufferTable::setChunks(std::uint32_t binding, const std::vector<Buffer>& chunks,
+                            std::uint32_t elementsLog2) {
+    std::vector<const Buffer*>& entry = buffers.at(binding);
+    entry.clear();
+    for (const Buffer& chunk : chunks)
+        entry.push_back(&chunk);
+    chunkLog2.at(binding) = elementsLog2;
+}
+
+std::vector<SpecializationConstant> chunkConstants(const BufferTable& table) {
+    std::vector<SpecializationConstant> constants;
+    for (std::uint32_t binding = 0; binding < kWavefrontBindingCount; ++binding) {
+        const auto chunks = static_cast<std::uint32_t>(table.buffers[binding].size());
+        if (chunks <= 1) continue;
+        constants.push_back({SPEC_SCENE_ARRAY_CHUNKS(binding), chunks});
+        constants.push_back({SPEC_SCENE_ARRAY_CHUNK_LOG2(binding), table.chunkLog2[binding]});
+    }
+    return constants;
+}
+
 bool isSpecialised(WavefrontKernel kernel) {
     return info(kernel).specialised;
 }
 
 Kernel makeWavefrontKernel(const GpuContext& context, WavefrontKernel kernel,
-                           const SceneFeatures& features) {
+                           const SceneFeatures& features,
+                           const std::vector<SpecializationConstant>& chunks) {
     const kernels::EmbeddedKernel& embedded = kernels::findKernel(kernelName(kernel));
     KernelDesc desc;
     desc.name = std::string(embedded.name);
@@ -79,6 +110,8 @@ Kernel makeWavefrontKernel(const GpuContext& context, WavefrontKernel kernel,
     desc.bindings = info(kernel).bindings;
     desc.pushConstantSize = sizeof(gpu::PassParams);
     if (isSpecialised(kernel)) desc.specializationConstants = featureConstants(features);
+    desc.specializationConstants.insert(desc.specializationConstants.end(), chunks.begin(),
+                                        chunks.end());
     return Kernel(context, std::move(desc));
 }
 
@@ -86,10 +119,10 @@ DescriptorSet bindWavefrontKernel(const Kernel& kernel, WavefrontKernel id,
                                   const BufferTable& table) {
     std::vector<BufferBinding> bindings;
     for (const KernelBinding& declared : kernelBindings(id)) {
-        const Buffer* buffer = table.buffers.at(declared.binding);
-        VKPT_ASSERT(buffer != nullptr, "kernel '" + std::string(kernelName(id)) +
-                                           "' needs binding " + std::to_string(declared.binding));
-        bindings.push_back({declared.binding, buffer});
+        const std::vector<const Buffer*>& buffers = table.buffers.at(declared.binding);
+        VKPT_ASSERT(!buffers.empty(), "kernel '" + std::string(kernelName(id)) +
+                                          "' needs binding " + std::to_string(declared.binding));
+        bindings.push_back({declared.binding, buffers.front(), buffers});
     }
     return DescriptorSet(kernel, bindings);
 }
@@ -98,9 +131,10 @@ WavefrontPipelines::WavefrontPipelines(const GpuContext& context, const BufferTa
                                        const SceneFeatures& features) {
     kernels_.reserve(kWavefrontKernelCount);
     sets_.reserve(kWavefrontKernelCount);
+    const std::vector<SpecializationConstant> chunks = chunkConstants(table);
     for (std::size_t i = 0; i < kWavefrontKernelCount; ++i) {
         const auto id = static_cast<WavefrontKernel>(i);
-        kernels_.push_back(makeWavefrontKernel(context, id, features));
+        kernels_.push_back(makeWavefrontKernel(context, id, features, chunks));
         sets_.push_back(bindWavefrontKernel(kernels_.back(), id, table));
     }
 }

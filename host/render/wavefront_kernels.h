@@ -38,24 +38,33 @@ std::span<const KernelBinding> kernelBindings(WavefrontKernel kernel);
 
 inline constexpr std::uint32_t kWavefrontBindingCount = 25; // BINDING_COUNT of lib/wavefront.h
 
-// Which buffer each binding number refers to; a kernel's descriptor set takes its bindings
-// from here.
+// Which buffer each binding number refers to, or which chunks for a scene array split across
+// several (lib/scene_arrays.glsl); a kernel's descriptor set takes its bindings from here.
 struct BufferTable {
-    std::array<const Buffer*, kWavefrontBindingCount> buffers{};
+    std::array<std::vector<const Buffer*>, kWavefrontBindingCount> buffers{};
+    std::array<std::uint32_t, kWavefrontBindingCount> chunkLog2{}; // elements per chunk, log2
 
-    void set(std::uint32_t binding, const Buffer& buffer) { buffers.at(binding) = &buffer; }
+    void set(std::uint32_t binding, const Buffer& buffer) { buffers.at(binding) = {&buffer}; }
+    void setChunks(std::uint32_t binding, const std::vector<Buffer>& chunks,
+                   std::uint32_t elementsLog2);
 };
 
 // The FEATURE_* specialisation constants (lib/features.glsl) for `features`.
 std::vector<SpecializationConstant> featureConstants(const SceneFeatures& features);
 
+// The SPEC_SCENE_ARRAY_* constants (lib/scene_arrays.glsl) of the bindings of `table` that have
+// more than one chunk; none when every array fits one binding.
+std::vector<SpecializationConstant> chunkConstants(const BufferTable& table);
+
 // Whether the kernel's code depends on the scene's features (it includes lib/features.glsl).
 bool isSpecialised(WavefrontKernel kernel);
 
 // The pipeline of one kernel, with the PassParams push constants, specialised for `features`
-// (what the scene uses, or generalFeatures for the --general pipelines).
+// (what the scene uses, or generalFeatures for the --general pipelines) and for how the scene's
+// arrays are split (chunkConstants; empty: none is).
 Kernel makeWavefrontKernel(const GpuContext& context, WavefrontKernel kernel,
-                           const SceneFeatures& features);
+                           const SceneFeatures& features,
+                           const std::vector<SpecializationConstant>& chunks = {});
 
 // A descriptor set for `kernel` with each of its bindings pointing into `table`.
 DescriptorSet bindWavefrontKernel(const Kernel& kernel, WavefrontKernel id,

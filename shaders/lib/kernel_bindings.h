@@ -7,7 +7,10 @@
 //   UNIFORM(binding)                       frameParams, the uniform block of lib/frame.glsl
 //   TEXELS(binding)                        a uniform texel view of lib/records.glsl it fetches
 //   BUFFER(binding, access, Type, name)    a storage buffer `Type name[]`, access READ, WRITE
-//                                          or READ_WRITE (readonly/writeonly in GLSL)
+//                                          or READ_WRITE (readonly/writeonly in GLSL), or
+//                                          SCENE: a read-only scene array that may be split
+//                                          across several buffers, read as name##At(i)
+//                                          (lib/scene_arrays.glsl)
 // lib/frame.glsl and lib/records.glsl declare the uniform block and the texel views for every
 // kernel (their functions refer to them), so in GLSL only BUFFER entries declare anything; the
 // storage buffers must come before the lib/ code that reads them, in the order listed here.
@@ -35,7 +38,7 @@
     TEXELS(BINDING_MATERIALS)                                                                      \
     TEXELS(BINDING_TEXTURES)                                                                       \
     TEXELS(BINDING_RAY_TEXELS)                                                                     \
-    BUFFER(BINDING_TRIANGLE_UVS, READ, vec2, triangleUvs)                                          \
+    BUFFER(BINDING_TRIANGLE_UVS, SCENE, vec2, triangleUvs)                                         \
     BUFFER(BINDING_TEXTURE_TEXELS, READ, uint, textureTexels)                                      \
     BUFFER(BINDING_HITS, WRITE, HitRecord, hits)                                                   \
     BUFFER(BINDING_QUEUE_COUNTERS, READ_WRITE, uint, queueCounters)
@@ -51,9 +54,9 @@
     TEXELS(BINDING_PATH_STATE_TEXELS)                                                              \
     TEXELS(BINDING_RAY_TEXELS)                                                                     \
     TEXELS(BINDING_HIT_TEXELS)                                                                     \
-    BUFFER(BINDING_TRIANGLE_UVS, READ, vec2, triangleUvs)                                          \
+    BUFFER(BINDING_TRIANGLE_UVS, SCENE, vec2, triangleUvs)                                         \
     BUFFER(BINDING_TEXTURE_TEXELS, READ, uint, textureTexels)                                      \
-    BUFFER(BINDING_EMITTER_CDF, READ, float, emitterCdf)                                           \
+    BUFFER(BINDING_EMITTER_CDF, SCENE, float, emitterCdf)                                          \
     BUFFER(BINDING_ENVIRONMENT_TEXELS, READ, vec4, environmentTexels)                              \
     BUFFER(BINDING_ENVIRONMENT_CDF, READ, float, environmentCdf)                                   \
     BUFFER(BINDING_PATH_STATES, WRITE, PathState, pathStates)                                      \
@@ -68,7 +71,7 @@
     TEXELS(BINDING_MATERIALS)                                                                      \
     TEXELS(BINDING_TEXTURES)                                                                       \
     TEXELS(BINDING_SHADOW_RAY_TEXELS)                                                              \
-    BUFFER(BINDING_TRIANGLE_UVS, READ, vec2, triangleUvs)                                          \
+    BUFFER(BINDING_TRIANGLE_UVS, SCENE, vec2, triangleUvs)                                         \
     BUFFER(BINDING_TEXTURE_TEXELS, READ, uint, textureTexels)                                      \
     BUFFER(BINDING_ENVIRONMENT_TEXELS, READ, vec4, environmentTexels)                              \
     BUFFER(BINDING_ENVIRONMENT_CDF, READ, float, environmentCdf)                                   \
@@ -92,12 +95,14 @@
 
 #ifndef __cplusplus
 #include "lib/buffers.glsl"
+#include "lib/scene_arrays.glsl"
 
 // The GLSL side of a list: one block per BUFFER entry, nothing for the others.
 #define VKPT_NO_DECLARATION(binding)
 #define VKPT_STORAGE_READ(binding, Type, name) VKPT_READONLY_BUFFER(binding, Type, name)
 #define VKPT_STORAGE_WRITE(binding, Type, name) VKPT_WRITEONLY_BUFFER(binding, Type, name)
 #define VKPT_STORAGE_READ_WRITE(binding, Type, name) VKPT_BUFFER(binding, Type, name)
+#define VKPT_STORAGE_SCENE(binding, Type, name) VKPT_SCENE_STORAGE(binding, Type, name)
 #define VKPT_DECLARE_STORAGE(binding, access, Type, name) VKPT_STORAGE_##access(binding, Type, name)
 #define VKPT_DECLARE_BUFFERS(LIST)                                                                 \
     LIST(VKPT_NO_DECLARATION, VKPT_NO_DECLARATION, VKPT_DECLARE_STORAGE)

@@ -9,7 +9,7 @@
 #include "lib/surface.glsl"
 
 float sceneEmitterCdf(uint i) {
-    return emitterCdf[i];
+    return emitterCdfAt(i);
 }
 
 #include "shared/light_connection.h"

@@ -9,7 +9,7 @@
 #include "lib/scene_view.glsl"
 
 vec2 sceneUv(uint k) {
-    return triangleUvs[k];
+    return triangleUvsAt(k);
 }
 
 #include "shared/materials.h"

@@ -13,19 +13,31 @@
 #define VKPT_RECORDS_GLSL
 
 #include "lib/buffers.glsl"
+#include "lib/scene_arrays.glsl"
 #include "lib/wavefront.h"
 
-VKPT_TEXEL_BUFFER(BINDING_BVH_NODES, bvhNodes)
-VKPT_TEXEL_BUFFER(BINDING_TRIANGLES, triangleTexels)
-VKPT_TEXEL_BUFFER(BINDING_TRIANGLE_NORMALS, triangleNormalTexels)
-VKPT_TEXEL_BUFFER(BINDING_TRIANGLE_TANGENTS, triangleTangentTexels)
-VKPT_TEXEL_BUFFER(BINDING_MATERIALS, materialTexels)
-VKPT_TEXEL_BUFFER(BINDING_TEXTURES, textureInfoTexels)
-VKPT_TEXEL_BUFFER(BINDING_EMITTERS, emitterTexels)
-VKPT_TEXEL_BUFFER(BINDING_RAY_TEXELS, rayTexels)
-VKPT_TEXEL_BUFFER(BINDING_HIT_TEXELS, hitTexels)
-VKPT_TEXEL_BUFFER(BINDING_SHADOW_RAY_TEXELS, shadowRayTexels)
-VKPT_TEXEL_BUFFER(BINDING_PATH_STATE_TEXELS, pathStateTexels)
+// A work array's texel view and its accessor, uvec4 name##At(uint texel), named like a scene
+// array's so that RECORD_TEXEL reads both alike.
+#define VKPT_WORK_TEXELS(bindingIndex, name)                                                       \
+    VKPT_TEXEL_BUFFER(bindingIndex, name)                                                          \
+    uvec4 name##At(uint texel) {                                                                   \
+        return texelFetch(name, int(texel));                                                       \
+    }
+
+// Scene arrays, which may be split across several buffers (lib/scene_arrays.glsl); each one
+// here is also an entry of host/render/scene_arrays.cpp's list.
+VKPT_SCENE_TEXELS(BINDING_BVH_NODES, bvhNodes)
+VKPT_SCENE_TEXELS(BINDING_TRIANGLES, triangleTexels)
+VKPT_SCENE_TEXELS(BINDING_TRIANGLE_NORMALS, triangleNormalTexels)
+VKPT_SCENE_TEXELS(BINDING_TRIANGLE_TANGENTS, triangleTangentTexels)
+VKPT_SCENE_TEXELS(BINDING_MATERIALS, materialTexels)
+VKPT_SCENE_TEXELS(BINDING_TEXTURES, textureInfoTexels)
+VKPT_SCENE_TEXELS(BINDING_EMITTERS, emitterTexels)
+// Work arrays, sized by the host to fit one binding (host/render/work_buffers.cpp).
+VKPT_WORK_TEXELS(BINDING_RAY_TEXELS, rayTexels)
+VKPT_WORK_TEXELS(BINDING_HIT_TEXELS, hitTexels)
+VKPT_WORK_TEXELS(BINDING_SHADOW_RAY_TEXELS, shadowRayTexels)
+VKPT_WORK_TEXELS(BINDING_PATH_STATE_TEXELS, pathStateTexels)
 
 vec3 texelVec3(uvec4 t) {
     return uintBitsToFloat(t.xyz);
@@ -36,7 +48,7 @@ vec4 texelVec4(uvec4 t) {
 }
 
 // Texel k of record i of a record `texels` texels long.
-#define RECORD_TEXEL(view, texels, i, k) texelFetch(view, int((texels) * (i) + (k)))
+#define RECORD_TEXEL(view, texels, i, k) view##At((texels) * (i) + (k))
 
 Triangle fetchTriangle(uint i) {
     uvec4 a = RECORD_TEXEL(triangleTexels, 3u, i, 0u);
@@ -88,7 +100,7 @@ Material fetchMaterial(uint i) {
 }
 
 TextureInfo fetchTextureInfo(uint i) {
-    uvec4 t = texelFetch(textureInfoTexels, int(i));
+    uvec4 t = textureInfoTexelsAt(i);
     return TextureInfo(t.x, t.y, t.z, t.w);
 }
 
@@ -108,7 +120,7 @@ RayRecord fetchRay(uint i) {
 }
 
 HitRecord fetchHit(uint i) {
-    uvec4 t = texelFetch(hitTexels, int(i));
+    uvec4 t = hitTexelsAt(i);
     return HitRecord(uintBitsToFloat(t.x), uintBitsToFloat(t.y), uintBitsToFloat(t.z), t.w);
 }
 

@@ -10,7 +10,7 @@
 #include "lib/materials.glsl"
 
 uvec4 bvhNodeTexel(uint texel) {
-    return texelFetch(bvhNodes, int(texel));
+    return bvhNodesAt(texel);
 }
 
 Triangle bvhPrimitive(uint index) {

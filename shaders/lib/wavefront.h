@@ -49,6 +49,15 @@ namespace vkpt::gpu {
 #define BINDING_TRIANGLE_TANGENTS 24 // TriangleTangents, uniform texel buffer (normal maps)
 #define BINDING_COUNT 25
 
+// A scene array larger than one binding may hold (maxStorageBufferRange, maxTexelBufferElements,
+// maxMemoryAllocationSize) is split into up to SCENE_ARRAY_MAX_CHUNKS buffers of 2^k elements
+// each, bound as the elements of a descriptor array (lib/scene_arrays.glsl, docs/gpu.md). Two
+// specialisation constants per scene binding say into how many chunks, and k; the defaults (one
+// chunk) leave the kernels reading element 0 only, as if there were no arrays.
+#define SCENE_ARRAY_MAX_CHUNKS 4
+#define SPEC_SCENE_ARRAY_CHUNKS(binding) (16 + 2 * (binding))
+#define SPEC_SCENE_ARRAY_CHUNK_LOG2(binding) (17 + 2 * (binding))
+
 // ---------------------------------------------------------------------------------------------
 // What every kernel needs to know about the render, uploaded once (buffer frameParams).
 #define INTEGRATOR_PATH 0u

@@ -2,7 +2,7 @@
 // (tests/support/room_scene.h) as a .gltf with a .bin beside it, so that vkpt, vkpt-ref and
 // embree-ref can be timed as whole processes on the same file.
 //
-//   write_room_scene [--triangles N] out.gltf      (default 1,000,000 triangles)
+//   write_room_scene [--triangles N] [--textured] out.gltf      (default 1,000,000 triangles)
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -18,10 +18,16 @@ const char* const kProgram = "write_room_scene";
 int writeScene(int argc, char** argv) {
     std::uint32_t triangles = 1000000;
     bool help = false;
+    bool textured = false;
     vkpt::CommandLine commandLine(kProgram);
     commandLine.add({"triangles", {'n'}, "N", "about N triangles (default 1000000)", [&](auto v) {
                          triangles = vkpt::parseUnsigned("triangles", v[0], 8);
                      }});
+    commandLine.add({"textured",
+                     {},
+                     "",
+                     "texture the sphere (TEXCOORD_0 per vertex and a base colour texture)",
+                     [&](auto) { textured = true; }});
     commandLine.add({"help", {'h'}, "", "show this help", [&](auto) { help = true; }});
     std::vector<std::string> positional =
         commandLine.parse(std::vector<std::string>(argv + 1, argv + argc));
@@ -30,7 +36,7 @@ int writeScene(int argc, char** argv) {
         return 0;
     }
     if (positional.size() != 1) throw vkpt::InputError("give one output file (see --help)");
-    vkpt::test::RoomScene room = vkpt::test::makeRoomScene(triangles);
+    vkpt::test::RoomScene room = vkpt::test::makeRoomScene(triangles, textured);
     vkpt::test::writeRoomSceneGltf(room, positional[0]);
     std::printf("%s: %zu triangles\n", positional[0].c_str(), room.triangleCount());
     return 0;

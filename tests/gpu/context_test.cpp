@@ -7,6 +7,7 @@
 #include "shared/host_device.h"
 #include "vkpt_test_kernels.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace vkpt::test {
@@ -100,6 +101,32 @@ TEST_F(Context, RefusesStorageBufferAboveMaxStorageBufferRange) {
             << message;
     }
     EXPECT_EQ(context().memoryStats().bytesInUse, 0u) << "nothing allocated for a refused buffer";
+}
+
+// Out of device memory is one line naming the size asked and the size the heap has left,
+// checked before the driver is asked (lavapipe would overcommit). A first buffer takes three
+// quarters of the heap; the second asks for 1 MiB more than the rest.
+TEST_F(Context, RefusesBufferAboveWhatTheHeapHasLeft) {
+    const VkDeviceSize heap = context().limits().deviceLocalHeapSize;
+    const VkDeviceSize largest = context().limits().maxMemoryAllocationSize;
+    const VkDeviceSize first = std::min(heap / 4 * 3, largest);
+    const Buffer taken(context(), {"taken", first, VK_BUFFER_USAGE_TRANSFER_DST_BIT});
+    const VkDeviceSize left = heap - context().memoryStats().bytesInUse;
+    const VkDeviceSize asked = left + (VkDeviceSize(1) << 20);
+    if (asked > largest) GTEST_SKIP() << "the rest of the heap exceeds maxMemoryAllocationSize";
+    try {
+        const Buffer tooLarge(context(), {"triangles", asked, VK_BUFFER_USAGE_TRANSFER_DST_BIT});
+        FAIL() << "a buffer above what the heap has left was created";
+    } catch (const VulkanError& error) {
+        const std::string message = error.what();
+        std::printf("%s\n", message.c_str());
+        EXPECT_NE(message.find("'triangles'"), std::string::npos) << message;
+        EXPECT_NE(message.find(std::to_string(asked) + " bytes"), std::string::npos) << message;
+        EXPECT_NE(message.find(std::to_string(left) + " bytes) available"), std::string::npos)
+            << message;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << "one line";
+    }
+    EXPECT_EQ(context().memoryStats().bytesInUse, taken.allocationSize());
 }
 
 TEST(Validation, CountsMessages) {

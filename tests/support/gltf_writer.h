@@ -17,10 +17,12 @@
 
 namespace vkpt::test {
 
-// A mesh of one primitive: positions, optional vertex normals, triangle indices.
+// A mesh of one primitive: positions, optional vertex normals and texture coordinates,
+// triangle indices.
 struct MeshData {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals; // empty: none in the file
+    std::vector<glm::vec2> uvs;     // TEXCOORD_0; empty: none in the file
     std::vector<std::uint32_t> indices;
     int material = 0;
 };
@@ -35,9 +37,24 @@ public:
         model_.defaultScene = 0;
     }
 
-    int addMaterial(glm::vec3 albedo, glm::vec3 emission = glm::vec3(0.0f)) {
+    // A texture whose image is `png` (a PNG file's bytes), stored in the buffer.
+    int addPngTexture(const std::vector<unsigned char>& png) {
+        tinygltf::Image image;
+        image.bufferView = addView(png.data(), png.size(), 0);
+        image.mimeType = "image/png";
+        model_.images.push_back(image);
+        tinygltf::Texture texture;
+        texture.source = int(model_.images.size() - 1);
+        model_.textures.push_back(texture);
+        return int(model_.textures.size() - 1);
+    }
+
+    // baseColorTexture: a texture of addPngTexture, read at TEXCOORD_0; -1 for none.
+    int addMaterial(glm::vec3 albedo, glm::vec3 emission = glm::vec3(0.0f),
+                    int baseColorTexture = -1) {
         tinygltf::Material m;
         m.pbrMetallicRoughness.baseColorFactor = {albedo.x, albedo.y, albedo.z, 1.0};
+        m.pbrMetallicRoughness.baseColorTexture.index = baseColorTexture;
         m.pbrMetallicRoughness.metallicFactor = 0.0;
         // The core emissiveFactor stays in [0, 1]; brighter emitters carry the rest in
         // KHR_materials_emissive_strength, as the specification asks.
@@ -66,6 +83,7 @@ public:
         primitive.material = data.material;
         primitive.attributes["POSITION"] = addVec3Accessor(data.positions);
         if (!data.normals.empty()) primitive.attributes["NORMAL"] = addVec3Accessor(data.normals);
+        if (!data.uvs.empty()) primitive.attributes["TEXCOORD_0"] = addVec2Accessor(data.uvs);
         primitive.indices = addIndexAccessor(data.indices);
         tinygltf::Mesh mesh;
         mesh.primitives.push_back(primitive);
@@ -123,7 +141,7 @@ private:
         view.buffer = 0;
         view.byteOffset = data.size();
         view.byteLength = size;
-        view.target = target;
+        view.target = target; // 0: none (an image's bytes)
         data.resize(data.size() + size);
         std::memcpy(data.data() + view.byteOffset, bytes, size);
         model_.bufferViews.push_back(view);
@@ -137,6 +155,17 @@ private:
         accessor.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
         accessor.count = values.size();
         accessor.type = TINYGLTF_TYPE_VEC3;
+        model_.accessors.push_back(accessor);
+        return int(model_.accessors.size() - 1);
+    }
+
+    int addVec2Accessor(const std::vector<glm::vec2>& values) {
+        tinygltf::Accessor accessor;
+        accessor.bufferView =
+            addView(values.data(), values.size() * sizeof(glm::vec2), TINYGLTF_TARGET_ARRAY_BUFFER);
+        accessor.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
+        accessor.count = values.size();
+        accessor.type = TINYGLTF_TYPE_VEC2;
         model_.accessors.push_back(accessor);
         return int(model_.accessors.size() - 1);
     }

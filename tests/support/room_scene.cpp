@@ -3,9 +3,11 @@
 
 #include <cmath>
 #include <numeric>
+#include <stdexcept>
 
 #include "bvh/synthetic_scenes.h"
 #include "gltf_writer.h"
+#include "image/image_file.h"
 #include "scene_builder.h"
 
 namespace vkpt::test {
@@ -64,7 +66,31 @@ std::size_t RoomScene::triangleCount() const {
         [](std::size_t n, const RoomMesh& m) { return n + m.positions.size() / 3; });
 }
 
-RoomScene makeRoomScene(std::uint32_t triangleCount) {
+namespace {
+
+// Texture coordinates for the sphere's vertices: its x and y, so that the checker (repeated)
+// shows a few squares across the sphere.
+std::vector<glm::vec2> planarUvs(const std::vector<glm::vec3>& positions) {
+    std::vector<glm::vec2> uvs;
+    uvs.reserve(positions.size());
+    for (const glm::vec3& p : positions)
+        uvs.emplace_back(2.0f * p.x, 2.0f * p.y);
+    return uvs;
+}
+
+// An 8 × 8 checker of light and dark grey, as PNG bytes.
+std::vector<unsigned char> checkerPng() {
+    constexpr std::uint32_t kSize = 8;
+    std::vector<std::uint8_t> rgb;
+    for (std::uint32_t y = 0; y < kSize; ++y)
+        for (std::uint32_t x = 0; x < kSize; ++x)
+            rgb.insert(rgb.end(), 3, ((x + y) % 2 == 0) ? std::uint8_t(230) : std::uint8_t(90));
+    return detail::encodePngRgb8(kSize, kSize, rgb);
+}
+
+} // namespace
+
+RoomScene makeRoomScene(std::uint32_t triangleCount, bool textured) {
     RoomScene room;
     room.materials = {{"white", glm::vec3(0.73f), glm::vec3(0.0f)},
                       {"red", {0.63f, 0.065f, 0.05f}, glm::vec3(0.0f)},
@@ -75,6 +101,8 @@ RoomScene makeRoomScene(std::uint32_t triangleCount) {
     addLight(room, 4);
     const std::uint32_t rings = sphereRings(triangleCount);
     room.meshes.push_back({"displaced sphere", synthetic::displacedSphere(rings, 2 * rings), 3});
+    room.textured = textured;
+    if (textured) room.meshes.back().uvs = planarUvs(room.meshes.back().positions);
     room.cameraPosition = {0.0f, 0.3f, 2.9f};
     room.cameraYfov = 0.9f;
     room.roomMin = kRoomMin;
@@ -83,6 +111,7 @@ RoomScene makeRoomScene(std::uint32_t triangleCount) {
 }
 
 Scene toScene(const RoomScene& room) {
+    if (room.textured) throw std::logic_error("toScene: a textured room is only written as glTF");
     Scene scene;
     scene.sourcePath = "generated room";
     for (const RoomMaterial& m : room.materials) {
@@ -106,11 +135,13 @@ Scene toScene(const RoomScene& room) {
 
 void writeRoomSceneGltf(const RoomScene& room, const std::string& path) {
     GltfWriter writer;
+    const int checker = room.textured ? writer.addPngTexture(checkerPng()) : -1;
     for (const RoomMaterial& m : room.materials)
-        writer.addMaterial(m.albedo, m.emission);
+        writer.addMaterial(m.albedo, m.emission, m.name == "sphere" ? checker : -1);
     for (const RoomMesh& mesh : room.meshes) {
         MeshData data;
         data.positions = mesh.positions;
+        data.uvs = mesh.uvs;
         data.indices.resize(mesh.positions.size());
         std::iota(data.indices.begin(), data.indices.end(), 0u);
         data.material = int(mesh.material);

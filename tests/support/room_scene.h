@@ -24,6 +24,7 @@ struct RoomMesh {
     std::string name;
     std::vector<glm::vec3> positions; // three per triangle, counter-clockwise from the front
     std::uint32_t material = 0;
+    std::vector<glm::vec2> uvs{}; // one per position in a textured room, else empty
 };
 
 struct RoomScene {
@@ -33,6 +34,10 @@ struct RoomScene {
     float cameraYfov = 0.9f;        // radians
     glm::vec3 roomMin{0.0f};        // the walls' inner faces
     glm::vec3 roomMax{0.0f};
+    // The sphere's material has a base colour texture (a small checker) read at texture
+    // coordinates given per vertex: the room with an array of texture coordinates as long as
+    // the geometry, for scenes whose arrays outgrow one binding (docs/gpu.md).
+    bool textured = false;
 
     std::size_t triangleCount() const;
 };
@@ -40,10 +45,10 @@ struct RoomScene {
 // About `triangleCount` triangles: the sphere takes 2·r·2r of them with r rings (the nearest
 // r to √(triangleCount/4), at least 2), the room 14 more. 1,000,000 gives r = 500, the
 // 500 × 1000 sphere of bvh_build_bench. The same count gives the same scene, bit for bit.
-RoomScene makeRoomScene(std::uint32_t triangleCount);
+RoomScene makeRoomScene(std::uint32_t triangleCount, bool textured = false);
 
 // The scene as loadGltfScene would read the written file: flat normals, zero-area triangles
-// left out.
+// left out. Untextured rooms only (std::logic_error otherwise).
 Scene toScene(const RoomScene& room);
 
 // A .gltf with its buffer in a .bin beside it (the same base name).

@@ -1,7 +1,8 @@
 // kernel_bindings_test.cpp — the kernels' binding lists (shaders/lib/kernel_bindings.h) as the
 // host builds pipeline layouts from them. What a list can get wrong without the kernel's
-// compiler noticing: a binding given twice, frameParams left out, or one binding seen as a
-// different kind of descriptor by two kernels, though one buffer (BufferTable) serves both.
+// compiler noticing: a binding given twice, frameParams left out, one binding seen as a
+// different kind of descriptor by two kernels, though one buffer (BufferTable) serves both, or
+// a splittable scene array declared as one descriptor.
 #include <gtest/gtest.h>
 
 #include <map>
@@ -9,6 +10,7 @@
 #include <string>
 
 #include "lib/wavefront.h"
+#include "render/scene_arrays.h"
 #include "render/wavefront_kernels.h"
 
 namespace vkpt {
@@ -48,6 +50,21 @@ TEST(KernelBindings, ABindingIsOneKindOfDescriptorInEveryKernel) {
             EXPECT_LT(binding.binding, std::uint32_t(BINDING_COUNT)) << nameOf(kernelAt(i));
             const auto [it, first] = kinds.emplace(binding.binding, binding.kind);
             EXPECT_TRUE(first || it->second == binding.kind)
+                << nameOf(kernelAt(i)) << ": binding " << binding.binding;
+        }
+    }
+}
+
+// A scene array the host may split (render/scene_arrays.cpp's list) must be a descriptor
+// array in every kernel that reads it (a SCENE entry, or a texel view of VKPT_SCENE_TEXELS),
+// and nothing else may be one: else a split array's chunks past the first would be unbound, or
+// a whole one bound where the kernel expects chunks.
+TEST(KernelBindings, SplittableSceneArraysAreDescriptorArraysEverywhere) {
+    for (std::size_t i = 0; i < kWavefrontKernelCount; ++i) {
+        for (const KernelBinding& binding : kernelBindings(kernelAt(i))) {
+            const std::uint32_t expected =
+                isSplittableSceneBinding(binding.binding) ? SCENE_ARRAY_MAX_CHUNKS : 1u;
+            EXPECT_EQ(binding.count, expected)
                 << nameOf(kernelAt(i)) << ": binding " << binding.binding;
         }
     }
