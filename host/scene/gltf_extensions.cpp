@@ -10,9 +10,9 @@ namespace {
 
 // Extensions that change what vkpt renders and that it implements. (KHR_implicit_shapes only
 // for spheres, gltf_shapes.cpp; KHR_materials_specular without its textures;
-// KHR_materials_volume without thicknessTexture, which a path tracer does not need.) The compression
-// extensions are decoded while loading: Draco (gltf_draco.cpp), meshopt (gltf_meshopt.cpp),
-// quantized attributes (gltf_accessors.cpp) and WebP images (gltf_webp.cpp).
+// KHR_materials_volume without thicknessTexture, which a path tracer does not need.) The
+// compression extensions are decoded while loading: Draco (gltf_draco.cpp), meshopt
+// (gltf_meshopt.cpp), quantized attributes (gltf_accessors.cpp) and WebP images (gltf_webp.cpp).
 const std::vector<std::string> kSupportedExtensions = {"KHR_materials_emissive_strength",
                                                        "KHR_materials_specular",
                                                        "KHR_texture_transform",
