@@ -44,6 +44,14 @@ std::vector<gpu::Material> makeGpuMaterials(const std::vector<SceneMaterial>& ma
         g.baseColorTexture = makeSlot(m.baseColorTexture);
         g.metallicRoughnessTexture = makeSlot(m.metallicRoughnessTexture);
         g.emissiveTexture = makeSlot(m.emissiveTexture);
+        g.sheenColor = m.sheenColor;
+        g.sheenRoughness = m.sheenRoughness;
+        g.clearcoat = m.clearcoat;
+        g.clearcoatRoughness = m.clearcoatRoughness;
+        g.clearcoatTexture = makeSlot(m.clearcoatTexture);
+        g.clearcoatRoughnessTexture = makeSlot(m.clearcoatRoughnessTexture);
+        g.sheenColorTexture = makeSlot(m.sheenColorTexture);
+        g.sheenRoughnessTexture = makeSlot(m.sheenRoughnessTexture);
         result.push_back(g);
     }
     return result;

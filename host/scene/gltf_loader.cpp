@@ -30,10 +30,15 @@ namespace {
 using gltf::GltfProblem;
 
 // Extensions that change what vkpt renders and that it implements. (KHR_implicit_shapes only
-// for spheres, gltf_shapes.cpp; KHR_materials_specular without its textures.)
-const std::vector<std::string> kSupportedExtensions = {
-    "KHR_materials_emissive_strength", "KHR_materials_specular", "KHR_texture_transform",
-    "KHR_lights_punctual", "KHR_implicit_shapes"};
+// for spheres, gltf_shapes.cpp; KHR_materials_specular without its textures;
+// KHR_materials_clearcoat without its clearcoatNormalTexture.)
+const std::vector<std::string> kSupportedExtensions = {"KHR_materials_emissive_strength",
+                                                       "KHR_materials_specular",
+                                                       "KHR_materials_clearcoat",
+                                                       "KHR_materials_sheen",
+                                                       "KHR_texture_transform",
+                                                       "KHR_lights_punctual",
+                                                       "KHR_implicit_shapes"};
 
 bool isSupported(const std::string& extension) {
     return std::find(kSupportedExtensions.begin(), kSupportedExtensions.end(), extension) !=

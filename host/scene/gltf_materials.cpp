@@ -1,7 +1,9 @@
 // gltf_materials.cpp — reads the core material factors, the base colour, metallic-roughness and
-// emissive textures, KHR_materials_emissive_strength and KHR_materials_specular.
+// emissive textures, KHR_materials_emissive_strength, KHR_materials_specular,
+// KHR_materials_clearcoat (not its clearcoatNormalTexture) and KHR_materials_sheen.
 #include "scene/gltf_materials.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "scene/gltf_document.h"
@@ -12,6 +14,8 @@ namespace {
 
 constexpr const char* kEmissiveStrength = "KHR_materials_emissive_strength";
 constexpr const char* kSpecular = "KHR_materials_specular";
+constexpr const char* kClearcoat = "KHR_materials_clearcoat";
+constexpr const char* kSheen = "KHR_materials_sheen";
 
 std::string materialName(std::size_t index) {
     return "material " + std::to_string(index);
@@ -83,6 +87,65 @@ void readSpecular(const tinygltf::Material& material, std::size_t index, SceneMa
     converted.specularColor = glm::vec3(glm::dvec3(color[0], color[1], color[2]));
 }
 
+double readUnitNumber(const tinygltf::Value& extension, const std::string& key,
+                      const std::string& where) {
+    const double value = readNumber(extension, key, 0.0, where);
+    if (value < 0.0 || value > 1.0) throw GltfProblem(where + ": " + key + " must be in [0, 1]");
+    return value;
+}
+
+// A textureInfo inside an extension, which tinygltf leaves as JSON, read like the core ones.
+TextureReference readExtensionTexture(const tinygltf::Value& extension, const std::string& key,
+                                      TextureTable& textures, const std::string& where) {
+    const tinygltf::Value* member = findMember(extension, key);
+    if (member == nullptr) return {};
+    const std::string place = where + ": " + key;
+    tinygltf::TextureInfo info;
+    info.index = readIndex(*member, "index", place);
+    if (info.index < 0) throw GltfProblem(place + ": index is missing");
+    info.texCoord = std::max(0, readIndex(*member, "texCoord", place));
+    if (const tinygltf::Value* extensions = findMember(*member, "extensions")) {
+        for (const std::string& name : extensions->Keys())
+            info.extensions[name] = extensions->Get(name);
+    }
+    return readTextureReference(info, textures, place);
+}
+
+// KHR_materials_clearcoat: the layer's strength (R of its texture) and roughness (G of its
+// texture). clearcoatNormalTexture is not read (materialNotes says so).
+void readClearcoat(const tinygltf::Material& material, std::size_t index, TextureTable& textures,
+                   SceneMaterial& converted) {
+    const tinygltf::Value* extension = findExtension(material.extensions, kClearcoat);
+    if (extension == nullptr) return;
+    const std::string where = materialName(index) + ": " + kClearcoat;
+    converted.clearcoat = float(readUnitNumber(*extension, "clearcoatFactor", where));
+    converted.clearcoatRoughness =
+        float(readUnitNumber(*extension, "clearcoatRoughnessFactor", where));
+    converted.clearcoatTexture =
+        readExtensionTexture(*extension, "clearcoatTexture", textures, where);
+    converted.clearcoatRoughnessTexture =
+        readExtensionTexture(*extension, "clearcoatRoughnessTexture", textures, where);
+}
+
+// KHR_materials_sheen: the sheen colour (RGB of its sRGB texture) and roughness (A of its
+// texture), each in [0, 1].
+void readSheen(const tinygltf::Material& material, std::size_t index, TextureTable& textures,
+               SceneMaterial& converted) {
+    const tinygltf::Value* extension = findExtension(material.extensions, kSheen);
+    if (extension == nullptr) return;
+    const std::string where = materialName(index) + ": " + kSheen;
+    const std::vector<double> color =
+        readNumbers(*extension, "sheenColorFactor", {0.0, 0.0, 0.0}, where);
+    for (double c : color)
+        if (c < 0.0 || c > 1.0) throw GltfProblem(where + ": sheenColorFactor must be in [0, 1]");
+    converted.sheenColor = glm::vec3(glm::dvec3(color[0], color[1], color[2]));
+    converted.sheenRoughness = float(readUnitNumber(*extension, "sheenRoughnessFactor", where));
+    converted.sheenColorTexture =
+        readExtensionTexture(*extension, "sheenColorTexture", textures, where);
+    converted.sheenRoughnessTexture =
+        readExtensionTexture(*extension, "sheenRoughnessTexture", textures, where);
+}
+
 void readTextures(const tinygltf::Material& material, std::size_t index, TextureTable& textures,
                   SceneMaterial& converted) {
     const std::string where = materialName(index) + ": ";
@@ -111,6 +174,8 @@ SceneMaterial convertMaterial(const tinygltf::Material& material, std::size_t in
     checkFinite(converted, index);
     readSpecular(material, index, converted);
     readTextures(material, index, textures, converted);
+    readClearcoat(material, index, textures, converted);
+    readSheen(material, index, textures, converted);
     return converted;
 }
 
@@ -118,6 +183,15 @@ bool hasSpecularTexture(const tinygltf::Material& material) {
     const tinygltf::Value* extension = findExtension(material.extensions, kSpecular);
     return extension != nullptr && (findMember(*extension, "specularTexture") != nullptr ||
                                     findMember(*extension, "specularColorTexture") != nullptr);
+}
+
+bool hasClearcoatNormalTexture(const tinygltf::Material& material) {
+    const tinygltf::Value* extension = findExtension(material.extensions, kClearcoat);
+    return extension != nullptr && findMember(*extension, "clearcoatNormalTexture") != nullptr;
+}
+
+std::string materialCount(std::size_t count) {
+    return std::to_string(count) + (count == 1 ? " material" : " materials");
 }
 
 } // namespace
@@ -132,12 +206,20 @@ std::vector<SceneMaterial> convertMaterials(const tinygltf::Model& model, Textur
 }
 
 std::vector<std::string> materialNotes(const tinygltf::Model& model) {
-    std::size_t count = 0;
-    for (const tinygltf::Material& material : model.materials)
-        count += hasSpecularTexture(material) ? 1 : 0;
-    if (count == 0) return {};
-    return {"ignoring the " + std::string(kSpecular) + " textures of " + std::to_string(count) +
-            (count == 1 ? " material" : " materials") + " (only its factors are supported)"};
+    std::size_t specularTextures = 0, clearcoatNormals = 0;
+    for (const tinygltf::Material& material : model.materials) {
+        specularTextures += hasSpecularTexture(material) ? 1 : 0;
+        clearcoatNormals += hasClearcoatNormalTexture(material) ? 1 : 0;
+    }
+    std::vector<std::string> notes;
+    if (specularTextures > 0)
+        notes.push_back("ignoring the " + std::string(kSpecular) + " textures of " +
+                        materialCount(specularTextures) + " (only its factors are supported)");
+    if (clearcoatNormals > 0)
+        notes.push_back("ignoring the " + std::string(kClearcoat) + " clearcoatNormalTexture of " +
+                        materialCount(clearcoatNormals) +
+                        " (not supported: the clearcoat uses the surface's shading normal)");
+    return notes;
 }
 
 SceneMaterial defaultMaterial() {

@@ -34,10 +34,24 @@ struct SceneMaterial {
     TextureReference baseColorTexture;         // sRGB-encoded RGBA
     TextureReference metallicRoughnessTexture; // linear: G roughness, B metallic
     TextureReference emissiveTexture;          // sRGB-encoded RGB
+    // KHR_materials_clearcoat (0: no clearcoat; the extension's defaults)
+    float clearcoat = 0.0f;                     // clearcoatFactor
+    float clearcoatRoughness = 0.0f;            // clearcoatRoughnessFactor
+    TextureReference clearcoatTexture;          // linear: R factor
+    TextureReference clearcoatRoughnessTexture; // linear: G roughness
+    // KHR_materials_sheen (black: no sheen; the extension's defaults)
+    glm::vec3 sheenColor{0.0f};             // sheenColorFactor
+    float sheenRoughness = 0.0f;            // sheenRoughnessFactor
+    TextureReference sheenColorTexture;     // sRGB-encoded RGB
+    TextureReference sheenRoughnessTexture; // linear: A roughness
 
-    // Lambertian only: the glTF model with no metal and no specular layer.
+    bool hasClearcoat() const { return clearcoat > 0.0f; }
+    bool hasSheen() const { return glm::any(glm::greaterThan(sheenColor, glm::vec3(0.0f))); }
+
+    // Lambertian only: the glTF model with no metal, no specular layer and no clearcoat or sheen.
     bool isDiffuseOnly() const {
-        return metallic == 0.0f && specular == 0.0f && metallicRoughnessTexture.texture < 0;
+        return metallic == 0.0f && specular == 0.0f && metallicRoughnessTexture.texture < 0 &&
+               !hasClearcoat() && !hasSheen();
     }
 };
 

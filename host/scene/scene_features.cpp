@@ -53,6 +53,17 @@ void addMaterial(const SceneMaterial& material, SceneFeatures& features) {
     features.baseColorTextures |= material.baseColorTexture.texture >= 0;
     features.metallicRoughnessTextures |= material.metallicRoughnessTexture.texture >= 0;
     features.emissiveTextures |= material.emissiveTexture.texture >= 0;
+    // A layer's textures count only with the layer: a zero factor zeroes what they would scale.
+    if (material.hasClearcoat()) {
+        features.clearcoatMaterials = true;
+        features.clearcoatTextures |= material.clearcoatTexture.texture >= 0 ||
+                                      material.clearcoatRoughnessTexture.texture >= 0;
+    }
+    if (material.hasSheen()) {
+        features.sheenMaterials = true;
+        features.sheenTextures |=
+            material.sheenColorTexture.texture >= 0 || material.sheenRoughnessTexture.texture >= 0;
+    }
     features.alphaMask |= material.alphaMode == AlphaMode::Mask;
     features.doubleSided |= material.doubleSided;
 }
@@ -109,6 +120,8 @@ std::array<bool, FEATURE_COUNT> SceneFeatures::kernelFeatures() const {
     on[FEATURE_ENVIRONMENT_MAP] = environmentMap;
     on[FEATURE_EMITTER_CDF] = emitterCdf();
     on[FEATURE_DOUBLE_SIDED] = doubleSided;
+    on[FEATURE_CLEARCOAT] = clearcoatMaterials;
+    on[FEATURE_SHEEN] = sheenMaterials;
     return on;
 }
 
@@ -135,6 +148,8 @@ SceneFeatures generalFeatures(const SceneFeatures& used) {
     SceneFeatures all;
     all.diffuseMaterials = all.metallicRoughnessMaterials = true;
     all.baseColorTextures = all.metallicRoughnessTextures = all.emissiveTextures = true;
+    all.clearcoatMaterials = all.sheenMaterials = true;
+    all.clearcoatTextures = all.sheenTextures = true;
     all.alphaMask = all.doubleSided = true;
     all.triangles = all.spheres = true;
     all.emissiveTriangles = all.emissiveSpheres = true;
@@ -149,10 +164,14 @@ std::string describeFeatures(const SceneFeatures& features) {
     std::vector<std::string> names;
     appendIf(features.diffuseMaterials, "diffuse", names);
     appendIf(features.metallicRoughnessMaterials, "metallic-roughness", names);
+    appendIf(features.clearcoatMaterials, "clearcoat", names);
+    appendIf(features.sheenMaterials, "sheen", names);
     std::vector<std::string> textures;
     appendIf(features.baseColorTextures, "base colour", textures);
     appendIf(features.metallicRoughnessTextures, "metallic-roughness", textures);
     appendIf(features.emissiveTextures, "emissive", textures);
+    appendIf(features.clearcoatTextures, "clearcoat", textures);
+    appendIf(features.sheenTextures, "sheen", textures);
     if (!textures.empty()) names.push_back("textures (" + joined(textures) + ")");
     appendIf(features.alphaMask, "alpha mask", names);
     appendIf(features.doubleSided, "double-sided", names);

@@ -1,5 +1,5 @@
-// scene_features.h — what a scene uses, found once after loading: material kinds, textures,
-// spheres, light kinds, the environment. Both renderers build for exactly this set (the
+// scene_features.h — what a scene uses, found once after loading: material kinds and layers,
+// textures, spheres, light kinds, the environment. Both renderers build for exactly this set (the
 // kernels through specialisation constants, the host through the buffers it creates), and
 // --general asks for all of it, for comparison (docs/scene-model.md).
 #pragma once
@@ -19,8 +19,12 @@ struct SceneFeatures {
     bool baseColorTextures = false;
     bool metallicRoughnessTextures = false;
     bool emissiveTextures = false;
-    bool alphaMask = false;   // some material has alphaMode MASK
-    bool doubleSided = false; // some material is double-sided
+    bool clearcoatMaterials = false; // KHR_materials_clearcoat layers present
+    bool sheenMaterials = false;     // KHR_materials_sheen layers present
+    bool clearcoatTextures = false;  // clearcoat or clearcoat roughness textures
+    bool sheenTextures = false;      // sheen colour or sheen roughness textures
+    bool alphaMask = false;          // some material has alphaMode MASK
+    bool doubleSided = false;        // some material is double-sided
     bool triangles = false;
     bool spheres = false;
     bool emissiveTriangles = false;
@@ -34,7 +38,8 @@ struct SceneFeatures {
     bool general = false; // --general: all switches on, and the CDF read even for one emitter
 
     bool textures() const {
-        return baseColorTextures || metallicRoughnessTextures || emissiveTextures;
+        return baseColorTextures || metallicRoughnessTextures || emissiveTextures ||
+               clearcoatTextures || sheenTextures;
     }
     // TEXCOORD_0 is needed only to read textures.
     bool textureCoordinates() const { return textures(); }

@@ -26,5 +26,9 @@ layout(constant_id = FEATURE_ENVIRONMENT_MAP) const bool featureEnvironmentMap =
 layout(constant_id = FEATURE_EMITTER_CDF) const bool featureEmitterCdf = true;
 // Some material is double-sided: emission may leave the back face.
 layout(constant_id = FEATURE_DOUBLE_SIDED) const bool featureDoubleSided = true;
+// Some material has a KHR_materials_clearcoat layer.
+layout(constant_id = FEATURE_CLEARCOAT) const bool featureClearcoat = true;
+// Some material has a KHR_materials_sheen layer.
+layout(constant_id = FEATURE_SHEEN) const bool featureSheen = true;
 
 #endif // VKPT_FEATURES_GLSL

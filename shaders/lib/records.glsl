@@ -55,21 +55,30 @@ TextureSlot textureSlotFrom(uvec4 a, uvec4 b) {
 }
 
 TextureSlot fetchTextureSlot(uint material, uint first) {
-    return textureSlotFrom(RECORD_TEXEL(materialTexels, 10u, material, first),
-                           RECORD_TEXEL(materialTexels, 10u, material, first + 1u));
+    return textureSlotFrom(RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, material, first),
+                           RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, material, first + 1u));
 }
 
-// Ten texels, of which the compiler keeps the fetches of the fields a kernel reads.
+// A material is 20 texels (shared/host_device.h): the base's ten, then the layers' ten.
+#define MATERIAL_TEXELS 20u
+
+// Twenty texels, of which the compiler keeps the fetches of the fields a kernel reads (the
+// layers' only where FEATURE_CLEARCOAT or FEATURE_SHEEN keeps the code that reads them).
 Material fetchMaterial(uint i) {
-    uvec4 colour = RECORD_TEXEL(materialTexels, 10u, i, 0u);
-    uvec4 emission = RECORD_TEXEL(materialTexels, 10u, i, 1u);
-    uvec4 factors = RECORD_TEXEL(materialTexels, 10u, i, 2u);
-    uvec4 specular = RECORD_TEXEL(materialTexels, 10u, i, 3u);
+    uvec4 colour = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 0u);
+    uvec4 emission = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 1u);
+    uvec4 factors = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 2u);
+    uvec4 specular = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 3u);
+    uvec4 sheen = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 10u);
+    uvec4 clearcoat = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 11u);
     return Material(texelVec4(colour), texelVec3(emission), emission.w,
                     uintBitsToFloat(factors.x), uintBitsToFloat(factors.y),
                     uintBitsToFloat(factors.z), factors.w, texelVec3(specular),
                     uintBitsToFloat(specular.w), fetchTextureSlot(i, 4u), fetchTextureSlot(i, 6u),
-                    fetchTextureSlot(i, 8u));
+                    fetchTextureSlot(i, 8u), texelVec3(sheen), uintBitsToFloat(sheen.w),
+                    uintBitsToFloat(clearcoat.x), uintBitsToFloat(clearcoat.y), clearcoat.z,
+                    clearcoat.w, fetchTextureSlot(i, 12u), fetchTextureSlot(i, 14u),
+                    fetchTextureSlot(i, 16u), fetchTextureSlot(i, 18u));
 }
 
 TextureInfo fetchTextureInfo(uint i) {

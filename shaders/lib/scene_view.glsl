@@ -71,6 +71,14 @@ bool sceneHasDoubleSided() {
     return featureDoubleSided;
 }
 
+bool sceneHasClearcoat() {
+    return featureClearcoat;
+}
+
+bool sceneHasSheen() {
+    return featureSheen;
+}
+
 // trace_closest's record of a hit as the shared code takes it.
 TriangleHit triangleHitOf(HitRecord hit) {
     return TriangleHit(hit.t, hit.u, hit.v, true);

@@ -1,41 +1,57 @@
 // bsdf.h — the glTF 2.0 metallic-roughness BRDF (glTF 2.0 specification, Appendix B, with
-// KHR_materials_specular): evaluation, pdf and importance sampling in the local shading frame,
-// where z is the shading normal and both directions point away from the surface.
+// KHR_materials_specular, KHR_materials_sheen and KHR_materials_clearcoat), layered so that it
+// never reflects more than it receives: evaluation, pdf and importance sampling in the local
+// shading frame, where z is the shading normal and both directions point away from the surface.
 //
-//   f          = mix(dielectric, metal, metallic)
-//   metal      = specular · (baseColor + (1 − baseColor)(1 − V·H)^5)
-//   dielectric = baseColor/π · (1 − s·max(F)) + specular · s·F,
-//                F = F0 + (1 − F0)(1 − V·H)^5,  F0 = min(0.04·specularColor, 1)
-//   specular   = D_GGX(H) · G2(V, L) / (4 (N·V)(N·L)), G2 height-correlated Smith.
+//   base       = mix(dielectric, metal, metallic)
+//   metal      = ggx · (baseColor + (1 − baseColor)(1 − V·H)^5)
+//   dielectric = s · F · ggx + baseColor/π · (1 − Es(μo))(1 − Es(μi)) / (1 − Es_avg)
+//   sheened    = sheenColor · charlie + (1 − max(sheenColor) · Esh(μo)) · base
+//                (charlie normalised where its albedo exceeds 1, see evaluateSheen)
+//   f          = clearcoat · Fc · ggx_c + (1 − clearcoat · Ec(μo)) · sheened
 //
-// V·H = L·H, so f is reciprocal, the diffuse term's (1 − s·max F) factor included. The
-// coupling of the two dielectric lobes is glTF's approximation: the diffuse term loses
-// 1 − s·max F of its own half vector, not what the specular lobe reflects at wo, so a white
-// dielectric reflects more than it receives at grazing views (tests/unit/bsdf_test.cpp
-// measures it; KhronosGroup/glTF#1853 discusses the coupling).
+// ggx is D G2 / (4 μo μi) (ggx.h), F Schlick's with F0 = min(0.04 specularColor, 1), Fc the
+// clearcoat's with F0 = 0.04 (IOR 1.5), charlie the sheen lobe (sheen.h), and each E the
+// directional albedo of the layer above, from the tables of albedo_tables.h: the albedo
+// scaling of Kulla and Conty 2017 ("Revisiting Physically Based Shading at Imageworks") that
+// OpenPBR and Dassault's Enterprise PBR use for layers. It replaces the glTF sample code's
+// coupling by 1 − F(V·H), which lets a white dielectric reflect up to 1.68 times what it
+// receives at grazing views (docs/scene-model.md has the furnace figures).
+//
+// Two forms, chosen for what each is exact for:
+//  - The diffuse base under its specular layer takes the reciprocal form
+//    (1 − E(μo))(1 − E(μi)) / (1 − E_avg), E_avg = 2∫E(μ)μ dμ: for a Lambertian base its
+//    albedo is exactly (1 − E(μo)) ρ, so a white dielectric reflects exactly 1, and f stays
+//    reciprocal like the rest of the base.
+//  - Sheen and clearcoat lie over a base that is glossy (metal, or the dielectric's own
+//    highlight). The reciprocal form then gains: over a white mirror, clearcoat's
+//    (1 − E(1))² / (1 − E_avg) is 1.015 at normal incidence. They take the one-sided form
+//    (1 − E(μo)), whose albedo E_layer(μo) + (1 − E_layer(μo)) A_below is at most 1 for any
+//    base with A_below ≤ 1. The price is reciprocity, which a path tracer that only traces
+//    from the camera does not use: both renderers evaluate f(wo = towards the camera, wi).
+//
 // A material without MATERIAL_METALLIC_ROUGHNESS is Lambertian and keeps the exact arithmetic
 // of the Lambertian path (docs/scene-model.md), so scenes made only of it render as before.
 #ifndef VKPT_BSDF_H
 #define VKPT_BSDF_H
 
+#include "albedo_lookup.h"
+#include "ggx.h"
 #include "host_device.h"
 #include "sampling.h"
+#include "sheen.h"
 
 #ifdef __cplusplus
 namespace vkpt::gpu {
 #endif
 
-// The smallest GGX α. glTF's roughness 0 is a perfect mirror, which a renderer without delta
-// lobes cannot represent; α = 1e-3 is the bound below which pbrt-v4 treats the distribution as
-// smooth. At it, D peaks at 1/(π α²) ≈ 3.2e5, far inside float range, and the lobe (about
-// 2α = 2e-3 rad wide in the reflected direction) is still four orders of magnitude wider than
-// the angular resolution of a float unit vector, so sampling and evaluation agree.
-#define VKPT_MIN_GGX_ALPHA 1e-3f
-
-// Bounds of the probability of sampling the specular lobe when both lobes contribute: a white
-// dielectric at normal incidence estimates 0.04, and a highlight sampled 25 times less often
-// than the diffuse lobe is noisy; the floor costs at most 10 % of the diffuse samples.
+// The smallest probability of a lobe that can contribute: a white dielectric at normal
+// incidence estimates 0.04 for its highlight, and a highlight sampled 25 times less often than
+// the diffuse lobe is noisy; the floor costs each other lobe at most 10 % of its samples.
 #define VKPT_MIN_LOBE_PROBABILITY 0.1f
+
+// KHR_materials_clearcoat's layer is a dielectric of IOR 1.5: F0 = ((1.5 − 1)/(1.5 + 1))².
+#define VKPT_CLEARCOAT_F0 0.04f
 
 struct ShadingMaterial {
     vec3 baseColor;
@@ -44,9 +60,14 @@ struct ShadingMaterial {
     float specular;         // KHR_materials_specular factor s
     float alpha;            // GGX α = roughness², at least VKPT_MIN_GGX_ALPHA
     bool metallicRoughness; // false: the Lambertian material
+    float clearcoat;        // KHR_materials_clearcoat factor × texture; 0: no clearcoat
+    float clearcoatAlpha;   // GGX α of the clearcoat
+    vec3 sheenColor;        // KHR_materials_sheen colour × texture; 0: no sheen
+    float sheenAlpha;       // Charlie α = sheenRoughness², at least VKPT_MIN_SHEEN_ALPHA
 };
 
-// roughness is perceptual; it is clamped to [0, 1] (the glTF range) before squaring.
+// roughness is perceptual; it is clamped to [0, 1] (the glTF range) before squaring. No
+// clearcoat, no sheen: withClearcoat and withSheen add them.
 VKPT_FN ShadingMaterial makeShadingMaterial(vec3 baseColor, float metallic, float roughness,
                                             float specular, vec3 specularColor,
                                             bool metallicRoughness) {
@@ -55,80 +76,140 @@ VKPT_FN ShadingMaterial makeShadingMaterial(vec3 baseColor, float metallic, floa
     m.metallic = metallic;
     m.specularColor = specularColor;
     m.specular = specular;
-    float r = clamp(roughness, 0.0f, 1.0f);
-    m.alpha = max(r * r, VKPT_MIN_GGX_ALPHA);
+    m.alpha = ggxAlphaOf(roughness);
     m.metallicRoughness = metallicRoughness;
+    m.clearcoat = 0.0f;
+    m.clearcoatAlpha = VKPT_MIN_GGX_ALPHA;
+    m.sheenColor = vec3(0.0f);
+    m.sheenAlpha = 1.0f;
     return m;
 }
 
-VKPT_FN float maxComponent(vec3 v) {
-    return max(max(v.x, v.y), v.z);
+// factor in [0, 1] (KHR_materials_clearcoat), roughness perceptual.
+VKPT_FN ShadingMaterial withClearcoat(ShadingMaterial m, float factor, float roughness) {
+    m.clearcoat = clamp(factor, 0.0f, 1.0f);
+    m.clearcoatAlpha = ggxAlphaOf(roughness);
+    return m;
 }
 
-// Schlick's (1 − cos θ)^5, the Fresnel weight of F90 = 1.
-VKPT_FN float schlickWeight(float cosTheta) {
-    float m = clamp(1.0f - cosTheta, 0.0f, 1.0f);
-    float m2 = m * m;
-    return m2 * m2 * m;
+// color in [0, 1] per channel (KHR_materials_sheen), roughness perceptual.
+VKPT_FN ShadingMaterial withSheen(ShadingMaterial m, vec3 color, float roughness) {
+    m.sheenColor = clamp(color, vec3(0.0f), vec3(1.0f));
+    m.sheenAlpha = sheenAlphaOf(roughness);
+    return m;
 }
 
-VKPT_FN vec3 schlickFresnel(vec3 f0, float cosTheta) {
-    return f0 + (vec3(1.0f) - f0) * schlickWeight(cosTheta);
+VKPT_FN bool hasClearcoat(ShadingMaterial m) {
+    return m.clearcoat > 0.0f;
 }
+
+VKPT_FN bool hasSheen(ShadingMaterial m) {
+    return maxComponent(m.sheenColor) > 0.0f;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The opaque dielectric: KHR_materials_specular's GGX layer over a Lambertian base.
 
 // The dielectric's normal-incidence reflectance: IOR 1.5 (0.04) tinted by KHR_materials_specular.
 VKPT_FN vec3 dielectricF0(ShadingMaterial m) {
     return min(0.04f * m.specularColor, vec3(1.0f));
 }
 
-// GGX (Trowbridge–Reitz) normal distribution for a unit half vector h in the local frame,
-// written as 1 / (π α² ((x² + y²)/α² + z²)²) rather than with 1 − cos²θ: the sine part is then
-// exact near the peak, where a narrow lobe (α near its floor) lives.
-VKPT_FN float ggxDistribution(vec3 h, float alpha) {
-    float a2 = alpha * alpha;
-    float t = (h.x * h.x + h.y * h.y) / a2 + h.z * h.z;
-    return 1.0f / (VKPT_PI * a2 * t * t);
+// What the specular layer reflects at cos θ, per channel: s (F0 E + (1 − F0) E_w), exact for
+// Schlick's Fresnel, which is linear in F0 (albedo_tables.h).
+VKPT_FN vec3 dielectricSpecularAlbedo(ShadingMaterial m, float cosTheta) {
+    vec3 f0 = dielectricF0(m);
+    return m.specular * (f0 * ggxAlbedo(cosTheta, m.alpha) +
+                         (vec3(1.0f) - f0) * ggxFresnelAlbedo(cosTheta, m.alpha));
 }
 
-// √(z² + α²(x² + y²)) for a unit direction w: GGX's Smith Λ(w) = (√(1 + α² tan²θ) − 1)/2
-// (Heitz 2014, "Understanding the Masking-Shadowing Function in Microfacet-Based BRDFs",
-// JCGT 3(2), eq. 72) is (this/z − 1)/2, which needs no division by a grazing z.
-VKPT_FN float smithRoot(vec3 w, float alpha) {
-    return sqrt(w.z * w.z + alpha * alpha * (w.x * w.x + w.y * w.y));
+VKPT_FN vec3 dielectricSpecularAverageAlbedo(ShadingMaterial m) {
+    vec3 f0 = dielectricF0(m);
+    return m.specular *
+           (f0 * ggxAverageAlbedo(m.alpha) + (vec3(1.0f) - f0) * ggxFresnelAverageAlbedo(m.alpha));
 }
 
-// Height-correlated G2 = 1/(1 + Λ(wo) + Λ(wi)) (Heitz 2014, eq. 99) divided by the BRDF's
-// 4 cos θo cos θi: with the form of smithRoot the cosines cancel, leaving
-// 1 / (2 (cos θi · root(wo) + cos θo · root(wi))), finite at grazing angles.
-VKPT_FN float ggxVisibility(vec3 wo, vec3 wi, float alpha) {
-    float denominator = wi.z * smithRoot(wo, alpha) + wo.z * smithRoot(wi, alpha);
-    return denominator > 0.0f ? 0.5f / denominator : 0.0f;
+// The share of light the specular layer leaves to the diffuse base, reciprocally:
+// (1 − E(μo))(1 − E(μi)) / (1 − E_avg). Where the layer reflects (almost) everything on
+// average, the base receives nothing.
+VKPT_FN vec3 diffuseTransmittance(ShadingMaterial m, float cosThetaO, float cosThetaI) {
+    vec3 outgoing = max(vec3(1.0f) - dielectricSpecularAlbedo(m, cosThetaO), vec3(0.0f));
+    vec3 incoming = max(vec3(1.0f) - dielectricSpecularAlbedo(m, cosThetaI), vec3(0.0f));
+    vec3 average = vec3(1.0f) - dielectricSpecularAverageAlbedo(m);
+    vec3 result;
+    result.x = average.x > 1e-6f ? outgoing.x * incoming.x / average.x : 0.0f;
+    result.y = average.y > 1e-6f ? outgoing.y * incoming.y / average.y : 0.0f;
+    result.z = average.z > 1e-6f ? outgoing.z * incoming.z / average.z : 0.0f;
+    return result;
 }
 
-// Solid-angle pdf of the direction reflected about a visible normal:
-// G1(wo) D(h) / (4 cos θo) with G1 = 2 cos θo / (cos θo + root(wo)), i.e. D / (2 (cos θo + root)).
-VKPT_FN float ggxReflectionPdf(vec3 wo, vec3 h, float alpha) {
-    return ggxDistribution(h, alpha) / (2.0f * (wo.z + smithRoot(wo, alpha)));
+// ggx is D G2 / (4 μo μi) at the half vector, fresnelWeight Schlick's (1 − V·H)^5 there.
+VKPT_FN vec3 evaluateOpaqueDielectric(ShadingMaterial m, vec3 wo, vec3 wi, float ggx,
+                                      float fresnelWeight) {
+    vec3 f0 = dielectricF0(m);
+    vec3 fresnel = f0 + (vec3(1.0f) - f0) * fresnelWeight;
+    return m.specular * ggx * fresnel +
+           m.baseColor * VKPT_INV_PI * diffuseTransmittance(m, wo.z, wi.z);
 }
 
-// A GGX normal visible from wo: Heitz, "Sampling the GGX Distribution of Visible Normals",
-// JCGT 7(4), 2018. Stretching by 1/α turns the microsurface into the unit hemisphere; its
-// visible normals are the projection of a uniform disk point onto it, the disk's half beyond
-// the silhouette of wo squeezed so that the projected area is right; then unstretch.
-VKPT_FN vec3 sampleGgxVisibleNormal(vec3 wo, float alpha, vec2 u) {
-    vec3 v = normalize(vec3(alpha * wo.x, alpha * wo.y, wo.z));
-    float lengthSquared = v.x * v.x + v.y * v.y;
-    vec3 t1 =
-        lengthSquared > 0.0f ? vec3(-v.y, v.x, 0.0f) / sqrt(lengthSquared) : vec3(1.0f, 0.0f, 0.0f);
-    vec3 t2 = cross(v, t1);
-    float r = sqrt(u.x);
-    float phi = 2.0f * VKPT_PI * u.y;
-    float p1 = r * cos(phi);
-    float p2 = r * sin(phi);
-    float squeeze = 0.5f * (1.0f + v.z);
-    p2 = mix(sqrt(max(0.0f, 1.0f - p1 * p1)), p2, squeeze);
-    vec3 n = p1 * t1 + p2 * t2 + sqrt(max(0.0f, 1.0f - p1 * p1 - p2 * p2)) * v;
-    return normalize(vec3(alpha * n.x, alpha * n.y, max(0.0f, n.z)));
+// ---------------------------------------------------------------------------------------------
+// The metal: the GGX lobe with Schlick's Fresnel of F0 = baseColor.
+
+VKPT_FN vec3 evaluateMetal(ShadingMaterial m, float ggx, float fresnelWeight) {
+    return ggx * (m.baseColor + (vec3(1.0f) - m.baseColor) * fresnelWeight);
+}
+
+VKPT_FN vec3 metalAlbedo(ShadingMaterial m, float cosTheta) {
+    return m.baseColor * ggxAlbedo(cosTheta, m.alpha) +
+           (vec3(1.0f) - m.baseColor) * ggxFresnelAlbedo(cosTheta, m.alpha);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The layers above the base.
+
+// What the clearcoat reflects at cos θ: clearcoat × (0.04 E + 0.96 E_w) at its α.
+VKPT_FN float clearcoatAlbedo(ShadingMaterial m, float cosTheta) {
+    return m.clearcoat *
+           (VKPT_CLEARCOAT_F0 * ggxAlbedo(cosTheta, m.clearcoatAlpha) +
+            (1.0f - VKPT_CLEARCOAT_F0) * ggxFresnelAlbedo(cosTheta, m.clearcoatAlpha));
+}
+
+VKPT_FN float evaluateClearcoat(ShadingMaterial m, vec3 wo, vec3 wi) {
+    vec3 h = normalize(wo + wi);
+    float fresnel =
+        VKPT_CLEARCOAT_F0 + (1.0f - VKPT_CLEARCOAT_F0) * halfVectorFresnelWeight(wo, wi, h);
+    return m.clearcoat * fresnel * ggxReflection(wo, wi, h, m.clearcoatAlpha);
+}
+
+// Neubelt and Pettineo's visibility is no masking function: with Charlie's D the white lobe's
+// albedo reaches 4.0 at grazing views for sheenRoughness 0.1, and exceeds 1 below about 0.45
+// (albedo_tables.h). The lobe is divided by max(1, E(μo)), so that it never reflects more than
+// it receives; where E ≤ 1 it is the specification's lobe unchanged.
+VKPT_FN float sheenLobeAlbedo(ShadingMaterial m, float cosThetaO) {
+    return sheenAlbedo(cosThetaO, m.sheenAlpha);
+}
+
+VKPT_FN vec3 evaluateSheen(ShadingMaterial m, vec3 wo, vec3 wi) {
+    return m.sheenColor *
+           (sheenReflection(wo, wi, m.sheenAlpha) / max(1.0f, sheenLobeAlbedo(m, wo.z)));
+}
+
+// What the layers below lose to the sheen: max(sheenColor) · min(E, 1), the largest channel's
+// share (KHR_materials_sheen's albedo scaling), of the normalised lobe.
+VKPT_FN float sheenAlbedoBound(ShadingMaterial m, float cosThetaO) {
+    return maxComponent(m.sheenColor) * min(sheenLobeAlbedo(m, cosThetaO), 1.0f);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The whole BRDF.
+
+VKPT_FN vec3 evaluateBase(ShadingMaterial m, vec3 wo, vec3 wi) {
+    vec3 h = normalize(wo + wi);
+    float fresnelWeight = halfVectorFresnelWeight(wo, wi, h);
+    float ggx = ggxReflection(wo, wi, h, m.alpha);
+    vec3 dielectric = evaluateOpaqueDielectric(m, wo, wi, ggx, fresnelWeight);
+    vec3 metal = evaluateMetal(m, ggx, fresnelWeight);
+    return mix(dielectric, metal, m.metallic);
 }
 
 // f without the cosine. The Lambertian material ignores wo, as the Lambertian path always did
@@ -137,53 +218,92 @@ VKPT_FN vec3 sampleGgxVisibleNormal(vec3 wo, float alpha, vec2 u) {
 VKPT_FN vec3 evaluateBsdf(ShadingMaterial m, vec3 wo, vec3 wi) {
     if (!m.metallicRoughness) return wi.z > 0.0f ? m.baseColor * VKPT_INV_PI : vec3(0.0f);
     if (!(wo.z > 0.0f && wi.z > 0.0f)) return vec3(0.0f);
-    vec3 h = normalize(wo + wi);
-    // V·H and L·H are equal in exact arithmetic; the rounding of h makes them differ by
-    // (wo − wi)·δh, which near retro-reflection is ulps of 1, not of V·H. Their mean cancels
-    // that error and is symmetric, so f(wo, wi) and f(wi, wo) agree to the last bit.
-    float fresnelWeight = schlickWeight(0.5f * (dot(wo, h) + dot(wi, h)));
-    float specular = ggxDistribution(h, m.alpha) * ggxVisibility(wo, wi, m.alpha);
-    vec3 metal = specular * (m.baseColor + (vec3(1.0f) - m.baseColor) * fresnelWeight);
-    vec3 f0 = dielectricF0(m);
-    vec3 fresnel = f0 + (vec3(1.0f) - f0) * fresnelWeight;
-    vec3 dielectric = m.baseColor * VKPT_INV_PI * (1.0f - m.specular * maxComponent(fresnel)) +
-                      specular * m.specular * fresnel;
-    return mix(dielectric, metal, m.metallic);
+    vec3 f = evaluateBase(m, wo, wi);
+    if (hasSheen(m)) {
+        f = evaluateSheen(m, wo, wi) + (1.0f - sheenAlbedoBound(m, wo.z)) * f;
+    }
+    if (hasClearcoat(m)) {
+        f = vec3(evaluateClearcoat(m, wo, wi)) + (1.0f - clearcoatAlbedo(m, wo.z)) * f;
+    }
+    return f;
 }
 
-// Probability of sampling the GGX lobe rather than the cosine-weighted diffuse one: each lobe's
-// weight estimated at wo by Schlick's Fresnel at cos θo (the specular albedo ignoring shadowing;
-// the diffuse albedo times the dielectric's 1 − s·max F), by luminance. A lobe that cannot
-// contribute (no diffuse: metallic 1 or a black base; no specular: metallic 0 and F0·s = 0)
-// is never sampled; when both can, the probability stays in [0.1, 0.9].
-VKPT_FN float specularLobeProbability(ShadingMaterial m, float cosThetaO) {
-    float fresnelWeight = schlickWeight(cosThetaO);
-    vec3 dielectricFresnel = schlickFresnel(dielectricF0(m), cosThetaO);
-    vec3 metalFresnel = m.baseColor + (vec3(1.0f) - m.baseColor) * fresnelWeight;
-    float specularWeight =
-        mix(m.specular * luminance(dielectricFresnel), luminance(metalFresnel), m.metallic);
-    float diffuseWeight = (1.0f - m.metallic) * luminance(m.baseColor) *
-                          max(0.0f, 1.0f - m.specular * maxComponent(dielectricFresnel));
-    bool hasSpecular = m.metallic > 0.0f || m.specular * maxComponent(dielectricF0(m)) > 0.0f;
-    bool hasDiffuse = diffuseWeight > 0.0f;
-    if (!hasDiffuse) return hasSpecular ? 1.0f : 0.0f;
-    if (!hasSpecular) return 0.0f;
-    float p = specularWeight / max(specularWeight + diffuseWeight, 1e-30f);
-    return clamp(p, VKPT_MIN_LOBE_PROBABILITY, 1.0f - VKPT_MIN_LOBE_PROBABILITY);
+// ---------------------------------------------------------------------------------------------
+// Sampling: one lobe drawn with probability by its estimated albedo at wo, the direction from
+// that lobe's sampler, the pdf the mixture's.
+
+// The probability of each lobe's sampler: the diffuse lobe's cosine hemisphere, the base's GGX
+// visible normals (dielectric highlight and metal share α), the clearcoat's, and the sheen's
+// uniform hemisphere. They sum to 1.
+struct LobeProbabilities {
+    float diffuse;
+    float specular;
+    float clearcoat;
+    float sheen;
+};
+
+// Each lobe's weight is its albedo at wo from the tables, by luminance, times what the layers
+// above leave it. A lobe that cannot contribute (no diffuse: metallic 1 or a black base; no
+// specular: metallic 0 and F0·s = 0; no clearcoat or sheen) is never sampled; each of the k
+// lobes that can gets VKPT_MIN_LOBE_PROBABILITY plus its share of the rest. A material that
+// reflects nothing samples the diffuse lobe, with weight 0.
+VKPT_FN LobeProbabilities lobeProbabilities(ShadingMaterial m, float cosThetaO) {
+    float clearcoatWeight = 0.0f;
+    float sheenWeight = 0.0f;
+    float below = 1.0f; // what the layers above leave the base, at wo
+    if (hasClearcoat(m)) {
+        clearcoatWeight = clearcoatAlbedo(m, cosThetaO);
+        below = 1.0f - clearcoatWeight;
+    }
+    if (hasSheen(m)) {
+        sheenWeight = below * luminance(m.sheenColor) * min(sheenLobeAlbedo(m, cosThetaO), 1.0f);
+        below *= 1.0f - sheenAlbedoBound(m, cosThetaO);
+    }
+    vec3 dielectricSpecular = dielectricSpecularAlbedo(m, cosThetaO);
+    float specularWeight = below * mix(luminance(dielectricSpecular),
+                                       luminance(metalAlbedo(m, cosThetaO)), m.metallic);
+    if (!(m.metallic > 0.0f || m.specular * maxComponent(dielectricF0(m)) > 0.0f))
+        specularWeight = 0.0f;
+    float diffuseWeight = below * (1.0f - m.metallic) *
+                          luminance(m.baseColor * max(vec3(1.0f) - dielectricSpecular, vec3(0.0f)));
+    float lobes = (diffuseWeight > 0.0f ? 1.0f : 0.0f) + (specularWeight > 0.0f ? 1.0f : 0.0f) +
+                  (clearcoatWeight > 0.0f ? 1.0f : 0.0f) + (sheenWeight > 0.0f ? 1.0f : 0.0f);
+    LobeProbabilities p;
+    p.diffuse = 0.0f;
+    p.specular = 0.0f;
+    p.clearcoat = 0.0f;
+    p.sheen = 0.0f;
+    if (lobes == 0.0f) {
+        p.diffuse = 1.0f;
+        return p;
+    }
+    // With one lobe its probability is 1 exactly, not 0.1 + 0.9 w/w rounded.
+    float minimum = lobes > 1.0f ? VKPT_MIN_LOBE_PROBABILITY : 0.0f;
+    float share =
+        (1.0f - lobes * minimum) / (diffuseWeight + specularWeight + clearcoatWeight + sheenWeight);
+    if (diffuseWeight > 0.0f) p.diffuse = lobes > 1.0f ? minimum + share * diffuseWeight : 1.0f;
+    if (specularWeight > 0.0f) p.specular = lobes > 1.0f ? minimum + share * specularWeight : 1.0f;
+    if (clearcoatWeight > 0.0f)
+        p.clearcoat = lobes > 1.0f ? minimum + share * clearcoatWeight : 1.0f;
+    if (sheenWeight > 0.0f) p.sheen = lobes > 1.0f ? minimum + share * sheenWeight : 1.0f;
+    return p;
 }
 
-// The one-sample mixture's pdf for wi: both lobes count, whichever drew it, so that MIS against
+// The one-sample mixture's pdf for wi: every lobe counts, whichever drew it, so that MIS against
 // light sampling weighs the direction by the density it really had.
-VKPT_FN float mixtureBsdfPdf(ShadingMaterial m, vec3 wo, vec3 wi, float specularProbability) {
-    float diffusePdf = wi.z * VKPT_INV_PI;
-    float specularPdf = ggxReflectionPdf(wo, normalize(wo + wi), m.alpha);
-    return mix(diffusePdf, specularPdf, specularProbability);
+VKPT_FN float mixtureBsdfPdf(ShadingMaterial m, vec3 wo, vec3 wi, LobeProbabilities p) {
+    vec3 h = normalize(wo + wi);
+    float pdf = p.diffuse * wi.z * VKPT_INV_PI;
+    if (p.specular > 0.0f) pdf += p.specular * ggxReflectionPdf(wo, h, m.alpha);
+    if (p.clearcoat > 0.0f) pdf += p.clearcoat * ggxReflectionPdf(wo, h, m.clearcoatAlpha);
+    if (p.sheen > 0.0f) pdf += p.sheen * uniformHemispherePdf();
+    return pdf;
 }
 
 VKPT_FN float bsdfPdf(ShadingMaterial m, vec3 wo, vec3 wi) {
     if (!m.metallicRoughness) return cosineHemispherePdf(wi.z);
     if (!(wo.z > 0.0f && wi.z > 0.0f)) return 0.0f;
-    return mixtureBsdfPdf(m, wo, wi, specularLobeProbability(m, wo.z));
+    return mixtureBsdfPdf(m, wo, wi, lobeProbabilities(m, wo.z));
 }
 
 struct BsdfSample {
@@ -203,8 +323,9 @@ VKPT_FN BsdfSample invalidBsdfSample() {
 }
 
 // uDirection places the direction within the lobe, uLobe picks the lobe (metallic-roughness
-// only). A GGX sample reflected below the surface is invalid: the path ends there, which is the
-// energy single-scattering microfacet models lose by design.
+// only; in the order specular, clearcoat, sheen, diffuse). A GGX sample reflected below the
+// surface is invalid: the path ends there, which is the energy single-scattering microfacet
+// models lose by design.
 VKPT_FN BsdfSample sampleBsdf(ShadingMaterial m, vec3 wo, vec2 uDirection, float uLobe) {
     BsdfSample s = invalidBsdfSample();
     if (!m.metallicRoughness) {
@@ -215,16 +336,19 @@ VKPT_FN BsdfSample sampleBsdf(ShadingMaterial m, vec3 wo, vec2 uDirection, float
         return s;
     }
     if (!(wo.z > 0.0f)) return s;
-    float specularProbability = specularLobeProbability(m, wo.z);
+    LobeProbabilities p = lobeProbabilities(m, wo.z);
     vec3 wi;
-    if (uLobe < specularProbability) {
-        vec3 h = sampleGgxVisibleNormal(wo, m.alpha, uDirection);
-        wi = normalize(2.0f * dot(wo, h) * h - wo);
+    if (uLobe < p.specular) {
+        wi = sampleGgxReflection(wo, m.alpha, uDirection);
+    } else if (uLobe < p.specular + p.clearcoat) {
+        wi = sampleGgxReflection(wo, m.clearcoatAlpha, uDirection);
+    } else if (uLobe < p.specular + p.clearcoat + p.sheen) {
+        wi = sampleUniformHemisphere(uDirection);
     } else {
         wi = sampleCosineHemisphere(uDirection);
     }
     if (!(wi.z > 0.0f)) return s;
-    float pdf = mixtureBsdfPdf(m, wo, wi, specularProbability);
+    float pdf = mixtureBsdfPdf(m, wo, wi, p);
     if (!(pdf > 0.0f)) return s;
     s.direction = wi;
     s.pdf = pdf;

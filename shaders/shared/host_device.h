@@ -176,6 +176,19 @@ struct Material {
     TextureSlot baseColorTexture; // sRGB; alpha in .a
     TextureSlot metallicRoughnessTexture; // linear; roughness in .g, metallic in .b
     TextureSlot emissiveTexture;          // sRGB
+    // KHR_materials_clearcoat and KHR_materials_sheen, the layers of bsdf.h over the base:
+    // 160 bytes from offset 160 (texels 10–19). Factors multiply their textures' channels;
+    // clearcoat 0 and sheenColor 0 mean no layer (the extension's defaults).
+    vec3 sheenColor;          // sheenColorFactor, linear RGB
+    float sheenRoughness;     // sheenRoughnessFactor, perceptual
+    float clearcoat;          // clearcoatFactor
+    float clearcoatRoughness; // clearcoatRoughnessFactor, perceptual
+    uint layersUnused0;       // keeps the texture slots on 16-byte texels
+    uint layersUnused1;
+    TextureSlot clearcoatTexture;          // linear; factor in .r
+    TextureSlot clearcoatRoughnessTexture; // linear; roughness in .g
+    TextureSlot sheenColorTexture;         // sRGB; colour in .rgb
+    TextureSlot sheenRoughnessTexture;     // linear; roughness in .a
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -245,7 +258,9 @@ struct EnvironmentParams {
 #define FEATURE_ENVIRONMENT_MAP 6
 #define FEATURE_EMITTER_CDF 7
 #define FEATURE_DOUBLE_SIDED 8
-#define FEATURE_COUNT 9
+#define FEATURE_CLEARCOAT 9
+#define FEATURE_SHEEN 10
+#define FEATURE_COUNT 11
 
 // ---------------------------------------------------------------------------------------------
 // Pinhole camera. Pixel (0, 0) is the top-left; a sample at (x + u, y + v) maps to the
@@ -270,12 +285,19 @@ static_assert(sizeof(Triangle) == 48 && offsetof(Triangle, materialIndex) == 12 
 static_assert(sizeof(TriangleNormals) == 48 && offsetof(TriangleNormals, n2) == 32);
 static_assert(sizeof(TextureSlot) == 32 && offsetof(TextureSlot, texture) == 12 &&
               offsetof(TextureSlot, transformRow1) == 16);
-static_assert(sizeof(Material) == 160 && offsetof(Material, emission) == 16 &&
-              offsetof(Material, flags) == 28 && offsetof(Material, metallic) == 32 &&
-              offsetof(Material, alphaMode) == 44 && offsetof(Material, specularColor) == 48 &&
-              offsetof(Material, specular) == 60 && offsetof(Material, baseColorTexture) == 64 &&
+static_assert(offsetof(Material, emission) == 16 && offsetof(Material, flags) == 28 &&
+              offsetof(Material, metallic) == 32 && offsetof(Material, alphaMode) == 44 &&
+              offsetof(Material, specularColor) == 48 && offsetof(Material, specular) == 60 &&
+              offsetof(Material, baseColorTexture) == 64 &&
               offsetof(Material, metallicRoughnessTexture) == 96 &&
               offsetof(Material, emissiveTexture) == 128);
+static_assert(sizeof(Material) == 320 && offsetof(Material, sheenColor) == 160 &&
+              offsetof(Material, sheenRoughness) == 172 && offsetof(Material, clearcoat) == 176 &&
+              offsetof(Material, clearcoatRoughness) == 180 &&
+              offsetof(Material, clearcoatTexture) == 192 &&
+              offsetof(Material, clearcoatRoughnessTexture) == 224 &&
+              offsetof(Material, sheenColorTexture) == 256 &&
+              offsetof(Material, sheenRoughnessTexture) == 288);
 static_assert(sizeof(TextureInfo) == 16);
 static_assert(sizeof(Emitter) == 64 && offsetof(Emitter, direction) == 16 &&
               offsetof(Emitter, primitive) == 28 && offsetof(Emitter, intensity) == 32 &&

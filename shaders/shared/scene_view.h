@@ -18,7 +18,7 @@
 //   environmentTexels[], environmentCdf[] (environment.h)
 //   bool sceneHasMetallicRoughness(), sceneHasTextures(), sceneHasSpheres(),
 //        sceneHasPunctualLights(), sceneHasEnvironment(), sceneHasEmitterCdf(),
-//        sceneHasDoubleSided()
+//        sceneHasDoubleSided(), sceneHasClearcoat(), sceneHasSheen()
 #ifndef VKPT_SCENE_VIEW_H
 #define VKPT_SCENE_VIEW_H
 
@@ -103,6 +103,12 @@ VKPT_FN bool sceneHasEmitterCdf(VKPT_SCENE_PARAM_ONLY) {
 }
 VKPT_FN bool sceneHasDoubleSided(VKPT_SCENE_PARAM_ONLY) {
     return scene.features[FEATURE_DOUBLE_SIDED];
+}
+VKPT_FN bool sceneHasClearcoat(VKPT_SCENE_PARAM_ONLY) {
+    return scene.features[FEATURE_CLEARCOAT];
+}
+VKPT_FN bool sceneHasSheen(VKPT_SCENE_PARAM_ONLY) {
+    return scene.features[FEATURE_SHEEN];
 }
 
 } // namespace vkpt::gpu

@@ -62,6 +62,26 @@ VKPT_FN void fillSphere(VKPT_INOUT(SurfacePoint) s, Triangle sphere, TriangleHit
     s.shadingNormal = s.geometricNormal;
 }
 
+// KHR_materials_clearcoat and KHR_materials_sheen over the base, each factor times its
+// texture, read only in scenes that have the layer (FEATURE_CLEARCOAT, FEATURE_SHEEN) and only
+// for a material that has it.
+VKPT_FN ShadingMaterial withMaterialLayers(ShadingMaterial shading, Material m,
+                                           vec2 uv VKPT_SCENE_PARAM) {
+    if (sceneHasClearcoat(VKPT_SCENE_ARG_ONLY) && m.clearcoat > 0.0f) {
+        float factor = m.clearcoat * sampleSlot(m.clearcoatTexture, uv, false VKPT_SCENE_ARG).x;
+        float roughness = m.clearcoatRoughness *
+                          sampleSlot(m.clearcoatRoughnessTexture, uv, false VKPT_SCENE_ARG).y;
+        shading = withClearcoat(shading, factor, roughness);
+    }
+    if (sceneHasSheen(VKPT_SCENE_ARG_ONLY) && maxComponent(m.sheenColor) > 0.0f) {
+        vec3 color = m.sheenColor * vec3(sampleSlot(m.sheenColorTexture, uv, true VKPT_SCENE_ARG));
+        float roughness =
+            m.sheenRoughness * sampleSlot(m.sheenRoughnessTexture, uv, false VKPT_SCENE_ARG).w;
+        shading = withSheen(shading, color, roughness);
+    }
+    return shading;
+}
+
 // The material at the point: factors times textures (each read only when present).
 VKPT_FN void fillMaterial(VKPT_INOUT(SurfacePoint) s, Triangle primitive,
                           TriangleHit hit VKPT_SCENE_PARAM) {
@@ -70,9 +90,9 @@ VKPT_FN void fillMaterial(VKPT_INOUT(SurfacePoint) s, Triangle primitive,
     float metallic = m.metallic;
     float roughness = m.roughness;
     s.emission = m.emission;
+    vec2 uv = vec2(0.0f); // read by no texture lookup unless set below
     if (hasAnyTexture(m VKPT_SCENE_ARG)) {
-        vec2 uv =
-            primitiveUv(s.triangle, primitive, hit.u, hit.v, s.rawShadingNormal VKPT_SCENE_ARG);
+        uv = primitiveUv(s.triangle, primitive, hit.u, hit.v, s.rawShadingNormal VKPT_SCENE_ARG);
         baseColor = m.baseColor * sampleSlot(m.baseColorTexture, uv, true VKPT_SCENE_ARG);
         vec4 metalRough = sampleSlot(m.metallicRoughnessTexture, uv, false VKPT_SCENE_ARG);
         metallic = m.metallic * metalRough.z;
@@ -83,6 +103,7 @@ VKPT_FN void fillMaterial(VKPT_INOUT(SurfacePoint) s, Triangle primitive,
                              (m.flags & MATERIAL_METALLIC_ROUGHNESS) != 0u;
     s.shading = makeShadingMaterial(vec3(baseColor), metallic, roughness, m.specular,
                                     m.specularColor, metallicRoughness);
+    if (metallicRoughness) s.shading = withMaterialLayers(s.shading, m, uv VKPT_SCENE_ARG);
     s.doubleSided =
         sceneHasDoubleSided(VKPT_SCENE_ARG_ONLY) && (m.flags & MATERIAL_DOUBLE_SIDED) != 0u;
 }

@@ -37,6 +37,10 @@ std::string kinds(const SceneFeatures& f) {
         {f.baseColorTextures, "baseColorTex"},
         {f.metallicRoughnessTextures, "mrTex"},
         {f.emissiveTextures, "emissiveTex"},
+        {f.clearcoatMaterials, "clearcoat"},
+        {f.sheenMaterials, "sheen"},
+        {f.clearcoatTextures, "clearcoatTex"},
+        {f.sheenTextures, "sheenTex"},
         {f.alphaMask, "mask"},
         {f.doubleSided, "doubleSided"},
         {f.triangles, "triangles"},
@@ -181,6 +185,15 @@ TEST(SceneFeatures, MapToTheKernelSpecialisationConstants) {
     f = {};
     f.doubleSided = true;
     EXPECT_EQ(f.kernelFeatures(), only(FEATURE_DOUBLE_SIDED));
+    f = {};
+    f.clearcoatMaterials = true;
+    EXPECT_EQ(f.kernelFeatures(), only(FEATURE_CLEARCOAT));
+    f = {};
+    f.sheenMaterials = true;
+    EXPECT_EQ(f.kernelFeatures(), only(FEATURE_SHEEN));
+    f = {};
+    f.sheenTextures = true;
+    EXPECT_EQ(f.kernelFeatures(), only(FEATURE_TEXTURES));
     // Kinds that need no kernel switch of their own.
     f = {};
     f.diffuseMaterials = f.triangles = f.emissiveTriangles = f.emissiveSpheres = true;
@@ -193,10 +206,12 @@ TEST(SceneFeatures, GeneralTurnsEverythingOnAndKeepsTheEmitterCount) {
     used.diffuseMaterials = used.triangles = true;
     used.emitterCount = 1;
     const SceneFeatures general = generalFeatures(used);
-    EXPECT_EQ(kinds(general),
-              "diffuse mr baseColorTex mrTex emissiveTex mask doubleSided triangles spheres "
-              "emissiveTriangles emissiveSpheres point spot directional environment "
-              "environmentMap | 1");
+    EXPECT_EQ(
+        kinds(general),
+        "diffuse mr baseColorTex mrTex emissiveTex clearcoat sheen clearcoatTex sheenTex mask "
+        "doubleSided triangles spheres "
+        "emissiveTriangles emissiveSpheres point spot directional environment "
+        "environmentMap | 1");
     EXPECT_TRUE(general.general);
     std::array<bool, FEATURE_COUNT> all{};
     all.fill(true); // the general layout reads a CDF even for one emitter
