@@ -50,6 +50,9 @@ TriangleNormals fetchTriangleNormals(uint i) {
                            texelVec4(RECORD_TEXEL(triangleNormalTexels, 3u, i, 2u)));
 }
 
+// A material is 20 texels (shared/host_device.h): the base's ten, then the layers' ten.
+#define MATERIAL_TEXELS 20u
+
 TextureSlot textureSlotFrom(uvec4 a, uvec4 b) {
     return TextureSlot(texelVec3(a), a.w, texelVec3(b), b.w);
 }
@@ -58,9 +61,6 @@ TextureSlot fetchTextureSlot(uint material, uint first) {
     return textureSlotFrom(RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, material, first),
                            RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, material, first + 1u));
 }
-
-// A material is 20 texels (shared/host_device.h): the base's ten, then the layers' ten.
-#define MATERIAL_TEXELS 20u
 
 // Twenty texels, of which the compiler keeps the fetches of the fields a kernel reads (the
 // layers' only where FEATURE_CLEARCOAT or FEATURE_SHEEN keeps the code that reads them).
