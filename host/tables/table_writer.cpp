@@ -29,7 +29,8 @@ void writeTablesHeader(std::ostream& out, int size, const std::vector<NamedTable
     out << "// clang-format off\n"
            "// albedo_tables.h — written by vkpt-albedo-tables (host/tables); do not edit.\n"
            "// Directional albedos of the GGX and Charlie sheen lobes for the albedo scaling of\n"
-           "// bsdf.h (Kulla and Conty 2017, \"Revisiting Physically Based Shading at Imageworks\").\n"
+           "// bsdf.h (Kulla and Conty 2017, \"Revisiting Physically Based Shading at "
+           "Imageworks\").\n"
            "// A 2D table has "
         << size << " × " << size << " entries: row j (roughness j/" << size - 1
         << ") after row j − 1,\n// column i at √(cos θo) = i/" << size - 1
