@@ -19,9 +19,31 @@ TextureSlot emptySlot() {
     return {vec3(1.0f, 0.0f, 0.0f), NO_TEXTURE, vec3(0.0f, 1.0f, 0.0f), 0u};
 }
 
+// No clearcoat (0) and no sheen (black): the KHR_materials_clearcoat and KHR_materials_sheen
+// defaults.
 Material diffuse(vec3 baseColor, vec3 emission = vec3(0.0f)) {
-    return {vec4(baseColor, 1.0f), emission,   0u,   0.0f,        1.0f,        0.5f,
-            ALPHA_MODE_OPAQUE,     vec3(1.0f), 0.0f, emptySlot(), emptySlot(), emptySlot()};
+    return {vec4(baseColor, 1.0f),
+            emission,
+            0u,
+            0.0f,
+            1.0f,
+            0.5f,
+            ALPHA_MODE_OPAQUE,
+            vec3(1.0f),
+            0.0f,
+            emptySlot(),
+            emptySlot(),
+            emptySlot(),
+            vec3(0.0f),
+            0.0f,
+            0.0f,
+            0.0f,
+            0u,
+            0u,
+            emptySlot(),
+            emptySlot(),
+            emptySlot(),
+            emptySlot()};
 }
 
 // A one-triangle (or one-sphere) scene: the triangle in z = -1, counter-clockwise seen from
