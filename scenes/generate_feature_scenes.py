@@ -3,9 +3,9 @@
 model each (scenes/test/features/): analytic spheres, glTF metallic-roughness (GGX)
 materials, textures with KHR_texture_transform and alpha MASK, normal textures (with generated
 and stored tangents), KHR_lights_punctual lights, a scene lit only by the environment (with a
-tiny equirectangular .hdr), an orthographic camera, and glass: KHR_materials_transmission,
+tiny equirectangular .hdr), an orthographic camera, glass: KHR_materials_transmission,
 KHR_materials_ior and KHR_materials_volume (smooth and rough, solid and thin-walled, clear and
-absorbing).
+absorbing), and the KHR_materials_clearcoat and KHR_materials_sheen layers.
 
 Run from anywhere:  python3 scenes/generate_feature_scenes.py
 
@@ -27,6 +27,8 @@ SPECULAR = "KHR_materials_specular"
 EMISSIVE_STRENGTH = "KHR_materials_emissive_strength"
 TEXTURE_TRANSFORM = "KHR_texture_transform"
 PUNCTUAL = "KHR_lights_punctual"
+CLEARCOAT = "KHR_materials_clearcoat"
+SHEEN = "KHR_materials_sheen"
 SHAPES = "KHR_implicit_shapes"
 TRANSMISSION = "KHR_materials_transmission"
 IOR = "KHR_materials_ior"
@@ -227,6 +229,95 @@ def ggx():
     s.save("ggx.gltf")
 
 
+def layer_material(scene, name, base, extension, layer, metallic=0.0, roughness=0.5, **extra):
+    """A GGX material with one layer extension (clearcoat or sheen) and its parameters."""
+    scene.use(extension)
+    return scene.material(name, base, metallic=metallic, roughness=roughness,
+                          extensions={extension: layer}, **extra)
+
+
+def clearcoat():
+    """Clearcoat (KHR_materials_clearcoat) over a rough red dielectric, a rough metal and a
+    diffuse-looking base, glossy and rough, one with clearcoat and clearcoat roughness
+    textures, two with normal textures (the coat's own, and the base's under a flat coat),
+    under a quad light: the coat's sharp highlight over each base."""
+    s = FeatureScene()
+    grey = s.material("grey", (0.6, 0.6, 0.6), diffuse=True)
+    room(s, grey, grey)
+    # R: clearcoat strength, G: clearcoat roughness, in stripes.
+    stripes = s.texture([[(255, 20, 0, 255), (90, 200, 0, 255)]] * 2,
+                        {"magFilter": 9728, "wrapS": 10497, "wrapT": 10497})
+    layers = [
+        ("coated red paint", (0.7, 0.08, 0.05), 0.0, 0.6, {"clearcoatFactor": 1.0,
+                                                          "clearcoatRoughnessFactor": 0.03}),
+        ("coated rough metal", (0.9, 0.7, 0.4), 1.0, 0.7, {"clearcoatFactor": 0.8,
+                                                           "clearcoatRoughnessFactor": 0.2}),
+        ("hazy coat", (0.2, 0.4, 0.7), 0.0, 0.9, {"clearcoatFactor": 1.0,
+                                                  "clearcoatRoughnessFactor": 0.5}),
+        ("textured coat", (0.3, 0.6, 0.3), 0.0, 0.8, {
+            "clearcoatFactor": 1.0, "clearcoatRoughnessFactor": 1.0,
+            "clearcoatTexture": {"index": stripes},
+            "clearcoatRoughnessTexture": {"index": stripes}}),
+    ]
+    for i, (name, base, metallic, roughness, layer) in enumerate(layers):
+        x = -1.2 + 0.6 * i
+        s.box(f"block {i}", [x, 0.0, -0.5], [x + 0.45, 0.45, -0.05],
+              layer_material(s, name, base, CLEARCOAT, layer, metallic, roughness))
+    # Normal maps and the coat (tangents generated): bumps in the coat over a flat base (car
+    # paint's orange peel), and bumps in the base under a flat coat, which the extension says
+    # keeps the unmapped normal.
+    size = 16
+    bumps = s.texture([[bumps_texel(x, y, size) for x in range(size)] for y in range(size)])
+    s.quad("bumpy coat", [-0.9, 0.55, -0.95], [0.8, 0.0, 0.0], [0.0, 0.6, 0.0],
+           layer_material(s, "bumpy coat", (0.6, 0.1, 0.1), CLEARCOAT, {
+               "clearcoatFactor": 1.0, "clearcoatRoughnessFactor": 0.05,
+               "clearcoatNormalTexture": {"index": bumps, "scale": 0.7}}, 0.0, 0.5))
+    bumpy_base = layer_material(s, "flat coat over bumps", (0.1, 0.3, 0.6), CLEARCOAT, {
+        "clearcoatFactor": 1.0, "clearcoatRoughnessFactor": 0.05}, 0.0, 0.5,
+        normalTexture={"index": bumps})
+    s.quad("flat coat over bumps", [0.1, 0.55, -0.95], [0.8, 0.0, 0.0], [0.0, 0.6, 0.0],
+           bumpy_base)
+    s.sphere("coated sphere", (0.0, 0.9, 0.2), 0.25,
+             layer_material(s, "coated white", (0.8, 0.8, 0.8), CLEARCOAT,
+                            {"clearcoatFactor": 1.0, "clearcoatRoughnessFactor": 0.1}))
+    s.quad("light", [-0.5, 1.6, -0.5], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0],
+           s.material("light", (0.0, 0.0, 0.0), diffuse=True, emission=(1.0, 1.0, 1.0),
+                      strength=6.0))
+    s.save("clearcoat.gltf")
+
+
+def sheen():
+    """Sheen (KHR_materials_sheen) over dark fabric-like bases, smooth to rough, one with sheen
+    colour (sRGB) and sheen roughness (alpha) textures, lit from behind and above so that the
+    grazing rims show."""
+    s = FeatureScene()
+    grey = s.material("grey", (0.5, 0.5, 0.5), diffuse=True)
+    room(s, grey, grey)
+    weave = s.texture([[(255, 200, 120, 40), (120, 160, 255, 230)],
+                       [(120, 160, 255, 230), (255, 200, 120, 40)]],
+                      {"magFilter": 9728, "wrapS": 10497, "wrapT": 10497})
+    layers = [
+        ("velvet", (0.05, 0.02, 0.1), {"sheenColorFactor": [0.9, 0.4, 0.8],
+                                       "sheenRoughnessFactor": 0.3}),
+        ("dusty", (0.2, 0.2, 0.2), {"sheenColorFactor": [1.0, 1.0, 1.0],
+                                    "sheenRoughnessFactor": 1.0}),
+        ("satin", (0.1, 0.05, 0.02), {"sheenColorFactor": [1.0, 0.8, 0.5],
+                                      "sheenRoughnessFactor": 0.15}),
+    ]
+    for i, (name, base, layer) in enumerate(layers):
+        s.sphere(f"{name} sphere", (-0.8 + 0.8 * i, 0.32, -0.1), 0.32,
+                 layer_material(s, name, base, SHEEN, layer, 0.0, 0.8))
+    s.box("woven block", [-0.4, 0.0, 0.35], [0.4, 0.12, 0.75],
+          layer_material(s, "woven", (0.1, 0.1, 0.1), SHEEN, {
+              "sheenColorFactor": [1.0, 1.0, 1.0], "sheenRoughnessFactor": 1.0,
+              "sheenColorTexture": {"index": weave},
+              "sheenRoughnessTexture": {"index": weave}}, 0.0, 0.9))
+    s.quad("light", [-0.8, 1.3, -0.9], [1.6, 0.0, 0.0], [0.0, 0.0, 0.5],
+           s.material("light", (0.0, 0.0, 0.0), diffuse=True, emission=(1.0, 1.0, 1.0),
+                      strength=8.0))
+    s.save("sheen.gltf")
+
+
 def checker(size, a, b):
     return [[a if (x + y) % 2 == 0 else b for x in range(size)] for y in range(size)]
 
@@ -423,6 +514,8 @@ def main():
     glass_room()
     glass_ball()
     absorbing_slab()
+    clearcoat()
+    sheen()
     write(FEATURES_DIR / "sky.hdr", radiance_hdr(32, 16, sky_texel))
 
 

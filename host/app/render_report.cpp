@@ -76,6 +76,9 @@ void writeFeatures(JsonWriter& json, const RenderReport& r) {
     json.field("metallicRoughnessTextures", f.metallicRoughnessTextures);
     json.field("emissiveTextures", f.emissiveTextures);
     json.field("normalTextures", f.normalTextures);
+    json.field("clearcoatMaterials", f.clearcoatMaterials);
+    json.field("sheenMaterials", f.sheenMaterials);
+    json.field("clearcoatTextures", f.clearcoatTextures).field("sheenTextures", f.sheenTextures);
     json.field("textureCoordinates", f.textureCoordinates());
     json.field("alphaMask", f.alphaMask).field("doubleSided", f.doubleSided);
     json.field("transmission", f.transmission);

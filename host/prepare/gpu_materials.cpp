@@ -77,6 +77,16 @@ std::vector<gpu::Material> makeGpuMaterials(const std::vector<SceneMaterial>& ma
         g.thickness = m.thickness;
         g.attenuationCoefficient = attenuationCoefficient(m);
         g.transmissionTexture = makeSlot(m.transmissionTexture);
+        g.sheenColor = m.sheenColor;
+        g.sheenRoughness = m.sheenRoughness;
+        g.clearcoat = m.clearcoat;
+        g.clearcoatRoughness = m.clearcoatRoughness;
+        g.clearcoatTexture = makeSlot(m.clearcoatTexture);
+        g.clearcoatRoughnessTexture = makeSlot(m.clearcoatRoughnessTexture);
+        g.clearcoatNormalTexture = makeSlot(m.clearcoatNormalTexture);
+        g.clearcoatNormalScale = m.clearcoatNormalScale;
+        g.sheenColorTexture = makeSlot(m.sheenColorTexture);
+        g.sheenRoughnessTexture = makeSlot(m.sheenRoughnessTexture);
         result.push_back(g);
     }
     return result;

@@ -10,6 +10,7 @@
 #include "prepare/environment_map.h"
 #include "prepare/gpu_materials.h"
 #include "prepare/gpu_primitives.h"
+#include "shared/albedo_lookup.h"
 
 namespace vkpt {
 
@@ -74,6 +75,8 @@ PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options) {
     prepared.uvs = std::move(primitives.uvs);
     prepared.tangents = std::move(primitives.tangents);
     prepared.materials = makeGpuMaterials(scene.materials);
+    if (features.metallicRoughnessMaterials)
+        prepared.albedoTables.assign(gpu::albedoTableEntries.begin(), gpu::albedoTableEntries.end());
     if (features.textures()) {
         GpuTextures textures = makeGpuTextures(scene);
         prepared.textures = std::move(textures.textures);

@@ -31,6 +31,9 @@ struct PreparedScene {
     gpu::EnvironmentParams environment{};     // emitterIndex NO_EMITTER without an environment
     std::vector<glm::vec4> environmentTexels; // the map's RGB (w unused), row 0 at the top
     std::vector<float> environmentCdf; // height rows of width conditional entries, then marginal
+    // The layered BSDF's albedo tables (shared/albedo_lookup.h); empty unless
+    // features.metallicRoughnessMaterials.
+    std::vector<float> albedoTables;
     SceneFeatures features;            // what the scene uses (all of it for a general layout)
     SceneFeatures usedFeatures;        // what the scene uses, whatever the layout
     double totalEmittedPower = 0.0;

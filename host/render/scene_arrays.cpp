@@ -39,8 +39,9 @@ constexpr SceneArrayAccess kStorage = SceneArrayAccess::Storage;
 // Every array the kernels read from the scene, one line each. Records of
 // 16-byte multiples are fetched as texels (lib/records.glsl), the rest read as storage buffers
 // (lib/kernel_bindings.h). A splittable array is declared in GLSL with VKPT_SCENE_TEXELS or a
-// SCENE entry; the last three are read by shared code as one array (shared/environment.h,
-// shared/texture_sampling.h) and grow with image sizes, not with the geometry.
+// SCENE entry; the last four are read by shared code as one array (shared/environment.h,
+// shared/texture_sampling.h, shared/albedo_lookup.h) and grow with image sizes (or not at
+// all), not with the geometry.
 const SceneArrayDesc kSceneArrays[] = {
     sceneArray<&PreparedScene::nodes>("bvhNodes", BINDING_BVH_NODES, kTexels),
     sceneArray<&PreparedScene::triangles>("triangles", BINDING_TRIANGLES, kTexels),
@@ -56,6 +57,7 @@ const SceneArrayDesc kSceneArrays[] = {
                                                   kStorage, false),
     sceneArray<&PreparedScene::environmentCdf>("environmentCdf", BINDING_ENVIRONMENT_CDF, kStorage,
                                                false),
+    sceneArray<&PreparedScene::albedoTables>("albedoTables", BINDING_ALBEDO_TABLES, kStorage, false),
 };
 
 constexpr VkDeviceSize kStagingSliceBytes = VkDeviceSize(64) << 20;

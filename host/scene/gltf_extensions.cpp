@@ -21,6 +21,8 @@ const std::vector<std::string> kSupportedExtensions = {"KHR_materials_emissive_s
                                                        "KHR_materials_transmission",
                                                        "KHR_materials_ior",
                                                        "KHR_materials_volume",
+                                                       "KHR_materials_clearcoat",
+                                                       "KHR_materials_sheen",
                                                        "KHR_draco_mesh_compression",
                                                        "EXT_meshopt_compression",
                                                        "KHR_mesh_quantization",

@@ -1,6 +1,7 @@
 // gltf_materials.cpp — reads the core material factors, the base colour, metallic-roughness,
-// emissive and normal textures, KHR_materials_emissive_strength, KHR_materials_specular, and the
-// glass of KHR_materials_transmission, KHR_materials_ior and KHR_materials_volume.
+// emissive and normal textures, KHR_materials_emissive_strength, KHR_materials_specular, the
+// glass of KHR_materials_transmission, KHR_materials_ior and KHR_materials_volume, and the
+// layers of KHR_materials_clearcoat and KHR_materials_sheen.
 #include "scene/gltf_materials.h"
 
 #include <algorithm>
@@ -17,6 +18,8 @@ constexpr const char* kSpecular = "KHR_materials_specular";
 constexpr const char* kTransmission = "KHR_materials_transmission";
 constexpr const char* kIor = "KHR_materials_ior";
 constexpr const char* kVolume = "KHR_materials_volume";
+constexpr const char* kClearcoat = "KHR_materials_clearcoat";
+constexpr const char* kSheen = "KHR_materials_sheen";
 
 std::string materialName(std::size_t index) {
     return "material " + std::to_string(index);
@@ -113,6 +116,15 @@ tinygltf::TextureInfo textureInfoOf(const tinygltf::Value& object, const std::st
     return info;
 }
 
+// The textureInfo at `key` of an extension object, or no texture when the key is absent.
+TextureReference readExtensionTexture(const tinygltf::Value& extension, const std::string& key,
+                                      TextureTable& textures, const std::string& where) {
+    const tinygltf::Value* member = findMember(extension, key);
+    if (member == nullptr) return {};
+    const std::string place = where + ": " + key;
+    return readTextureReference(textureInfoOf(*member, place), textures, place);
+}
+
 double readUnitNumber(const tinygltf::Value& object, const std::string& key, double fallback,
                       const std::string& where) {
     const double value = readNumber(object, key, fallback, where);
@@ -129,11 +141,8 @@ void readTransmission(const tinygltf::Material& material, std::size_t index, Tex
     const std::string where = materialName(index) + ": " + kTransmission;
     converted.transmission =
         static_cast<float>(readUnitNumber(*extension, "transmissionFactor", 0.0, where));
-    if (const tinygltf::Value* texture = findMember(*extension, "transmissionTexture")) {
-        const std::string place = where + ": transmissionTexture";
-        converted.transmissionTexture =
-            readTextureReference(textureInfoOf(*texture, place), textures, place);
-    }
+    converted.transmissionTexture =
+        readExtensionTexture(*extension, "transmissionTexture", textures, where);
 }
 
 // KHR_materials_ior: ior >= 1 (the extension also allows 0, meaning "not a dielectric", for
@@ -171,6 +180,51 @@ void readVolume(const tinygltf::Material& material, std::size_t index, SceneMate
     }
 }
 
+// KHR_materials_clearcoat: the layer's strength (R of its texture), roughness (G of its texture)
+// and normal texture, a normalTextureInfo with its own scale.
+void readClearcoat(const tinygltf::Material& material, std::size_t index, TextureTable& textures,
+                   SceneMaterial& converted) {
+    const tinygltf::Value* extension = findExtension(material.extensions, kClearcoat);
+    if (extension == nullptr) return;
+    const std::string where = materialName(index) + ": " + kClearcoat;
+    converted.clearcoat =
+        static_cast<float>(readUnitNumber(*extension, "clearcoatFactor", 0.0, where));
+    converted.clearcoatRoughness =
+        static_cast<float>(readUnitNumber(*extension, "clearcoatRoughnessFactor", 0.0, where));
+    converted.clearcoatTexture =
+        readExtensionTexture(*extension, "clearcoatTexture", textures, where);
+    converted.clearcoatRoughnessTexture =
+        readExtensionTexture(*extension, "clearcoatRoughnessTexture", textures, where);
+    converted.clearcoatNormalTexture =
+        readExtensionTexture(*extension, "clearcoatNormalTexture", textures, where);
+    if (const tinygltf::Value* normal = findMember(*extension, "clearcoatNormalTexture")) {
+        const double scale = readNumber(*normal, "scale", 1.0, where + ": clearcoatNormalTexture");
+        if (!std::isfinite(scale))
+            throw GltfProblem(where + ": clearcoatNormalTexture: scale is not a finite number");
+        converted.clearcoatNormalScale = static_cast<float>(scale);
+    }
+}
+
+// KHR_materials_sheen: the sheen colour (RGB of its sRGB texture) and roughness (A of its
+// texture), each in [0, 1].
+void readSheen(const tinygltf::Material& material, std::size_t index, TextureTable& textures,
+               SceneMaterial& converted) {
+    const tinygltf::Value* extension = findExtension(material.extensions, kSheen);
+    if (extension == nullptr) return;
+    const std::string where = materialName(index) + ": " + kSheen;
+    const std::vector<double> color =
+        readNumbers(*extension, "sheenColorFactor", {0.0, 0.0, 0.0}, where);
+    for (double c : color)
+        if (c < 0.0 || c > 1.0) throw GltfProblem(where + ": sheenColorFactor must be in [0, 1]");
+    converted.sheenColor = glm::vec3(glm::dvec3(color[0], color[1], color[2]));
+    converted.sheenRoughness =
+        static_cast<float>(readUnitNumber(*extension, "sheenRoughnessFactor", 0.0, where));
+    converted.sheenColorTexture =
+        readExtensionTexture(*extension, "sheenColorTexture", textures, where);
+    converted.sheenRoughnessTexture =
+        readExtensionTexture(*extension, "sheenRoughnessTexture", textures, where);
+}
+
 void readTextures(const tinygltf::Material& material, std::size_t index, TextureTable& textures,
                   SceneMaterial& converted) {
     const std::string where = materialName(index) + ": ";
@@ -203,6 +257,8 @@ SceneMaterial convertMaterial(const tinygltf::Material& material, std::size_t in
     readTransmission(material, index, textures, converted);
     readIor(material, index, converted);
     readVolume(material, index, converted);
+    readClearcoat(material, index, textures, converted);
+    readSheen(material, index, textures, converted);
     return converted;
 }
 

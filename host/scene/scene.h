@@ -37,7 +37,6 @@ struct SceneMaterial {
     TextureReference normalTexture;            // linear tangent-space normals (glTF normalTexture)
     float normalScale = 1.0f;                  // normalTexture.scale
 
-    bool hasNormalMap() const { return normalTexture.texture >= 0; }
     // KHR_materials_transmission, KHR_materials_ior, KHR_materials_volume (the extensions'
     // defaults: opaque, ior 1.5, thin-walled, no attenuation).
     float transmission = 0.0f;            // transmissionFactor
@@ -47,10 +46,31 @@ struct SceneMaterial {
     glm::vec3 attenuationColor{1.0f}; // transmittance after attenuationDistance
     float attenuationDistance = std::numeric_limits<float>::infinity();
 
-    // Lambertian only: the glTF model with no metal, no specular layer and no glass.
+    // KHR_materials_clearcoat (0: no clearcoat; the extension's defaults)
+    float clearcoat = 0.0f;                     // clearcoatFactor
+    float clearcoatRoughness = 0.0f;            // clearcoatRoughnessFactor
+    TextureReference clearcoatTexture;          // linear: R factor
+    TextureReference clearcoatRoughnessTexture; // linear: G roughness
+    TextureReference clearcoatNormalTexture;    // linear tangent-space normals of the layer
+    float clearcoatNormalScale = 1.0f;          // clearcoatNormalTexture.scale
+    // KHR_materials_sheen (black: no sheen; the extension's defaults)
+    glm::vec3 sheenColor{0.0f};             // sheenColorFactor
+    float sheenRoughness = 0.0f;            // sheenRoughnessFactor
+    TextureReference sheenColorTexture;     // sRGB-encoded RGB
+    TextureReference sheenRoughnessTexture; // linear: A roughness
+
+    bool hasClearcoat() const { return clearcoat > 0.0f; }
+    // Some normal texture shades the material (its own, or its clearcoat's): tangents needed.
+    bool hasNormalMap() const {
+        return normalTexture.texture >= 0 || (hasClearcoat() && clearcoatNormalTexture.texture >= 0);
+    }
+    bool hasSheen() const { return glm::any(glm::greaterThan(sheenColor, glm::vec3(0.0f))); }
+
+    // Lambertian only: the glTF model with no metal, no specular layer, no glass and no
+    // clearcoat or sheen.
     bool isDiffuseOnly() const {
         return metallic == 0.0f && specular == 0.0f && metallicRoughnessTexture.texture < 0 &&
-               !transmits();
+               !transmits() && !hasClearcoat() && !hasSheen();
     }
     bool transmits() const { return transmission > 0.0f || transmissionTexture.texture >= 0; }
     // Whether shading needs the dielectric extensions' data (FEATURE_TRANSMISSION).

@@ -55,6 +55,17 @@ void addMaterial(const SceneMaterial& material, SceneFeatures& features) {
     features.emissiveTextures |= material.emissiveTexture.texture >= 0;
     features.normalTextures |= material.hasNormalMap();
     features.transmissionTextures |= material.transmissionTexture.texture >= 0;
+    // A layer's textures count only with the layer: a zero factor zeroes what they would scale.
+    if (material.hasClearcoat()) {
+        features.clearcoatMaterials = true;
+        features.clearcoatTextures |= material.clearcoatTexture.texture >= 0 ||
+                                      material.clearcoatRoughnessTexture.texture >= 0;
+    }
+    if (material.hasSheen()) {
+        features.sheenMaterials = true;
+        features.sheenTextures |=
+            material.sheenColorTexture.texture >= 0 || material.sheenRoughnessTexture.texture >= 0;
+    }
     features.alphaMask |= material.alphaMode == AlphaMode::Mask;
     features.doubleSided |= material.doubleSided;
     features.transmission |= material.usesDielectricExtensions();
@@ -114,6 +125,8 @@ std::array<bool, FEATURE_COUNT> SceneFeatures::kernelFeatures() const {
     on[FEATURE_DOUBLE_SIDED] = doubleSided;
     on[FEATURE_NORMAL_MAPS] = normalTextures;
     on[FEATURE_TRANSMISSION] = transmission;
+    on[FEATURE_CLEARCOAT] = clearcoatMaterials;
+    on[FEATURE_SHEEN] = sheenMaterials;
     return on;
 }
 
@@ -142,6 +155,8 @@ SceneFeatures generalFeatures(const SceneFeatures& used) {
     all.baseColorTextures = all.metallicRoughnessTextures = all.emissiveTextures = true;
     all.normalTextures = all.transmissionTextures = true;
     all.alphaMask = all.doubleSided = all.transmission = true;
+    all.clearcoatMaterials = all.sheenMaterials = true;
+    all.clearcoatTextures = all.sheenTextures = true;
     all.triangles = all.spheres = true;
     all.emissiveTriangles = all.emissiveSpheres = true;
     all.pointLights = all.spotLights = all.directionalLights = true;
@@ -155,12 +170,16 @@ std::string describeFeatures(const SceneFeatures& features) {
     std::vector<std::string> names;
     appendIf(features.diffuseMaterials, "diffuse", names);
     appendIf(features.metallicRoughnessMaterials, "metallic-roughness", names);
+    appendIf(features.clearcoatMaterials, "clearcoat", names);
+    appendIf(features.sheenMaterials, "sheen", names);
     std::vector<std::string> textures;
     appendIf(features.baseColorTextures, "base colour", textures);
     appendIf(features.metallicRoughnessTextures, "metallic-roughness", textures);
     appendIf(features.emissiveTextures, "emissive", textures);
     appendIf(features.normalTextures, "normal", textures);
     appendIf(features.transmissionTextures, "transmission", textures);
+    appendIf(features.clearcoatTextures, "clearcoat", textures);
+    appendIf(features.sheenTextures, "sheen", textures);
     if (!textures.empty()) names.push_back("textures (" + joined(textures) + ")");
     appendIf(features.alphaMask, "alpha mask", names);
     appendIf(features.doubleSided, "double-sided", names);

@@ -1,5 +1,5 @@
-// scene_features.h — what a scene uses, found once after loading: material kinds, textures,
-// spheres, light kinds, the environment. Both renderers build for exactly this set (the
+// scene_features.h — what a scene uses, found once after loading: material kinds and layers,
+// textures, spheres, light kinds, the environment. Both renderers build for exactly this set (the
 // kernels through specialisation constants, the host through the buffers it creates), and
 // --general asks for all of it, for comparison (docs/scene-model.md).
 #pragma once
@@ -26,6 +26,10 @@ struct SceneFeatures {
     // KHR_materials_transmission / _ior / _volume: some material transmits, bounds a volume
     // or has an ior other than 1.5 (shared/bsdf_dielectric.h).
     bool transmission = false;
+    bool clearcoatMaterials = false; // KHR_materials_clearcoat layers present
+    bool sheenMaterials = false;     // KHR_materials_sheen layers present
+    bool clearcoatTextures = false;  // clearcoat or clearcoat roughness textures
+    bool sheenTextures = false;      // sheen colour or sheen roughness textures
     bool triangles = false;
     bool spheres = false;
     bool emissiveTriangles = false;
@@ -40,7 +44,7 @@ struct SceneFeatures {
 
     bool textures() const {
         return baseColorTextures || metallicRoughnessTextures || emissiveTextures ||
-               normalTextures || transmissionTextures;
+               normalTextures || transmissionTextures || clearcoatTextures || sheenTextures;
     }
     // TEXCOORD_0 is needed only to read textures.
     bool textureCoordinates() const { return textures(); }

@@ -30,5 +30,9 @@ layout(constant_id = FEATURE_DOUBLE_SIDED) const bool featureDoubleSided = true;
 layout(constant_id = FEATURE_NORMAL_MAPS) const bool featureNormalMaps = true;
 // KHR_materials_transmission, _ior, _volume: glass lobes, volumes, an ior other than 1.5.
 layout(constant_id = FEATURE_TRANSMISSION) const bool featureTransmission = true;
+// Some material has a KHR_materials_clearcoat layer.
+layout(constant_id = FEATURE_CLEARCOAT) const bool featureClearcoat = true;
+// Some material has a KHR_materials_sheen layer.
+layout(constant_id = FEATURE_SHEEN) const bool featureSheen = true;
 
 #endif // VKPT_FEATURES_GLSL

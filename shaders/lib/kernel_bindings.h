@@ -59,6 +59,7 @@
     BUFFER(BINDING_EMITTER_CDF, SCENE, float, emitterCdf)                                          \
     BUFFER(BINDING_ENVIRONMENT_TEXELS, READ, vec4, environmentTexels)                              \
     BUFFER(BINDING_ENVIRONMENT_CDF, READ, float, environmentCdf)                                   \
+    BUFFER(BINDING_ALBEDO_TABLES, READ, float, albedoTables)                                       \
     BUFFER(BINDING_PATH_STATES, WRITE, PathState, pathStates)                                      \
     BUFFER(BINDING_RAYS, WRITE, RayRecord, rays)                                                   \
     BUFFER(BINDING_SHADOW_RAYS, WRITE, ShadowRay, shadowRays)                                      \

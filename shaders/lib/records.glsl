@@ -69,7 +69,7 @@ TriangleTangents fetchTriangleTangents(uint i) {
                             texelVec4(RECORD_TEXEL(triangleTangentTexels, 3u, i, 2u)));
 }
 
-#define MATERIAL_TEXELS 17u // sizeof(Material) / 16
+#define MATERIAL_TEXELS 29u // sizeof(Material) / 16
 
 TextureSlot textureSlotFrom(uvec4 a, uvec4 b) {
     return TextureSlot(texelVec3(a), a.w, texelVec3(b), b.w);
@@ -80,8 +80,9 @@ TextureSlot fetchTextureSlot(uint material, uint first) {
                            RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, material, first + 1u));
 }
 
-// Seventeen texels, of which the compiler keeps the fetches of the fields a kernel reads.
-// Texels 10–12: the normal texture; 13–16: transmission, ior and volume.
+// Twenty-nine texels, of which the compiler keeps the fetches of the fields a kernel reads.
+// Texels 10–12: the normal texture; 13–16: transmission, ior and volume; 17–28: clearcoat and
+// sheen (read only where FEATURE_CLEARCOAT or FEATURE_SHEEN keeps the code that reads them).
 Material fetchMaterial(uint i) {
     uvec4 colour = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 0u);
     uvec4 emission = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 1u);
@@ -89,6 +90,8 @@ Material fetchMaterial(uint i) {
     uvec4 specular = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 3u);
     vec4 glass = texelVec4(RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 13u));
     uvec4 volume = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 14u);
+    uvec4 sheen = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 17u);
+    uvec4 clearcoat = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 18u);
     return Material(texelVec4(colour), texelVec3(emission), emission.w,
                     uintBitsToFloat(factors.x), uintBitsToFloat(factors.y),
                     uintBitsToFloat(factors.z), factors.w, texelVec3(specular),
@@ -96,7 +99,11 @@ Material fetchMaterial(uint i) {
                     fetchTextureSlot(i, 8u), fetchTextureSlot(i, 10u),
                     uintBitsToFloat(RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 12u).x), 0u,
                     0u, 0u, glass.x, glass.y, glass.z, glass.w, texelVec3(volume), volume.w,
-                    fetchTextureSlot(i, 15u));
+                    fetchTextureSlot(i, 15u), texelVec3(sheen), uintBitsToFloat(sheen.w),
+                    uintBitsToFloat(clearcoat.x), uintBitsToFloat(clearcoat.y),
+                    uintBitsToFloat(clearcoat.z), clearcoat.w, fetchTextureSlot(i, 19u),
+                    fetchTextureSlot(i, 21u), fetchTextureSlot(i, 23u), fetchTextureSlot(i, 25u),
+                    fetchTextureSlot(i, 27u));
 }
 
 TextureInfo fetchTextureInfo(uint i) {

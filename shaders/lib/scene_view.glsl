@@ -83,6 +83,14 @@ bool sceneHasTransmission() {
     return featureTransmission;
 }
 
+bool sceneHasClearcoat() {
+    return featureClearcoat;
+}
+
+bool sceneHasSheen() {
+    return featureSheen;
+}
+
 // trace_closest's record of a hit as the shared code takes it.
 TriangleHit triangleHitOf(HitRecord hit) {
     return TriangleHit(hit.t, hit.u, hit.v, true);

@@ -1,44 +1,64 @@
-// bsdf.h — the glTF 2.0 metallic-roughness BRDF (glTF 2.0 specification, Appendix B, with
-// KHR_materials_specular): evaluation, pdf and importance sampling in the local shading frame,
-// where z is the shading normal and both directions point away from the surface.
+// bsdf.h — the glTF 2.0 metallic-roughness BSDF (glTF 2.0 specification, Appendix B, with
+// KHR_materials_specular, _ior, _transmission, _sheen and _clearcoat), layered so that it never
+// reflects more than it receives: evaluation, pdf and importance sampling in the local shading
+// frame, where z is the shading normal and wo points away from the surface.
 //
-//   f          = mix(dielectric, metal, metallic)
-//   metal      = specular · (baseColor + (1 − baseColor)(1 − V·H)^5)
-//   dielectric = baseColor/π · (1 − s·max(F)) + specular · s·F,
-//                F = F0 + (1 − F0)(1 − V·H)^5,  F0 = min(0.04·specularColor, 1)
-//   specular   = D_GGX(H) · G2(V, L) / (4 (N·V)(N·L)), G2 height-correlated Smith.
+//   base       = mix(mix(dielectric, glass, transmission), metal, metallic)
+//   metal      = ggx · (baseColor + (1 − baseColor)(1 − V·H)^5)
+//   dielectric = s · F · ggx + baseColor/π · (1 − Es(μo))(1 − Es(μi)) / (1 − Es_avg)
+//   sheened    = sheenColor · charlie + (1 − max(sheenColor) · Esh(μo)) · base
+//                (charlie normalised where its albedo exceeds 1, see evaluateSheen)
+//   f          = clearcoat · Fc · ggx_c + (1 − clearcoat · Ec(μo)) · sheened
 //
-// V·H = L·H, so f is reciprocal, the diffuse term's (1 − s·max F) factor included. The
-// coupling of the two dielectric lobes is glTF's approximation: the diffuse term loses
-// 1 − s·max F of its own half vector, not what the specular lobe reflects at wo, so a white
-// dielectric reflects more than it receives at grazing views (tests/unit/bsdf_test.cpp
-// measures it; KhronosGroup/glTF#1853 discusses the coupling).
-// With KHR_materials_transmission the non-metal part is mix(dielectric, glass, transmission),
-// the glass lobe of bsdf_dielectric.h; KHR_materials_ior sets F0 = ((ior − 1)/(ior + 1))².
-// A material without MATERIAL_METALLIC_ROUGHNESS is Lambertian and keeps the exact arithmetic
-// of the Lambertian path (docs/scene-model.md), so scenes made only of it render as before.
+// ggx is D G2 / (4 μo μi) (ggx.h), F Schlick's with F0 = min(F0_ior · specularColor, 1) where
+// F0_ior = ((ior − 1)/(ior + 1))² (KHR_materials_ior; 0.04 at the default 1.5), Fc the
+// clearcoat's with F0 = 0.04 (IOR 1.5), charlie the sheen lobe (sheen.h), glass the dielectric
+// lobe of bsdf_dielectric.h (reflection and refraction, exact Fresnel), and each E the
+// directional albedo of the layer above, from the tables of albedo_tables.h: the albedo
+// scaling of Kulla and Conty 2017 ("Revisiting Physically Based Shading at Imageworks") that
+// OpenPBR and Dassault's Enterprise PBR use for layers. It replaces the glTF sample code's
+// coupling by 1 − F(V·H), which lets a white dielectric reflect up to 1.68 times what it
+// receives at grazing views (docs/scene-model.md has the furnace figures).
+//
+// Two forms, chosen for what each is exact for:
+//  - The diffuse base under its specular layer takes the reciprocal form
+//    (1 − E(μo))(1 − E(μi)) / (1 − E_avg), E_avg = 2∫E(μ)μ dμ: for a Lambertian base its
+//    albedo is exactly (1 − E(μo)) ρ, so a white dielectric reflects exactly 1, and f stays
+//    reciprocal like the rest of the base. Schlick's albedo is linear in F0, so the tables
+//    serve every ior.
+//  - Sheen and clearcoat lie over a base that is glossy (metal, glass, or the dielectric's own
+//    highlight). The reciprocal form then gains: over a white mirror, clearcoat's
+//    (1 − E(1))² / (1 − E_avg) is 1.015 at normal incidence. They take the one-sided form
+//    (1 − E(μo)), whose albedo E_layer(μo) + (1 − E_layer(μo)) A_below is at most 1 for any
+//    base with A_below ≤ 1. The price is reciprocity, which a path tracer that only traces
+//    from the camera does not use: both renderers evaluate f(wo = towards the camera, wi).
+//    Light the glass transmits below the surface passes the layers once, on wo's side.
+//
+// The clearcoat may have its own normal (KHR_materials_clearcoat's clearcoatNormalTexture): its
+// lobe and its albedo are then taken in that normal's frame. A material without
+// MATERIAL_METALLIC_ROUGHNESS is Lambertian and keeps the exact arithmetic of the Lambertian
+// path (docs/scene-model.md), so scenes made only of it render as before.
 #ifndef VKPT_BSDF_H
 #define VKPT_BSDF_H
 
+#include "albedo_lookup.h"
 #include "bsdf_dielectric.h"
+#include "ggx.h"
 #include "host_device.h"
 #include "sampling.h"
+#include "sheen.h"
 
 #ifdef __cplusplus
 namespace vkpt::gpu {
 #endif
 
-// The smallest GGX α. glTF's roughness 0 is a perfect mirror, which a renderer without delta
-// lobes cannot represent; α = 1e-3 is the bound below which pbrt-v4 treats the distribution as
-// smooth. At it, D peaks at 1/(π α²) ≈ 3.2e5, far inside float range, and the lobe (about
-// 2α = 2e-3 rad wide in the reflected direction) is still four orders of magnitude wider than
-// the angular resolution of a float unit vector, so sampling and evaluation agree.
-#define VKPT_MIN_GGX_ALPHA 1e-3f
-
-// Bounds of the probability of sampling the specular lobe when both lobes contribute: a white
-// dielectric at normal incidence estimates 0.04, and a highlight sampled 25 times less often
-// than the diffuse lobe is noisy; the floor costs at most 10 % of the diffuse samples.
+// The smallest probability of a lobe that can contribute: a white dielectric at normal
+// incidence estimates 0.04 for its highlight, and a highlight sampled 25 times less often than
+// the diffuse lobe is noisy; the floor costs each other lobe at most 10 % of its samples.
 #define VKPT_MIN_LOBE_PROBABILITY 0.1f
+
+// KHR_materials_clearcoat's layer is a dielectric of IOR 1.5: F0 = ((1.5 − 1)/(1.5 + 1))².
+#define VKPT_CLEARCOAT_F0 0.04f
 
 struct ShadingMaterial {
     vec3 baseColor;
@@ -47,6 +67,11 @@ struct ShadingMaterial {
     float specular;         // KHR_materials_specular factor s
     float alpha;            // GGX α = roughness², at least VKPT_MIN_GGX_ALPHA
     bool metallicRoughness; // false: the Lambertian material
+    float clearcoat;        // KHR_materials_clearcoat factor × texture; 0: no clearcoat
+    float clearcoatAlpha;   // GGX α of the clearcoat
+    vec3 clearcoatNormal;   // the clearcoat's normal in this frame; (0, 0, 1): the base's
+    vec3 sheenColor;        // KHR_materials_sheen colour × texture; 0: no sheen
+    float sheenAlpha;       // Charlie α = sheenRoughness², at least VKPT_MIN_SHEEN_ALPHA
     // KHR_materials_transmission, _ior and _volume (bsdf_dielectric.h).
     float transmission; // share of the non-metal part that is glass; 0: opaque
     float iorF0;        // ((ior − 1)/(ior + 1))², the dielectric's F0 before specularColor
@@ -54,7 +79,9 @@ struct ShadingMaterial {
     bool thinWalled;    // no volume behind the surface
 };
 
-// roughness is perceptual; it is clamped to [0, 1] (the glTF range) before squaring.
+// roughness is perceptual; it is clamped to [0, 1] (the glTF range) before squaring. Opaque,
+// ior 1.5, no clearcoat, no sheen: withClearcoat and withSheen add the layers, surface.h the
+// dielectric extensions.
 VKPT_FN ShadingMaterial makeShadingMaterial(vec3 baseColor, float metallic, float roughness,
                                             float specular, vec3 specularColor,
                                             bool metallicRoughness) {
@@ -63,15 +90,44 @@ VKPT_FN ShadingMaterial makeShadingMaterial(vec3 baseColor, float metallic, floa
     m.metallic = metallic;
     m.specularColor = specularColor;
     m.specular = specular;
-    float r = clamp(roughness, 0.0f, 1.0f);
-    m.alpha = max(r * r, VKPT_MIN_GGX_ALPHA);
+    m.alpha = ggxAlphaOf(roughness);
     m.metallicRoughness = metallicRoughness;
+    m.clearcoat = 0.0f;
+    m.clearcoatAlpha = VKPT_MIN_GGX_ALPHA;
+    m.clearcoatNormal = vec3(0.0f, 0.0f, 1.0f);
+    m.sheenColor = vec3(0.0f);
+    m.sheenAlpha = 1.0f;
     m.transmission = 0.0f;
     m.iorF0 = 0.04f; // ior 1.5
     m.eta = 1.5f;
     m.thinWalled = true;
     return m;
 }
+
+// factor in [0, 1] (KHR_materials_clearcoat), roughness perceptual.
+VKPT_FN ShadingMaterial withClearcoat(ShadingMaterial m, float factor, float roughness) {
+    m.clearcoat = clamp(factor, 0.0f, 1.0f);
+    m.clearcoatAlpha = ggxAlphaOf(roughness);
+    return m;
+}
+
+// color in [0, 1] per channel (KHR_materials_sheen), roughness perceptual.
+VKPT_FN ShadingMaterial withSheen(ShadingMaterial m, vec3 color, float roughness) {
+    m.sheenColor = clamp(color, vec3(0.0f), vec3(1.0f));
+    m.sheenAlpha = sheenAlphaOf(roughness);
+    return m;
+}
+
+VKPT_FN bool hasClearcoat(ShadingMaterial m) {
+    return m.clearcoat > 0.0f;
+}
+
+VKPT_FN bool hasSheen(ShadingMaterial m) {
+    return maxComponent(m.sheenColor) > 0.0f;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The glass: KHR_materials_transmission's share of the non-metal part.
 
 // The material's glass lobe: roughness as the opaque lobes', transmitted light tinted by the
 // base colour (KHR_materials_transmission).
@@ -84,25 +140,13 @@ VKPT_FN DielectricLobe glassLobeOf(ShadingMaterial m) {
     return lobe;
 }
 
-// The probability of sampling the glass lobe: its share of the material.
-VKPT_FN float glassLobeProbability(ShadingMaterial m) {
+// The glass lobe's share of the base.
+VKPT_FN float glassShare(ShadingMaterial m) {
     return (1.0f - m.metallic) * m.transmission;
 }
 
-VKPT_FN float maxComponent(vec3 v) {
-    return max(max(v.x, v.y), v.z);
-}
-
-// Schlick's (1 − cos θ)^5, the Fresnel weight of F90 = 1.
-VKPT_FN float schlickWeight(float cosTheta) {
-    float m = clamp(1.0f - cosTheta, 0.0f, 1.0f);
-    float m2 = m * m;
-    return m2 * m2 * m;
-}
-
-VKPT_FN vec3 schlickFresnel(vec3 f0, float cosTheta) {
-    return f0 + (vec3(1.0f) - f0) * schlickWeight(cosTheta);
-}
+// ---------------------------------------------------------------------------------------------
+// The opaque dielectric: KHR_materials_specular's GGX layer over a Lambertian base.
 
 // The dielectric's normal-incidence reflectance: ((ior − 1)/(ior + 1))² (KHR_materials_ior; 0.04
 // at the default 1.5) tinted by KHR_materials_specular.
@@ -110,117 +154,268 @@ VKPT_FN vec3 dielectricF0(ShadingMaterial m) {
     return min(m.iorF0 * m.specularColor, vec3(1.0f));
 }
 
-// GGX (Trowbridge–Reitz) normal distribution for a unit half vector h in the local frame,
-// written as 1 / (π α² ((x² + y²)/α² + z²)²) rather than with 1 − cos²θ: the sine part is then
-// exact near the peak, where a narrow lobe (α near its floor) lives.
-VKPT_FN float ggxDistribution(vec3 h, float alpha) {
-    float a2 = alpha * alpha;
-    float t = (h.x * h.x + h.y * h.y) / a2 + h.z * h.z;
-    return 1.0f / (VKPT_PI * a2 * t * t);
+// What the specular layer reflects at cos θ, per channel: s (F0 E + (1 − F0) E_w), exact for
+// Schlick's Fresnel, which is linear in F0 (albedo_tables.h).
+VKPT_FN vec3 dielectricSpecularAlbedo(ShadingMaterial m, float cosTheta) {
+    vec3 f0 = dielectricF0(m);
+    return m.specular * (f0 * ggxAlbedo(cosTheta, m.alpha) +
+                         (vec3(1.0f) - f0) * ggxFresnelAlbedo(cosTheta, m.alpha));
 }
 
-// √(z² + α²(x² + y²)) for a unit direction w: GGX's Smith Λ(w) = (√(1 + α² tan²θ) − 1)/2
-// (Heitz 2014, "Understanding the Masking-Shadowing Function in Microfacet-Based BRDFs",
-// JCGT 3(2), eq. 72) is (this/z − 1)/2, which needs no division by a grazing z.
-VKPT_FN float smithRoot(vec3 w, float alpha) {
-    return sqrt(w.z * w.z + alpha * alpha * (w.x * w.x + w.y * w.y));
+VKPT_FN vec3 dielectricSpecularAverageAlbedo(ShadingMaterial m) {
+    vec3 f0 = dielectricF0(m);
+    return m.specular *
+           (f0 * ggxAverageAlbedo(m.alpha) + (vec3(1.0f) - f0) * ggxFresnelAverageAlbedo(m.alpha));
 }
 
-// Height-correlated G2 = 1/(1 + Λ(wo) + Λ(wi)) (Heitz 2014, eq. 99) divided by the BRDF's
-// 4 cos θo cos θi: with the form of smithRoot the cosines cancel, leaving
-// 1 / (2 (cos θi · root(wo) + cos θo · root(wi))), finite at grazing angles.
-VKPT_FN float ggxVisibility(vec3 wo, vec3 wi, float alpha) {
-    float denominator = wi.z * smithRoot(wo, alpha) + wo.z * smithRoot(wi, alpha);
-    return denominator > 0.0f ? 0.5f / denominator : 0.0f;
+// The share of light the specular layer leaves to the diffuse base, reciprocally:
+// (1 − E(μo))(1 − E(μi)) / (1 − E_avg). Where the layer reflects (almost) everything on
+// average, the base receives nothing.
+VKPT_FN vec3 diffuseTransmittance(ShadingMaterial m, float cosThetaO, float cosThetaI) {
+    vec3 outgoing = max(vec3(1.0f) - dielectricSpecularAlbedo(m, cosThetaO), vec3(0.0f));
+    vec3 incoming = max(vec3(1.0f) - dielectricSpecularAlbedo(m, cosThetaI), vec3(0.0f));
+    vec3 average = vec3(1.0f) - dielectricSpecularAverageAlbedo(m);
+    vec3 result;
+    result.x = average.x > 1e-6f ? outgoing.x * incoming.x / average.x : 0.0f;
+    result.y = average.y > 1e-6f ? outgoing.y * incoming.y / average.y : 0.0f;
+    result.z = average.z > 1e-6f ? outgoing.z * incoming.z / average.z : 0.0f;
+    return result;
 }
 
-// Solid-angle pdf of the direction reflected about a visible normal:
-// G1(wo) D(h) / (4 cos θo) with G1 = 2 cos θo / (cos θo + root(wo)), i.e. D / (2 (cos θo + root)).
-VKPT_FN float ggxReflectionPdf(vec3 wo, vec3 h, float alpha) {
-    return ggxDistribution(h, alpha) / (2.0f * (wo.z + smithRoot(wo, alpha)));
-}
-
-// A GGX normal visible from wo: Heitz, "Sampling the GGX Distribution of Visible Normals",
-// JCGT 7(4), 2018. Stretching by 1/α turns the microsurface into the unit hemisphere; its
-// visible normals are the projection of a uniform disk point onto it, the disk's half beyond
-// the silhouette of wo squeezed so that the projected area is right; then unstretch.
-VKPT_FN vec3 sampleGgxVisibleNormal(vec3 wo, float alpha, vec2 u) {
-    vec3 v = normalize(vec3(alpha * wo.x, alpha * wo.y, wo.z));
-    float lengthSquared = v.x * v.x + v.y * v.y;
-    vec3 t1 =
-        lengthSquared > 0.0f ? vec3(-v.y, v.x, 0.0f) / sqrt(lengthSquared) : vec3(1.0f, 0.0f, 0.0f);
-    vec3 t2 = cross(v, t1);
-    float r = sqrt(u.x);
-    float phi = 2.0f * VKPT_PI * u.y;
-    float p1 = r * cos(phi);
-    float p2 = r * sin(phi);
-    float squeeze = 0.5f * (1.0f + v.z);
-    p2 = mix(sqrt(max(0.0f, 1.0f - p1 * p1)), p2, squeeze);
-    vec3 n = p1 * t1 + p2 * t2 + sqrt(max(0.0f, 1.0f - p1 * p1 - p2 * p2)) * v;
-    return normalize(vec3(alpha * n.x, alpha * n.y, max(0.0f, n.z)));
-}
-
-// f without the cosine. The Lambertian material ignores wo, as the Lambertian path always did
-// (an interpolated shading normal may put wo slightly below it); the metallic-roughness BRDF is
-// 0 unless both directions are above the shading normal's plane.
-VKPT_FN vec3 evaluateBsdf(ShadingMaterial m, vec3 wo, vec3 wi) {
-    if (!m.metallicRoughness) return wi.z > 0.0f ? m.baseColor * VKPT_INV_PI : vec3(0.0f);
-    vec3 glass = vec3(0.0f); // for wi on either side; delta lobes excluded
-    if (m.transmission > 0.0f) glass = evaluateDielectric(glassLobeOf(m), wo, wi);
-    if (!(wo.z > 0.0f && wi.z > 0.0f)) return glassLobeProbability(m) * glass;
-    vec3 h = normalize(wo + wi);
-    // V·H and L·H are equal in exact arithmetic; the rounding of h makes them differ by
-    // (wo − wi)·δh, which near retro-reflection is ulps of 1, not of V·H. Their mean cancels
-    // that error and is symmetric, so f(wo, wi) and f(wi, wo) agree to the last bit.
-    float fresnelWeight = schlickWeight(0.5f * (dot(wo, h) + dot(wi, h)));
-    float specular = ggxDistribution(h, m.alpha) * ggxVisibility(wo, wi, m.alpha);
-    vec3 metal = specular * (m.baseColor + (vec3(1.0f) - m.baseColor) * fresnelWeight);
+// ggx is D G2 / (4 μo μi) at the half vector, fresnelWeight Schlick's (1 − V·H)^5 there.
+VKPT_FN vec3 evaluateOpaqueDielectric(ShadingMaterial m, vec3 wo, vec3 wi, float ggx,
+                                      float fresnelWeight) {
     vec3 f0 = dielectricF0(m);
     vec3 fresnel = f0 + (vec3(1.0f) - f0) * fresnelWeight;
-    vec3 dielectric = m.baseColor * VKPT_INV_PI * (1.0f - m.specular * maxComponent(fresnel)) +
-                      specular * m.specular * fresnel;
+    return m.specular * ggx * fresnel +
+           m.baseColor * VKPT_INV_PI * diffuseTransmittance(m, wo.z, wi.z);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The metal: the GGX lobe with Schlick's Fresnel of F0 = baseColor.
+
+VKPT_FN vec3 evaluateMetal(ShadingMaterial m, float ggx, float fresnelWeight) {
+    return ggx * (m.baseColor + (vec3(1.0f) - m.baseColor) * fresnelWeight);
+}
+
+VKPT_FN vec3 metalAlbedo(ShadingMaterial m, float cosTheta) {
+    return m.baseColor * ggxAlbedo(cosTheta, m.alpha) +
+           (vec3(1.0f) - m.baseColor) * ggxFresnelAlbedo(cosTheta, m.alpha);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The layers above the base.
+
+// A direction of the shading frame in the clearcoat normal's frame. With the clearcoat on the
+// shading normal (no clearcoatNormalTexture), the basis is the identity and w is returned
+// unchanged, so an unmapped clearcoat costs no rounding.
+VKPT_FN vec3 toClearcoatFrame(ShadingMaterial m, vec3 w) {
+    if (m.clearcoatNormal.z == 1.0f) return w;
+    return worldToBasis(makeBasis(m.clearcoatNormal), w);
+}
+
+VKPT_FN vec3 fromClearcoatFrame(ShadingMaterial m, vec3 w) {
+    if (m.clearcoatNormal.z == 1.0f) return w;
+    return basisToWorld(makeBasis(m.clearcoatNormal), w);
+}
+
+// What the clearcoat reflects at cos θ to its normal: clearcoat × (0.04 E + 0.96 E_w) at its α.
+VKPT_FN float clearcoatAlbedo(ShadingMaterial m, float cosTheta) {
+    return m.clearcoat *
+           (VKPT_CLEARCOAT_F0 * ggxAlbedo(cosTheta, m.clearcoatAlpha) +
+            (1.0f - VKPT_CLEARCOAT_F0) * ggxFresnelAlbedo(cosTheta, m.clearcoatAlpha));
+}
+
+// What the clearcoat reflects towards wo (shading frame), which is what it takes from the
+// layers below.
+VKPT_FN float clearcoatAlbedoAt(ShadingMaterial m, vec3 wo) {
+    return clearcoatAlbedo(m, dot(wo, m.clearcoatNormal));
+}
+
+// wo and wi in the clearcoat's frame; 0 unless both are above its normal.
+VKPT_FN float evaluateClearcoat(ShadingMaterial m, vec3 wo, vec3 wi) {
+    if (!(wo.z > 0.0f && wi.z > 0.0f)) return 0.0f;
+    vec3 h = normalize(wo + wi);
+    float fresnel =
+        VKPT_CLEARCOAT_F0 + (1.0f - VKPT_CLEARCOAT_F0) * halfVectorFresnelWeight(wo, wi, h);
+    return m.clearcoat * fresnel * ggxReflection(wo, wi, h, m.clearcoatAlpha);
+}
+
+// The clearcoat's f in the shading frame. A tilted coat (clearcoatNormalTexture) reflects like a
+// facet of that tilt: its f·cos is f_c·(wi·n_c), the cosine to its own normal, so f here is
+// f_c·(wi·n_c)/(wi·n). Then the coat reflects at most E_c(wo·n_c), what it takes from the layers
+// below; with the shading frame's cosine a coat tilted 30° over a white dielectric returned up to
+// 6 % more than it received (tests/unit/layered_bsdf_test.cpp). wi above the shading normal.
+VKPT_FN float clearcoatInShadingFrame(ShadingMaterial m, vec3 wo, vec3 wi) {
+    vec3 wiC = toClearcoatFrame(m, wi);
+    float f = evaluateClearcoat(m, toClearcoatFrame(m, wo), wiC);
+    if (m.clearcoatNormal.z == 1.0f) return f;
+    return f * (max(wiC.z, 0.0f) / wi.z);
+}
+
+// Neubelt and Pettineo's visibility is no masking function: with Charlie's D the white lobe's
+// albedo reaches 4.0 at grazing views for sheenRoughness 0.1, and exceeds 1 below about 0.45
+// (albedo_tables.h). The lobe is divided by max(1, E(μo)), so that it never reflects more than
+// it receives; where E ≤ 1 it is the specification's lobe unchanged.
+VKPT_FN float sheenLobeAlbedo(ShadingMaterial m, float cosThetaO) {
+    return sheenAlbedo(cosThetaO, m.sheenAlpha);
+}
+
+VKPT_FN vec3 evaluateSheen(ShadingMaterial m, vec3 wo, vec3 wi) {
+    return m.sheenColor *
+           (sheenReflection(wo, wi, m.sheenAlpha) / max(1.0f, sheenLobeAlbedo(m, wo.z)));
+}
+
+// What the layers below lose to the sheen: max(sheenColor) · min(E, 1), the largest channel's
+// share (KHR_materials_sheen's albedo scaling), of the normalised lobe.
+VKPT_FN float sheenAlbedoBound(ShadingMaterial m, float cosThetaO) {
+    return maxComponent(m.sheenColor) * min(sheenLobeAlbedo(m, cosThetaO), 1.0f);
+}
+
+// The share of light at wo that the clearcoat and the sheen leave to the base.
+VKPT_FN float layersTransmittance(ShadingMaterial m, vec3 wo) {
+    float t = 1.0f;
+    if (hasSheen(m)) t *= 1.0f - sheenAlbedoBound(m, wo.z);
+    if (hasClearcoat(m)) t *= 1.0f - clearcoatAlbedoAt(m, wo);
+    return t;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The whole BSDF.
+
+// The base for wo and wi above the surface; glass is the glass lobe's value there.
+VKPT_FN vec3 evaluateBase(ShadingMaterial m, vec3 wo, vec3 wi, vec3 glass) {
+    vec3 h = normalize(wo + wi);
+    float fresnelWeight = halfVectorFresnelWeight(wo, wi, h);
+    float ggx = ggxReflection(wo, wi, h, m.alpha);
+    vec3 dielectric = evaluateOpaqueDielectric(m, wo, wi, ggx, fresnelWeight);
     if (m.transmission > 0.0f) dielectric = mix(dielectric, glass, m.transmission);
+    vec3 metal = evaluateMetal(m, ggx, fresnelWeight);
     return mix(dielectric, metal, m.metallic);
 }
 
-// Probability of sampling the GGX lobe rather than the cosine-weighted diffuse one: each lobe's
-// weight estimated at wo by Schlick's Fresnel at cos θo (the specular albedo ignoring shadowing;
-// the diffuse albedo times the dielectric's 1 − s·max F), by luminance. A lobe that cannot
-// contribute (no diffuse: metallic 1 or a black base; no specular: metallic 0 and F0·s = 0)
-// is never sampled; when both can, the probability stays in [0.1, 0.9].
-VKPT_FN float specularLobeProbability(ShadingMaterial m, float cosThetaO) {
-    float fresnelWeight = schlickWeight(cosThetaO);
-    vec3 dielectricFresnel = schlickFresnel(dielectricF0(m), cosThetaO);
-    vec3 metalFresnel = m.baseColor + (vec3(1.0f) - m.baseColor) * fresnelWeight;
-    float specularWeight =
-        mix(m.specular * luminance(dielectricFresnel), luminance(metalFresnel), m.metallic);
-    float diffuseWeight = (1.0f - m.metallic) * luminance(m.baseColor) *
-                          max(0.0f, 1.0f - m.specular * maxComponent(dielectricFresnel));
-    bool hasSpecular = m.metallic > 0.0f || m.specular * maxComponent(dielectricF0(m)) > 0.0f;
-    bool hasDiffuse = diffuseWeight > 0.0f;
-    if (!hasDiffuse) return hasSpecular ? 1.0f : 0.0f;
-    if (!hasSpecular) return 0.0f;
-    float p = specularWeight / max(specularWeight + diffuseWeight, 1e-30f);
-    return clamp(p, VKPT_MIN_LOBE_PROBABILITY, 1.0f - VKPT_MIN_LOBE_PROBABILITY);
+// f without the cosine. The Lambertian material ignores wo, as the Lambertian path always did
+// (an interpolated shading normal may put wo slightly below it). The metallic-roughness BSDF
+// reflects only with both directions above the shading normal's plane; below it, only its glass
+// transmits (delta lobes excluded: they have no value to evaluate).
+VKPT_FN vec3 evaluateBsdf(ShadingMaterial m, vec3 wo, vec3 wi) {
+    if (!m.metallicRoughness) return wi.z > 0.0f ? m.baseColor * VKPT_INV_PI : vec3(0.0f);
+    vec3 glass = vec3(0.0f); // for wi on either side
+    if (m.transmission > 0.0f) glass = evaluateDielectric(glassLobeOf(m), wo, wi);
+    if (!(wo.z > 0.0f)) return glassShare(m) * glass;
+    if (!(wi.z > 0.0f)) return (layersTransmittance(m, wo) * glassShare(m)) * glass;
+    vec3 f = evaluateBase(m, wo, wi, glass);
+    if (hasSheen(m)) {
+        f = evaluateSheen(m, wo, wi) + (1.0f - sheenAlbedoBound(m, wo.z)) * f;
+    }
+    if (hasClearcoat(m)) {
+        f = vec3(clearcoatInShadingFrame(m, wo, wi)) + (1.0f - clearcoatAlbedoAt(m, wo)) * f;
+    }
+    return f;
 }
 
-// The one-sample mixture's pdf for wi: both lobes count, whichever drew it, so that MIS against
-// light sampling weighs the direction by the density it really had.
-VKPT_FN float mixtureBsdfPdf(ShadingMaterial m, vec3 wo, vec3 wi, float specularProbability) {
-    float diffusePdf = wi.z * VKPT_INV_PI;
-    float specularPdf = ggxReflectionPdf(wo, normalize(wo + wi), m.alpha);
-    return mix(diffusePdf, specularPdf, specularProbability);
+// ---------------------------------------------------------------------------------------------
+// Sampling: one lobe drawn with probability by its estimated albedo at wo, the direction from
+// that lobe's sampler, the pdf the mixture's.
+
+// The probability of each lobe's sampler: the diffuse lobe's cosine hemisphere, the base's GGX
+// visible normals (dielectric highlight and metal share α), the clearcoat's, the sheen's
+// uniform hemisphere and the glass lobe's own sampler. They sum to 1.
+struct LobeProbabilities {
+    float diffuse;
+    float specular;
+    float clearcoat;
+    float sheen;
+    float glass;
+};
+
+// Each lobe's weight is its albedo at wo from the tables, by luminance, times what the layers
+// above leave it; the glass reflects and transmits all it receives, so its weight is its share.
+// A lobe that cannot contribute (no diffuse: metallic 1, full transmission or a black base; no
+// specular: metallic 0 and F0·s = 0; no clearcoat, sheen or glass) is never sampled; each of
+// the k lobes that can gets VKPT_MIN_LOBE_PROBABILITY plus its share of the rest. A material
+// that reflects nothing samples the diffuse lobe, with weight 0.
+VKPT_FN LobeProbabilities lobeProbabilities(ShadingMaterial m, vec3 wo) {
+    float cosThetaO = wo.z;
+    float clearcoatWeight = 0.0f;
+    float sheenWeight = 0.0f;
+    float below = 1.0f; // what the layers above leave the base, at wo
+    if (hasClearcoat(m)) {
+        clearcoatWeight = clearcoatAlbedoAt(m, wo);
+        below = 1.0f - clearcoatWeight;
+    }
+    if (hasSheen(m)) {
+        sheenWeight = below * luminance(m.sheenColor) * min(sheenLobeAlbedo(m, cosThetaO), 1.0f);
+        below *= 1.0f - sheenAlbedoBound(m, cosThetaO);
+    }
+    float opaque = 1.0f - m.transmission; // the opaque dielectric's share of the non-metal part
+    vec3 dielectricSpecular = dielectricSpecularAlbedo(m, cosThetaO);
+    float specularWeight = below * mix(opaque * luminance(dielectricSpecular),
+                                       luminance(metalAlbedo(m, cosThetaO)), m.metallic);
+    if (!(m.metallic > 0.0f || opaque * m.specular * maxComponent(dielectricF0(m)) > 0.0f))
+        specularWeight = 0.0f;
+    float diffuseWeight = below * (1.0f - m.metallic) * opaque *
+                          luminance(m.baseColor * max(vec3(1.0f) - dielectricSpecular, vec3(0.0f)));
+    float glassWeight = below * glassShare(m);
+    float lobes = (diffuseWeight > 0.0f ? 1.0f : 0.0f) + (specularWeight > 0.0f ? 1.0f : 0.0f) +
+                  (clearcoatWeight > 0.0f ? 1.0f : 0.0f) + (sheenWeight > 0.0f ? 1.0f : 0.0f) +
+                  (glassWeight > 0.0f ? 1.0f : 0.0f);
+    LobeProbabilities p;
+    p.diffuse = 0.0f;
+    p.specular = 0.0f;
+    p.clearcoat = 0.0f;
+    p.sheen = 0.0f;
+    p.glass = 0.0f;
+    if (lobes == 0.0f) {
+        p.diffuse = 1.0f;
+        return p;
+    }
+    // With one lobe its probability is 1 exactly, not 0.1 + 0.9 w/w rounded.
+    if (lobes == 1.0f) {
+        p.diffuse = diffuseWeight > 0.0f ? 1.0f : 0.0f;
+        p.specular = specularWeight > 0.0f ? 1.0f : 0.0f;
+        p.clearcoat = clearcoatWeight > 0.0f ? 1.0f : 0.0f;
+        p.sheen = sheenWeight > 0.0f ? 1.0f : 0.0f;
+        p.glass = glassWeight > 0.0f ? 1.0f : 0.0f;
+        return p;
+    }
+    float minimum = VKPT_MIN_LOBE_PROBABILITY;
+    float share = (1.0f - lobes * minimum) /
+                  (diffuseWeight + specularWeight + clearcoatWeight + sheenWeight + glassWeight);
+    if (diffuseWeight > 0.0f) p.diffuse = minimum + share * diffuseWeight;
+    if (specularWeight > 0.0f) p.specular = minimum + share * specularWeight;
+    if (clearcoatWeight > 0.0f) p.clearcoat = minimum + share * clearcoatWeight;
+    if (sheenWeight > 0.0f) p.sheen = minimum + share * sheenWeight;
+    if (glassWeight > 0.0f) p.glass = minimum + share * glassWeight;
+    return p;
 }
 
-// With glass, the mixture is glass with probability glassLobeProbability, the opaque lobes
-// otherwise (their pdf is 0 below the surface, and a smooth glass's is 0 everywhere).
+// The clearcoat sampler's density of wi (both in the shading frame).
+VKPT_FN float clearcoatPdf(ShadingMaterial m, vec3 wo, vec3 wi) {
+    vec3 woC = toClearcoatFrame(m, wo);
+    vec3 wiC = toClearcoatFrame(m, wi);
+    if (!(woC.z > 0.0f && wiC.z > 0.0f)) return 0.0f;
+    return ggxReflectionPdf(woC, normalize(woC + wiC), m.clearcoatAlpha);
+}
+
+// The one-sample mixture's pdf for wi: every lobe counts, whichever drew it, so that MIS against
+// light sampling weighs the direction by the density it really had. Below the surface only the
+// glass lobe's sampler reaches (a smooth glass's density is 0 everywhere: its samples are delta).
+VKPT_FN float mixtureBsdfPdf(ShadingMaterial m, vec3 wo, vec3 wi, LobeProbabilities p) {
+    float pdf = p.glass > 0.0f ? p.glass * dielectricPdf(glassLobeOf(m), wo, wi) : 0.0f;
+    if (!(wi.z > 0.0f)) return pdf;
+    vec3 h = normalize(wo + wi);
+    pdf += p.diffuse * wi.z * VKPT_INV_PI;
+    if (p.specular > 0.0f) pdf += p.specular * ggxReflectionPdf(wo, h, m.alpha);
+    if (p.clearcoat > 0.0f) pdf += p.clearcoat * clearcoatPdf(m, wo, wi);
+    if (p.sheen > 0.0f) pdf += p.sheen * uniformHemispherePdf();
+    return pdf;
+}
+
 VKPT_FN float bsdfPdf(ShadingMaterial m, vec3 wo, vec3 wi) {
     if (!m.metallicRoughness) return cosineHemispherePdf(wi.z);
-    float glassProbability = glassLobeProbability(m);
-    float glass = glassProbability > 0.0f ? dielectricPdf(glassLobeOf(m), wo, wi) : 0.0f;
-    if (!(wo.z > 0.0f && wi.z > 0.0f)) return glassProbability * glass;
-    float opaque = mixtureBsdfPdf(m, wo, wi, specularLobeProbability(m, wo.z));
-    return glassProbability > 0.0f ? mix(opaque, glass, glassProbability) : opaque;
+    if (!(wo.z > 0.0f)) return 0.0f;
+    return mixtureBsdfPdf(m, wo, wi, lobeProbabilities(m, wo));
 }
 
 struct BsdfSample {
@@ -241,27 +436,33 @@ VKPT_FN BsdfSample invalidBsdfSample() {
     return s;
 }
 
-// The glass lobe, chosen with probability glassProbability; uChoice picks reflection or
-// refraction. A delta sample's weight is the lobe's own (its share of the material cancels
-// against the probability of choosing it); a rough one is weighed by the whole mixture.
+// The glass lobe, chosen with probability p.glass; uChoice picks reflection or refraction. A
+// delta sample's weight is the lobe's own times its share of the material over the probability
+// of choosing it; a rough one is weighed by the whole mixture.
 VKPT_FN BsdfSample sampleGlassLobe(ShadingMaterial m, vec3 wo, vec2 u, float uChoice,
-                                   float glassProbability) {
+                                   LobeProbabilities p) {
     BsdfSample s = invalidBsdfSample();
     DielectricLobe lobe = glassLobeOf(m);
     DielectricSample d = sampleDielectric(lobe, wo, u, uChoice);
     if (!d.valid) return s;
     s.direction = d.direction;
     s.delta = dielectricIsDelta(lobe);
-    s.pdf = s.delta ? glassProbability * d.pdf : bsdfPdf(m, wo, d.direction);
-    if (!(s.pdf > 0.0f)) return s;
-    s.weight = s.delta ? d.weight : evaluateBsdf(m, wo, d.direction) * (abs(d.direction.z) / s.pdf);
-    s.valid = true;
+    if (s.delta) {
+        s.pdf = p.glass * d.pdf;
+        s.weight = d.weight * (layersTransmittance(m, wo) * glassShare(m) / p.glass);
+    } else {
+        s.pdf = mixtureBsdfPdf(m, wo, d.direction, p);
+        if (!(s.pdf > 0.0f)) return s;
+        s.weight = evaluateBsdf(m, wo, d.direction) * (abs(d.direction.z) / s.pdf);
+    }
+    s.valid = s.pdf > 0.0f;
     return s;
 }
 
 // uDirection places the direction within the lobe, uLobe picks the lobe (metallic-roughness
-// only). A GGX sample reflected below the surface is invalid: the path ends there, which is the
-// energy single-scattering microfacet models lose by design.
+// only; in the order glass, specular, clearcoat, sheen, diffuse). A GGX sample reflected below
+// the surface is invalid: the path ends there, which is the energy single-scattering microfacet
+// models lose by design.
 VKPT_FN BsdfSample sampleBsdf(ShadingMaterial m, vec3 wo, vec2 uDirection, float uLobe) {
     BsdfSample s = invalidBsdfSample();
     if (!m.metallicRoughness) {
@@ -272,24 +473,27 @@ VKPT_FN BsdfSample sampleBsdf(ShadingMaterial m, vec3 wo, vec2 uDirection, float
         return s;
     }
     if (!(wo.z > 0.0f)) return s;
-    float glassProbability = glassLobeProbability(m);
-    if (glassProbability > 0.0f) {
-        if (uLobe < glassProbability)
-            return sampleGlassLobe(m, wo, uDirection, uLobe / glassProbability, glassProbability);
-        uLobe = (uLobe - glassProbability) / (1.0f - glassProbability);
-    }
-    float specularProbability = specularLobeProbability(m, wo.z);
+    LobeProbabilities p = lobeProbabilities(m, wo);
+    if (uLobe < p.glass) return sampleGlassLobe(m, wo, uDirection, uLobe / p.glass, p);
+    uLobe -= p.glass;
     vec3 wi;
-    if (uLobe < specularProbability) {
-        vec3 h = sampleGgxVisibleNormal(wo, m.alpha, uDirection);
-        wi = normalize(2.0f * dot(wo, h) * h - wo);
+    if (uLobe < p.specular) {
+        wi = sampleGgxReflection(wo, m.alpha, uDirection);
+    } else if (uLobe < p.specular + p.clearcoat) {
+        // Below the coat's own horizon, or the base's (tested after the branches), the sample
+        // is lost, as clearcoatPdf counts it.
+        vec3 woC = toClearcoatFrame(m, wo);
+        if (!(woC.z > 0.0f)) return s;
+        vec3 wiC = sampleGgxReflection(woC, m.clearcoatAlpha, uDirection);
+        if (!(wiC.z > 0.0f)) return s;
+        wi = fromClearcoatFrame(m, wiC);
+    } else if (uLobe < p.specular + p.clearcoat + p.sheen) {
+        wi = sampleUniformHemisphere(uDirection);
     } else {
         wi = sampleCosineHemisphere(uDirection);
     }
     if (!(wi.z > 0.0f)) return s;
-    float pdf = mixtureBsdfPdf(m, wo, wi, specularProbability);
-    if (glassProbability > 0.0f)
-        pdf = mix(pdf, dielectricPdf(glassLobeOf(m), wo, wi), glassProbability);
+    float pdf = mixtureBsdfPdf(m, wo, wi, p);
     if (!(pdf > 0.0f)) return s;
     s.direction = wi;
     s.pdf = pdf;

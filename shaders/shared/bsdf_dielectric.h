@@ -10,7 +10,7 @@
 //
 // Rough: Walter, Marschner, Li and Torrance, "Microfacet Models for Refraction through Rough
 // Surfaces" (EGSR 2007), with GGX, height-correlated Smith masking (Heitz 2014) and visible
-// normal sampling (Heitz 2018, bsdf.h's sampleGgxVisibleNormal). Reflection is eq. 20,
+// normal sampling (Heitz 2018, ggx.h's sampleGgxVisibleNormal). Reflection is eq. 20,
 // transmission eq. 21 with o = wo (the camera side) and i = wi: in that form the BTDF is the
 // radiance BTDF and carries the factor (η_o/η_i)² = 1/η² by which radiance is compressed on
 // entering a denser medium (Veach 1997, thesis §5.2). Its adjoint (importance) differs by η²;
@@ -30,6 +30,7 @@
 #ifndef VKPT_BSDF_DIELECTRIC_H
 #define VKPT_BSDF_DIELECTRIC_H
 
+#include "ggx.h"
 #include "host_device.h"
 #include "sampling.h"
 
@@ -45,7 +46,7 @@ struct DielectricLobe {
     bool thinWalled; // no volume behind the surface: transmission does not bend
 };
 
-// α at or below this is a smooth interface. It is bsdf.h's VKPT_MIN_GGX_ALPHA, the floor of
+// α at or below this is a smooth interface. It is ggx.h's VKPT_MIN_GGX_ALPHA, the floor of
 // every GGX α (roughness ≤ 0.0316), so "roughness 0 glass" is the mirror-and-window that glTF
 // means rather than a lobe 2·10⁻³ rad wide that no light sample could find.
 #define VKPT_SMOOTH_DIELECTRIC_ALPHA 1e-3f
@@ -73,12 +74,6 @@ VKPT_FN float dielectricReflectance(DielectricLobe lobe, float cosTheta) {
     float r = dielectricFresnel(cosTheta, lobe.eta);
     return lobe.thinWalled ? 2.0f * r / (1.0f + r) : r;
 }
-
-// The GGX pieces this lobe shares with bsdf.h's reflection lobe, defined there (bsdf.h includes
-// this header before it defines them; both GLSL and C++ take the declaration first).
-VKPT_FN float ggxDistribution(vec3 h, float alpha);
-VKPT_FN float smithRoot(vec3 w, float alpha);
-VKPT_FN vec3 sampleGgxVisibleNormal(vec3 wo, float alpha, vec2 u);
 
 // Height-correlated G2 = 1/(1 + Λ(wo) + Λ(wi)) (Heitz 2014, eq. 99, which holds for
 // transmission with |cos|) divided by |cos θo cos θi|: 2 / (|zi|·root(wo) + |zo|·root(wi)).

@@ -204,6 +204,21 @@ struct Material {
     vec3 attenuationCoefficient;     // σ = −ln(attenuationColor)/attenuationDistance, per unit
     uint unusedVolume;               // keeps the vec3 16-byte aligned
     TextureSlot transmissionTexture; // linear; transmission in .r
+    // KHR_materials_clearcoat and KHR_materials_sheen, the layers of bsdf.h over the base:
+    // 192 bytes from offset 272 (texels 17–28). Factors multiply their textures' channels;
+    // clearcoat 0 and sheenColor 0 mean no layer (the extensions' defaults).
+    vec3 sheenColor;            // sheenColorFactor, linear RGB
+    float sheenRoughness;       // sheenRoughnessFactor, perceptual
+    float clearcoat;            // clearcoatFactor
+    float clearcoatRoughness;   // clearcoatRoughnessFactor, perceptual
+    float clearcoatNormalScale; // clearcoatNormalTexture.scale
+    uint layersUnused;          // keeps the texture slots on 16-byte texels
+    TextureSlot clearcoatTexture;          // linear; factor in .r
+    TextureSlot clearcoatRoughnessTexture; // linear; roughness in .g
+    TextureSlot clearcoatNormalTexture;    // linear; the layer's own normal map (no texture:
+                                           // the base's shading normal, as the extension says)
+    TextureSlot sheenColorTexture;         // sRGB; colour in .rgb
+    TextureSlot sheenRoughnessTexture;     // linear; roughness in .a
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -275,7 +290,9 @@ struct EnvironmentParams {
 #define FEATURE_DOUBLE_SIDED 8
 #define FEATURE_NORMAL_MAPS 9
 #define FEATURE_TRANSMISSION 10 // transmission, a volume, or an ior other than 1.5
-#define FEATURE_COUNT 11
+#define FEATURE_CLEARCOAT 11
+#define FEATURE_SHEEN 12
+#define FEATURE_COUNT 13
 
 // ---------------------------------------------------------------------------------------------
 // The camera (shared/camera.h). Pixel (0, 0) is the top-left; a sample at (x + u, y + v) has
@@ -317,10 +334,18 @@ static_assert(offsetof(Material, emission) == 16 && offsetof(Material, flags) ==
               offsetof(Material, emissiveTexture) == 128);
 static_assert(sizeof(TriangleTangents) == 48 && offsetof(TriangleTangents, t2) == 32);
 static_assert(offsetof(Material, normalTexture) == 160 && offsetof(Material, normalScale) == 192);
-static_assert(sizeof(Material) == 272 && offsetof(Material, transmission) == 208 &&
-              offsetof(Material, thickness) == 220 &&
+static_assert(offsetof(Material, transmission) == 208 && offsetof(Material, thickness) == 220 &&
               offsetof(Material, attenuationCoefficient) == 224 &&
               offsetof(Material, transmissionTexture) == 240);
+static_assert(sizeof(Material) == 464 && offsetof(Material, sheenColor) == 272 &&
+              offsetof(Material, sheenRoughness) == 284 && offsetof(Material, clearcoat) == 288 &&
+              offsetof(Material, clearcoatRoughness) == 292 &&
+              offsetof(Material, clearcoatNormalScale) == 296 &&
+              offsetof(Material, clearcoatTexture) == 304 &&
+              offsetof(Material, clearcoatRoughnessTexture) == 336 &&
+              offsetof(Material, clearcoatNormalTexture) == 368 &&
+              offsetof(Material, sheenColorTexture) == 400 &&
+              offsetof(Material, sheenRoughnessTexture) == 432);
 static_assert(sizeof(TextureInfo) == 16);
 static_assert(sizeof(Emitter) == 64 && offsetof(Emitter, direction) == 16 &&
               offsetof(Emitter, primitive) == 28 && offsetof(Emitter, intensity) == 32 &&

@@ -21,6 +21,17 @@ VKPT_FN bool hasTexture(TextureSlot slot VKPT_SCENE_PARAM) {
     return sceneHasTextures(VKPT_SCENE_ARG_ONLY) && slot.texture != NO_TEXTURE;
 }
 
+// The layers' textures count only in scenes with the layer (FEATURE_CLEARCOAT, FEATURE_SHEEN).
+VKPT_FN bool hasLayerTexture(Material m VKPT_SCENE_PARAM) {
+    bool clearcoat = sceneHasClearcoat(VKPT_SCENE_ARG_ONLY) &&
+                     (hasTexture(m.clearcoatTexture VKPT_SCENE_ARG) ||
+                      hasTexture(m.clearcoatRoughnessTexture VKPT_SCENE_ARG));
+    bool sheen =
+        sceneHasSheen(VKPT_SCENE_ARG_ONLY) && (hasTexture(m.sheenColorTexture VKPT_SCENE_ARG) ||
+                                               hasTexture(m.sheenRoughnessTexture VKPT_SCENE_ARG));
+    return clearcoat || sheen;
+}
+
 VKPT_FN bool hasAnyTexture(Material m VKPT_SCENE_PARAM) {
     return hasTexture(m.baseColorTexture VKPT_SCENE_ARG) ||
            hasTexture(m.metallicRoughnessTexture VKPT_SCENE_ARG) ||
@@ -28,7 +39,8 @@ VKPT_FN bool hasAnyTexture(Material m VKPT_SCENE_PARAM) {
            (sceneHasNormalMaps(VKPT_SCENE_ARG_ONLY) &&
             hasTexture(m.normalTexture VKPT_SCENE_ARG)) ||
            (sceneHasTransmission(VKPT_SCENE_ARG_ONLY) &&
-            hasTexture(m.transmissionTexture VKPT_SCENE_ARG));
+            hasTexture(m.transmissionTexture VKPT_SCENE_ARG)) ||
+           hasLayerTexture(m VKPT_SCENE_ARG);
 }
 
 // TEXCOORD_0 at barycentrics (u, v) of primitive `index`, or at the outward normal of a sphere.

@@ -19,7 +19,8 @@
 //   environmentTexels[], environmentCdf[] (environment.h)
 //   bool sceneHasMetallicRoughness(), sceneHasTextures(), sceneHasSpheres(),
 //        sceneHasPunctualLights(), sceneHasEnvironment(), sceneHasEmitterCdf(),
-//        sceneHasDoubleSided(), sceneHasNormalMaps(), sceneHasTransmission()
+//        sceneHasDoubleSided(), sceneHasNormalMaps(), sceneHasTransmission(),
+//        sceneHasClearcoat(), sceneHasSheen()
 #ifndef VKPT_SCENE_VIEW_H
 #define VKPT_SCENE_VIEW_H
 
@@ -114,6 +115,12 @@ VKPT_FN bool sceneHasNormalMaps(VKPT_SCENE_PARAM_ONLY) {
 }
 VKPT_FN bool sceneHasTransmission(VKPT_SCENE_PARAM_ONLY) {
     return scene.features[FEATURE_TRANSMISSION];
+}
+VKPT_FN bool sceneHasClearcoat(VKPT_SCENE_PARAM_ONLY) {
+    return scene.features[FEATURE_CLEARCOAT];
+}
+VKPT_FN bool sceneHasSheen(VKPT_SCENE_PARAM_ONLY) {
+    return scene.features[FEATURE_SHEEN];
 }
 
 } // namespace vkpt::gpu

@@ -87,6 +87,44 @@ VKPT_FN void applyDielectricExtensions(VKPT_INOUT(ShadingMaterial) shading, Mate
     shading.eta = (shading.thinWalled || frontFace) ? m.ior : 1.0f / m.ior;
 }
 
+// KHR_materials_clearcoat and KHR_materials_sheen over the base, each factor times its
+// texture, read only in scenes that have the layer (FEATURE_CLEARCOAT, FEATURE_SHEEN) and only
+// for a material that has it.
+VKPT_FN ShadingMaterial withMaterialLayers(ShadingMaterial shading, Material m,
+                                           vec2 uv VKPT_SCENE_PARAM) {
+    if (sceneHasClearcoat(VKPT_SCENE_ARG_ONLY) && m.clearcoat > 0.0f) {
+        float factor = m.clearcoat * sampleSlot(m.clearcoatTexture, uv, false VKPT_SCENE_ARG).x;
+        float roughness = m.clearcoatRoughness *
+                          sampleSlot(m.clearcoatRoughnessTexture, uv, false VKPT_SCENE_ARG).y;
+        shading = withClearcoat(shading, factor, roughness);
+    }
+    if (sceneHasSheen(VKPT_SCENE_ARG_ONLY) && maxComponent(m.sheenColor) > 0.0f) {
+        vec3 color = m.sheenColor * vec3(sampleSlot(m.sheenColorTexture, uv, true VKPT_SCENE_ARG));
+        float roughness =
+            m.sheenRoughness * sampleSlot(m.sheenRoughnessTexture, uv, false VKPT_SCENE_ARG).w;
+        shading = withSheen(shading, color, roughness);
+    }
+    return shading;
+}
+
+// The clearcoat's normal (KHR_materials_clearcoat): its own normal texture's, mapped and bent
+// like the base's; without one, the unmapped normal `interpolated`, even where the base is
+// normal-mapped (the extension's rule). Returned in the frame of s.shadingNormal, where bsdf.h
+// works.
+VKPT_FN vec3 clearcoatLocalNormal(SurfacePoint s, Material m, TriangleHit hit, vec2 uv,
+                                  vec3 interpolated VKPT_SCENE_PARAM) {
+    vec3 normal = interpolated;
+    if (hasTexture(m.clearcoatNormalTexture VKPT_SCENE_ARG)) {
+        vec3 n = normalize(s.rawShadingNormal);
+        vec4 tangent = interpolatedTangent(s.triangle, hit.u, hit.v VKPT_SCENE_ARG);
+        normal = mappedNormal(m.clearcoatNormalTexture, m.clearcoatNormalScale, uv, n,
+                              tangent VKPT_SCENE_ARG);
+        if (dot(n, interpolated) < 0.0f) normal = -normal;
+        normal = bendTowardsViewer(normal, s.geometricNormal, s.outgoing);
+    }
+    return normalize(worldToBasis(makeBasis(s.shadingNormal), normal));
+}
+
 // The material at the point: factors times textures (each read only when present). Needs
 // s.outgoing for the normal texture's bend.
 VKPT_FN void fillMaterial(VKPT_INOUT(SurfacePoint) s, Triangle primitive,
@@ -105,8 +143,9 @@ VKPT_FN void fillMaterial(VKPT_INOUT(SurfacePoint) s, Triangle primitive,
         roughness = m.roughness * metalRough.y;
         s.emission = emissionAt(m, uv VKPT_SCENE_ARG);
     }
-    if (sceneHasNormalMaps(VKPT_SCENE_ARG_ONLY) && hasTexture(m.normalTexture VKPT_SCENE_ARG) &&
-        length(s.rawShadingNormal) > 0.0f) {
+    vec3 interpolated = s.shadingNormal;
+    bool normalMapped = sceneHasNormalMaps(VKPT_SCENE_ARG_ONLY) && length(s.rawShadingNormal) > 0.0f;
+    if (normalMapped && hasTexture(m.normalTexture VKPT_SCENE_ARG)) {
         s.shadingNormal = normalMappedShadingNormal(s, m, hit, uv VKPT_SCENE_ARG);
     }
     bool metallicRoughness = sceneHasMetallicRoughness(VKPT_SCENE_ARG_ONLY) &&
@@ -115,6 +154,13 @@ VKPT_FN void fillMaterial(VKPT_INOUT(SurfacePoint) s, Triangle primitive,
                                     m.specularColor, metallicRoughness);
     if (sceneHasTransmission(VKPT_SCENE_ARG_ONLY))
         applyDielectricExtensions(s.shading, m, s.frontFace, uv VKPT_SCENE_ARG);
+    if (metallicRoughness) s.shading = withMaterialLayers(s.shading, m, uv VKPT_SCENE_ARG);
+    if (normalMapped && hasClearcoat(s.shading) &&
+        (hasTexture(m.normalTexture VKPT_SCENE_ARG) ||
+         hasTexture(m.clearcoatNormalTexture VKPT_SCENE_ARG))) {
+        s.shading.clearcoatNormal =
+            clearcoatLocalNormal(s, m, hit, uv, interpolated VKPT_SCENE_ARG);
+    }
     s.doubleSided =
         sceneHasDoubleSided(VKPT_SCENE_ARG_ONLY) && (m.flags & MATERIAL_DOUBLE_SIDED) != 0u;
 }

@@ -97,6 +97,17 @@ SharedStructs makeStructs() {
         m.attenuationCoefficient = x.v3();
         m.unusedVolume = x.u();
         m.transmissionTexture = makeTextureSlot(x);
+        m.sheenColor = x.v3();
+        m.sheenRoughness = x.f();
+        m.clearcoat = x.f();
+        m.clearcoatRoughness = x.f();
+        m.clearcoatNormalScale = x.f();
+        m.layersUnused = x.u();
+        m.clearcoatTexture = makeTextureSlot(x);
+        m.clearcoatRoughnessTexture = makeTextureSlot(x);
+        m.clearcoatNormalTexture = makeTextureSlot(x);
+        m.sheenColorTexture = makeTextureSlot(x);
+        m.sheenRoughnessTexture = makeTextureSlot(x);
         s.materials.push_back(m);
         s.textures.push_back({x.u(), x.u(), x.u(), x.u()});
         s.emitters.push_back(

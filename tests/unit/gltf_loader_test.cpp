@@ -407,7 +407,7 @@ const SharedScene kSharedScenes[] = {
      {0.0384478f, 0.0126166f, 0.0369811f},
      8,
      1,
-     6,
+     7, // 6 for the core slots, 1 more for KHR_materials_clearcoat's clearcoatTexture
      2},
     {"TransmissionTest",
      "TransmissionTest/TransmissionTest.glb",

@@ -39,6 +39,10 @@ std::string kinds(const SceneFeatures& f) {
         {f.emissiveTextures, "emissiveTex"},
         {f.normalTextures, "normalTex"},
         {f.transmissionTextures, "transmissionTex"},
+        {f.clearcoatMaterials, "clearcoat"},
+        {f.sheenMaterials, "sheen"},
+        {f.clearcoatTextures, "clearcoatTex"},
+        {f.sheenTextures, "sheenTex"},
         {f.alphaMask, "mask"},
         {f.doubleSided, "doubleSided"},
         {f.transmission, "transmission"},
@@ -190,6 +194,12 @@ TEST(SceneFeatures, MapToTheKernelSpecialisationConstants) {
     f.transmission = true;
     EXPECT_EQ(f.kernelFeatures(), only(FEATURE_TRANSMISSION));
     f = {};
+    f.clearcoatMaterials = true;
+    EXPECT_EQ(f.kernelFeatures(), only(FEATURE_CLEARCOAT));
+    f = {};
+    f.sheenMaterials = true;
+    EXPECT_EQ(f.kernelFeatures(), only(FEATURE_SHEEN));
+    f = {};
     f.transmissionTextures = true;
     EXPECT_EQ(f.kernelFeatures(), only(FEATURE_TEXTURES));
     // Kinds that need no kernel switch of their own.
@@ -206,8 +216,8 @@ TEST(SceneFeatures, GeneralTurnsEverythingOnAndKeepsTheEmitterCount) {
     const SceneFeatures general = generalFeatures(used);
     EXPECT_EQ(
         kinds(general),
-        "diffuse mr baseColorTex mrTex emissiveTex normalTex transmissionTex mask doubleSided "
-        "transmission triangles spheres "
+        "diffuse mr baseColorTex mrTex emissiveTex normalTex transmissionTex clearcoat sheen "
+        "clearcoatTex sheenTex mask doubleSided transmission triangles spheres "
         "emissiveTriangles emissiveSpheres point spot directional environment "
         "environmentMap | 1");
     EXPECT_TRUE(general.general);

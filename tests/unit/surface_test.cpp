@@ -33,6 +33,9 @@ Material diffuse(vec3 baseColor, vec3 emission = vec3(0.0f)) {
     m.specularColor = vec3(1.0f);
     m.baseColorTexture = m.metallicRoughnessTexture = m.emissiveTexture = emptySlot();
     m.normalTexture = m.transmissionTexture = emptySlot();
+    m.clearcoatTexture = m.clearcoatRoughnessTexture = m.clearcoatNormalTexture = emptySlot();
+    m.sheenColorTexture = m.sheenRoughnessTexture = emptySlot();
+    m.clearcoatNormalScale = 1.0f;
     m.normalScale = 1.0f;
     m.ior = 1.5f;
     m.iorF0 = 0.04f;

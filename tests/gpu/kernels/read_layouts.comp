@@ -154,6 +154,17 @@ void main() {
     putVec3(materials[i].attenuationCoefficient);
     putUint(materials[i].unusedVolume);
     putTextureSlot(materials[i].transmissionTexture);
+    putVec3(materials[i].sheenColor);
+    putFloat(materials[i].sheenRoughness);
+    putFloat(materials[i].clearcoat);
+    putFloat(materials[i].clearcoatRoughness);
+    putFloat(materials[i].clearcoatNormalScale);
+    putUint(materials[i].layersUnused);
+    putTextureSlot(materials[i].clearcoatTexture);
+    putTextureSlot(materials[i].clearcoatRoughnessTexture);
+    putTextureSlot(materials[i].clearcoatNormalTexture);
+    putTextureSlot(materials[i].sheenColorTexture);
+    putTextureSlot(materials[i].sheenRoughnessTexture);
 
     cursor = LAYOUT_OFFSET_TEXTURES + i * LAYOUT_WORDS_TEXTURE_INFO;
     putUint(textures[i].texelOffset);

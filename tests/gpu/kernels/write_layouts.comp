@@ -163,6 +163,17 @@ void main() {
     materials[i].attenuationCoefficient = takeVec3();
     materials[i].unusedVolume = takeUint();
     materials[i].transmissionTexture = takeTextureSlot();
+    materials[i].sheenColor = takeVec3();
+    materials[i].sheenRoughness = takeFloat();
+    materials[i].clearcoat = takeFloat();
+    materials[i].clearcoatRoughness = takeFloat();
+    materials[i].clearcoatNormalScale = takeFloat();
+    materials[i].layersUnused = takeUint();
+    materials[i].clearcoatTexture = takeTextureSlot();
+    materials[i].clearcoatRoughnessTexture = takeTextureSlot();
+    materials[i].clearcoatNormalTexture = takeTextureSlot();
+    materials[i].sheenColorTexture = takeTextureSlot();
+    materials[i].sheenRoughnessTexture = takeTextureSlot();
 
     cursor = LAYOUT_OFFSET_TEXTURES + i * LAYOUT_WORDS_TEXTURE_INFO;
     textures[i].texelOffset = takeUint();
