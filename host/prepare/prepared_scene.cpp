@@ -76,7 +76,8 @@ PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options) {
     prepared.tangents = std::move(primitives.tangents);
     prepared.materials = makeGpuMaterials(scene.materials);
     if (features.metallicRoughnessMaterials)
-        prepared.albedoTables.assign(gpu::albedoTableEntries.begin(), gpu::albedoTableEntries.end());
+        prepared.albedoTables.assign(gpu::albedoTableEntries.begin(),
+                                     gpu::albedoTableEntries.end());
     if (features.textures()) {
         GpuTextures textures = makeGpuTextures(scene);
         prepared.textures = std::move(textures.textures);

@@ -34,8 +34,8 @@ struct PreparedScene {
     // The layered BSDF's albedo tables (shared/albedo_lookup.h); empty unless
     // features.metallicRoughnessMaterials.
     std::vector<float> albedoTables;
-    SceneFeatures features;            // what the scene uses (all of it for a general layout)
-    SceneFeatures usedFeatures;        // what the scene uses, whatever the layout
+    SceneFeatures features;     // what the scene uses (all of it for a general layout)
+    SceneFeatures usedFeatures; // what the scene uses, whatever the layout
     double totalEmittedPower = 0.0;
 };
 

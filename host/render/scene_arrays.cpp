@@ -57,7 +57,8 @@ const SceneArrayDesc kSceneArrays[] = {
                                                   kStorage, false),
     sceneArray<&PreparedScene::environmentCdf>("environmentCdf", BINDING_ENVIRONMENT_CDF, kStorage,
                                                false),
-    sceneArray<&PreparedScene::albedoTables>("albedoTables", BINDING_ALBEDO_TABLES, kStorage, false),
+    sceneArray<&PreparedScene::albedoTables>("albedoTables", BINDING_ALBEDO_TABLES, kStorage,
+                                             false),
 };
 
 constexpr VkDeviceSize kStagingSliceBytes = VkDeviceSize(64) << 20;

@@ -62,7 +62,8 @@ struct SceneMaterial {
     bool hasClearcoat() const { return clearcoat > 0.0f; }
     // Some normal texture shades the material (its own, or its clearcoat's): tangents needed.
     bool hasNormalMap() const {
-        return normalTexture.texture >= 0 || (hasClearcoat() && clearcoatNormalTexture.texture >= 0);
+        return normalTexture.texture >= 0 ||
+               (hasClearcoat() && clearcoatNormalTexture.texture >= 0);
     }
     bool hasSheen() const { return glm::any(glm::greaterThan(sheenColor, glm::vec3(0.0f))); }
 

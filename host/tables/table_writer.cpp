@@ -35,7 +35,8 @@ void writeTablesHeader(std::ostream& out, int size, const std::vector<NamedTable
         << size << " × " << size << " entries: row j (roughness j/" << size - 1
         << ") after row j − 1,\n// column i at √(cos θo) = i/" << size - 1
         << ". A 1D table has one entry per row.\n"
-           "// Host-side C++ only: the reference reads these arrays, and the device reads the same\n"
+           "// Host-side C++ only: the reference reads these arrays, and the device reads the "
+           "same\n"
            "// numbers from a buffer the host uploads (shared/albedo_lookup.h).\n"
            "#ifndef VKPT_ALBEDO_TABLES_H\n"
            "#define VKPT_ALBEDO_TABLES_H\n\n"

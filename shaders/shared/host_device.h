@@ -207,12 +207,12 @@ struct Material {
     // KHR_materials_clearcoat and KHR_materials_sheen, the layers of bsdf.h over the base:
     // 192 bytes from offset 272 (texels 17–28). Factors multiply their textures' channels;
     // clearcoat 0 and sheenColor 0 mean no layer (the extensions' defaults).
-    vec3 sheenColor;            // sheenColorFactor, linear RGB
-    float sheenRoughness;       // sheenRoughnessFactor, perceptual
-    float clearcoat;            // clearcoatFactor
-    float clearcoatRoughness;   // clearcoatRoughnessFactor, perceptual
-    float clearcoatNormalScale; // clearcoatNormalTexture.scale
-    uint layersUnused;          // keeps the texture slots on 16-byte texels
+    vec3 sheenColor;                       // sheenColorFactor, linear RGB
+    float sheenRoughness;                  // sheenRoughnessFactor, perceptual
+    float clearcoat;                       // clearcoatFactor
+    float clearcoatRoughness;              // clearcoatRoughnessFactor, perceptual
+    float clearcoatNormalScale;            // clearcoatNormalTexture.scale
+    uint layersUnused;                     // keeps the texture slots on 16-byte texels
     TextureSlot clearcoatTexture;          // linear; factor in .r
     TextureSlot clearcoatRoughnessTexture; // linear; roughness in .g
     TextureSlot clearcoatNormalTexture;    // linear; the layer's own normal map (no texture:

@@ -144,7 +144,8 @@ VKPT_FN void fillMaterial(VKPT_INOUT(SurfacePoint) s, Triangle primitive,
         s.emission = emissionAt(m, uv VKPT_SCENE_ARG);
     }
     vec3 interpolated = s.shadingNormal;
-    bool normalMapped = sceneHasNormalMaps(VKPT_SCENE_ARG_ONLY) && length(s.rawShadingNormal) > 0.0f;
+    bool normalMapped =
+        sceneHasNormalMaps(VKPT_SCENE_ARG_ONLY) && length(s.rawShadingNormal) > 0.0f;
     if (normalMapped && hasTexture(m.normalTexture VKPT_SCENE_ARG)) {
         s.shadingNormal = normalMappedShadingNormal(s, m, hit, uv VKPT_SCENE_ARG);
     }

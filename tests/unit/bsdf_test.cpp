@@ -532,16 +532,14 @@ TEST(Bsdf, LobeProbabilityStaysInsideWhenBothLobesContribute) {
                 .specular;
         EXPECT_GT(halfMetal, 0.0f);
         EXPECT_LT(halfMetal, 1.0f);
-        EXPECT_EQ(
-            gpu::lobeProbabilities(
-                gpu::makeShadingMaterial(vec3(0.0f), 1.0f, 0.5f, 1.0f, vec3(1.0f), true), wo)
-                .specular,
-            1.0f); // a black metal still reflects at grazing half-angles
-        EXPECT_EQ(
-            gpu::lobeProbabilities(
-                gpu::makeShadingMaterial(vec3(0.5f), 0.0f, 0.5f, 0.0f, vec3(1.0f), true), wo)
-                .specular,
-            0.0f); // specular 0: only the diffuse lobe
+        EXPECT_EQ(gpu::lobeProbabilities(
+                      gpu::makeShadingMaterial(vec3(0.0f), 1.0f, 0.5f, 1.0f, vec3(1.0f), true), wo)
+                      .specular,
+                  1.0f); // a black metal still reflects at grazing half-angles
+        EXPECT_EQ(gpu::lobeProbabilities(
+                      gpu::makeShadingMaterial(vec3(0.5f), 0.0f, 0.5f, 0.0f, vec3(1.0f), true), wo)
+                      .specular,
+                  0.0f); // specular 0: only the diffuse lobe
     }
 }
 

@@ -214,12 +214,11 @@ TEST(SceneFeatures, GeneralTurnsEverythingOnAndKeepsTheEmitterCount) {
     used.diffuseMaterials = used.triangles = true;
     used.emitterCount = 1;
     const SceneFeatures general = generalFeatures(used);
-    EXPECT_EQ(
-        kinds(general),
-        "diffuse mr baseColorTex mrTex emissiveTex normalTex transmissionTex clearcoat sheen "
-        "clearcoatTex sheenTex mask doubleSided transmission triangles spheres "
-        "emissiveTriangles emissiveSpheres point spot directional environment "
-        "environmentMap | 1");
+    EXPECT_EQ(kinds(general),
+              "diffuse mr baseColorTex mrTex emissiveTex normalTex transmissionTex clearcoat sheen "
+              "clearcoatTex sheenTex mask doubleSided transmission triangles spheres "
+              "emissiveTriangles emissiveSpheres point spot directional environment "
+              "environmentMap | 1");
     EXPECT_TRUE(general.general);
     std::array<bool, FEATURE_COUNT> all{};
     all.fill(true); // the general layout reads a CDF even for one emitter
