@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/captured_load.h"
 #include "prepare/gpu_materials.h"
 #include "scene/gltf_loader.h"
 #include "scene/gltf_textures.h"
@@ -43,17 +44,7 @@ void expectMatrix(const glm::mat3& actual, const glm::mat3& expected) {
 
 // Loads `file` from scenes/loader, with stderr captured into `notes` when given.
 Scene load(const std::string& file, std::string* notes = nullptr) {
-    testing::internal::CaptureStderr();
-    Scene scene;
-    try {
-        scene = loadGltfScene(kLoaderDir + file);
-    } catch (...) {
-        testing::internal::GetCapturedStderr();
-        throw;
-    }
-    const std::string captured = testing::internal::GetCapturedStderr();
-    if (notes != nullptr) *notes = captured;
-    return scene;
+    return test::loadCapturingNotes(kLoaderDir + file, notes);
 }
 
 // The 3 x 2 image of generate_loader_scenes.py (TEXTURE_ROWS) as packed RGBA8, R in the low

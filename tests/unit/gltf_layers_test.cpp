@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/captured_load.h"
 #include "../support/test_directory.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene_features.h"
@@ -19,17 +20,7 @@ const std::string kFeatureDir = VKPT_SCENES_DIR "/test/features/";
 const std::string kToyCar = VKPT_SCENES_DIR "/../../shared/scenes/ToyCar/ToyCar.gltf";
 
 Scene load(const std::string& path, std::string* notes = nullptr) {
-    testing::internal::CaptureStderr();
-    Scene scene;
-    try {
-        scene = loadGltfScene(path);
-    } catch (...) {
-        testing::internal::GetCapturedStderr();
-        throw;
-    }
-    const std::string captured = testing::internal::GetCapturedStderr();
-    if (notes != nullptr) *notes = captured;
-    return scene;
+    return test::loadCapturingNotes(path, notes);
 }
 
 const SceneMaterial& named(const Scene& scene, const std::string& name) {
