@@ -224,8 +224,9 @@ Shading shadeRay(uint i) {
         Vertex vertex;
         vertex.ray = i;
         vertex.record = record;
-        vertex.surface =
-            makeSurfacePoint(hit.triangle, triangleHitOf(hit), record.origin, record.direction);
+        uint instance = featureInstances ? hitInstances[i] : NO_INSTANCE;
+        vertex.surface = makeSurfacePoint(hit.triangle, instance, triangleHitOf(hit), record.origin,
+                                          record.direction);
         PathState before = fetchPathState(record.slot);
         PathState state = before;
         // The segment to this hit crossed the path's medium (Beer–Lambert, shared/volume.h).

@@ -34,5 +34,8 @@ layout(constant_id = FEATURE_TRANSMISSION) const bool featureTransmission = true
 layout(constant_id = FEATURE_CLEARCOAT) const bool featureClearcoat = true;
 // Some material has a KHR_materials_sheen layer.
 layout(constant_id = FEATURE_SHEEN) const bool featureSheen = true;
+// A two-level BVH: the top level's leaves are instances of meshes (shared/instance.h). Not a
+// feature the general kernels add but a layout the scene has or has not, so off by default.
+layout(constant_id = FEATURE_INSTANCES) const bool featureInstances = false;
 
 #endif // VKPT_FEATURES_GLSL

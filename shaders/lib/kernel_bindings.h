@@ -38,9 +38,11 @@
     TEXELS(BINDING_MATERIALS)                                                                      \
     TEXELS(BINDING_TEXTURES)                                                                       \
     TEXELS(BINDING_RAY_TEXELS)                                                                     \
+    TEXELS(BINDING_INSTANCES)                                                                      \
     BUFFER(BINDING_TRIANGLE_UVS, SCENE, vec2, triangleUvs)                                         \
     BUFFER(BINDING_TEXTURE_TEXELS, READ, uint, textureTexels)                                      \
     BUFFER(BINDING_HITS, WRITE, HitRecord, hits)                                                   \
+    BUFFER(BINDING_HIT_INSTANCES, WRITE, uint, hitInstances)                                       \
     BUFFER(BINDING_QUEUE_COUNTERS, READ_WRITE, uint, queueCounters)
 
 #define SHADE_HITS_BINDINGS(UNIFORM, TEXELS, BUFFER)                                               \
@@ -54,6 +56,8 @@
     TEXELS(BINDING_PATH_STATE_TEXELS)                                                              \
     TEXELS(BINDING_RAY_TEXELS)                                                                     \
     TEXELS(BINDING_HIT_TEXELS)                                                                     \
+    TEXELS(BINDING_INSTANCES)                                                                      \
+    BUFFER(BINDING_HIT_INSTANCES, READ, uint, hitInstances)                                        \
     BUFFER(BINDING_TRIANGLE_UVS, SCENE, vec2, triangleUvs)                                         \
     BUFFER(BINDING_TEXTURE_TEXELS, READ, uint, textureTexels)                                      \
     BUFFER(BINDING_EMITTER_CDF, SCENE, float, emitterCdf)                                          \
@@ -72,6 +76,7 @@
     TEXELS(BINDING_MATERIALS)                                                                      \
     TEXELS(BINDING_TEXTURES)                                                                       \
     TEXELS(BINDING_SHADOW_RAY_TEXELS)                                                              \
+    TEXELS(BINDING_INSTANCES)                                                                      \
     BUFFER(BINDING_TRIANGLE_UVS, SCENE, vec2, triangleUvs)                                         \
     BUFFER(BINDING_TEXTURE_TEXELS, READ, uint, textureTexels)                                      \
     BUFFER(BINDING_ENVIRONMENT_TEXELS, READ, vec4, environmentTexels)                              \

@@ -27,6 +27,10 @@ Material sceneMaterial(uint i) {
     return fetchMaterial(i);
 }
 
+Instance sceneInstance(uint i) {
+    return fetchInstance(i);
+}
+
 TextureInfo sceneTexture(uint i) {
     return fetchTextureInfo(i);
 }
@@ -89,6 +93,10 @@ bool sceneHasClearcoat() {
 
 bool sceneHasSheen() {
     return featureSheen;
+}
+
+bool sceneHasInstances() {
+    return featureInstances;
 }
 
 // trace_closest's record of a hit as the shared code takes it.

@@ -11,7 +11,7 @@
 // scene lacks folds away.
 //
 //   Triangle scenePrimitive(uint i)         TriangleNormals sceneNormals(uint i)
-//   TriangleTangents sceneTangents(uint i)
+//   TriangleTangents sceneTangents(uint i)  Instance sceneInstance(uint i)
 //   vec2 sceneUv(uint k)  (3 per primitive) Material sceneMaterial(uint i)
 //   TextureInfo sceneTexture(uint i)        textureTexels[] (texture_sampling.h)
 //   Emitter sceneEmitter(uint i)            uint sceneEmitterCount()
@@ -20,7 +20,7 @@
 //   bool sceneHasMetallicRoughness(), sceneHasTextures(), sceneHasSpheres(),
 //        sceneHasPunctualLights(), sceneHasEnvironment(), sceneHasEmitterCdf(),
 //        sceneHasDoubleSided(), sceneHasNormalMaps(), sceneHasTransmission(),
-//        sceneHasClearcoat(), sceneHasSheen()
+//        sceneHasClearcoat(), sceneHasSheen(), sceneHasInstances()
 #ifndef VKPT_SCENE_VIEW_H
 #define VKPT_SCENE_VIEW_H
 
@@ -38,6 +38,7 @@ struct SceneView {
     std::span<const Triangle> primitives; // triangles and spheres, BVH order
     std::span<const TriangleNormals> normals;
     std::span<const TriangleTangents> tangents; // empty unless FEATURE_NORMAL_MAPS
+    std::span<const Instance> instances;        // empty unless FEATURE_INSTANCES
     std::span<const vec2> uvs;                  // 3 per primitive
     std::span<const Material> materials;
     std::span<const TextureInfo> textures;
@@ -66,6 +67,9 @@ VKPT_FN TriangleNormals sceneNormals(uint i VKPT_SCENE_PARAM) {
 }
 VKPT_FN TriangleTangents sceneTangents(uint i VKPT_SCENE_PARAM) {
     return scene.tangents[i];
+}
+VKPT_FN Instance sceneInstance(uint i VKPT_SCENE_PARAM) {
+    return scene.instances[i];
 }
 VKPT_FN vec2 sceneUv(uint k VKPT_SCENE_PARAM) {
     return scene.uvs[k];
@@ -121,6 +125,9 @@ VKPT_FN bool sceneHasClearcoat(VKPT_SCENE_PARAM_ONLY) {
 }
 VKPT_FN bool sceneHasSheen(VKPT_SCENE_PARAM_ONLY) {
     return scene.features[FEATURE_SHEEN];
+}
+VKPT_FN bool sceneHasInstances(VKPT_SCENE_PARAM_ONLY) {
+    return scene.features[FEATURE_INSTANCES];
 }
 
 } // namespace vkpt::gpu

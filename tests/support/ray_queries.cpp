@@ -17,7 +17,8 @@ namespace vkpt {
 
 struct DeviceRayQueries::State {
     State(GpuContext& c, const PreparedScene& scene, std::uint32_t batch)
-        : context(c), batchSize(batch), deviceScene(uploadScene(c, scene)), buffers(c, batch, 1, 1),
+        : context(c), batchSize(batch), deviceScene(uploadScene(c, scene)),
+          buffers(c, batch, 1, 1, scene.features.instances),
           closestKernel(makeWavefrontKernel(c, WavefrontKernel::TraceClosest, scene.features)),
           shadowKernel(makeWavefrontKernel(c, WavefrontKernel::TraceShadow, scene.features)),
           closestSet(bindWavefrontKernel(closestKernel, WavefrontKernel::TraceClosest, table())),
