@@ -18,6 +18,8 @@ namespace vkpt::gltf {
 namespace {
 
 constexpr const char* kMeshInstancing = "EXT_mesh_gpu_instancing";
+// (tinygltf reads an empty "attributes": {} as no value at all: one message for both.)
+constexpr const char* kNoAttributes = "no attributes (TRANSLATION, ROTATION or SCALE)";
 
 std::string placeOf(int nodeIndex) {
     return "node " + std::to_string(nodeIndex) + ": " + kMeshInstancing;
@@ -33,16 +35,25 @@ const tinygltf::Value* instancingAttributes(const tinygltf::Node& node, int node
     if (extension == nullptr) return nullptr;
     const tinygltf::Value* attributes = findMember(*extension, "attributes");
     if (attributes == nullptr || !attributes->IsObject()) {
-        throw GltfProblem(placeOf(nodeIndex) + ": no attributes object");
+        throw GltfProblem(placeOf(nodeIndex) + ": " + kNoAttributes);
     }
     return attributes;
 }
 
-void requireCount(std::size_t count, std::size_t expected, const char* name, int nodeIndex) {
-    if (count == expected) return;
-    throw GltfProblem(placeOf(nodeIndex) + ": " + name + " has " + std::to_string(count) +
-                      " elements, another attribute " + std::to_string(expected));
-}
+// The attributes' element counts, which must agree: the first one read sets the count.
+struct InstanceCount {
+    std::optional<std::size_t> count;
+    const char* firstName = nullptr;
+
+    void agree(std::size_t size, const char* name, int nodeIndex) {
+        if (count && size != *count) {
+            throw GltfProblem(placeOf(nodeIndex) + ": " + name + " has " + std::to_string(size) +
+                              " elements, " + firstName + " " + std::to_string(*count));
+        }
+        count = size;
+        firstName = name;
+    }
+};
 
 bool isFinite(const glm::dvec4& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
@@ -78,29 +89,25 @@ std::optional<std::vector<glm::dmat4>> meshInstanceTransforms(const tinygltf::Mo
     const int rotationAccessor = attributeAccessor(*attributes, "ROTATION", nodeIndex);
     const int scaleAccessor = attributeAccessor(*attributes, "SCALE", nodeIndex);
     if (translationAccessor < 0 && rotationAccessor < 0 && scaleAccessor < 0) {
-        throw GltfProblem(where + ": none of TRANSLATION, ROTATION and SCALE is given");
+        throw GltfProblem(where + ": " + kNoAttributes);
     }
     std::vector<glm::vec3> translations, scales;
     std::vector<glm::vec4> rotations;
-    std::optional<std::size_t> count;
-    const auto agree = [&](std::size_t size, const char* name) {
-        if (count) requireCount(size, *count, name, nodeIndex);
-        count = size;
-    };
+    InstanceCount count;
     if (translationAccessor >= 0) {
         translations = readPositions(model, translationAccessor, where + " TRANSLATION");
-        agree(translations.size(), "TRANSLATION");
+        count.agree(translations.size(), "TRANSLATION", nodeIndex);
     }
     if (rotationAccessor >= 0) {
         rotations = readRotations(model, rotationAccessor, where + " ROTATION");
-        agree(rotations.size(), "ROTATION");
+        count.agree(rotations.size(), "ROTATION", nodeIndex);
     }
     if (scaleAccessor >= 0) {
         scales = readPositions(model, scaleAccessor, where + " SCALE");
-        agree(scales.size(), "SCALE");
+        count.agree(scales.size(), "SCALE", nodeIndex);
     }
-    std::vector<glm::dmat4> transforms(*count, glm::dmat4(1.0));
-    for (std::size_t i = 0; i < *count; ++i) {
+    std::vector<glm::dmat4> transforms(*count.count, glm::dmat4(1.0));
+    for (std::size_t i = 0; i < *count.count; ++i) {
         glm::dmat4& transform = transforms[i];
         if (!translations.empty()) {
             requireFinite(translations[i], "TRANSLATION", i, nodeIndex);
