@@ -20,7 +20,8 @@ namespace vkpt::test {
 inline SceneMesh meshOfSoup(const std::vector<glm::vec3>& positions, std::uint32_t material) {
     SceneMesh mesh;
     for (std::size_t i = 0; i + 2 < positions.size(); i += 3) {
-        const glm::vec3 n = glm::cross(positions[i + 1] - positions[i], positions[i + 2] - positions[i]);
+        const glm::vec3 n =
+            glm::cross(positions[i + 1] - positions[i], positions[i + 2] - positions[i]);
         const float length = glm::length(n);
         if (!(length > 0.0f)) continue; // the loader leaves zero-area triangles out
         for (std::size_t k = 0; k < 3; ++k) {
@@ -86,7 +87,8 @@ inline Scene instanceWholeScene(const Scene& flat, const glm::dmat4& transform) 
     for (std::size_t t = 0; t < flat.triangleCount(); ++t) {
         const bool emits = flat.materials[flat.materialIndices[t]].emits();
         TriangleSoup& to = emits ? static_cast<TriangleSoup&>(scene) : mesh;
-        const std::size_t order[3] = {0, std::size_t(mirrored ? 2 : 1), std::size_t(mirrored ? 1 : 2)};
+        const bool swap = mirrored && !emits; // emitters stay as they were, in world space
+        const std::size_t order[3] = {0, std::size_t(swap ? 2 : 1), std::size_t(swap ? 1 : 2)};
         for (std::size_t k : order) {
             const std::size_t i = 3 * t + k;
             if (emits) {
@@ -104,10 +106,10 @@ inline Scene instanceWholeScene(const Scene& flat, const glm::dmat4& transform) 
                     const glm::vec4 w = flat.tangents[i];
                     const glm::dvec3 local = glm::inverse(linear) * glm::dvec3(glm::vec3(w));
                     const double length = glm::length(local);
-                    to.tangents.push_back(w.w == 0.0f || !(length > 0.0)
-                                              ? glm::vec4(0.0f)
-                                              : glm::vec4(glm::vec3(local / length),
-                                                          mirrored ? -w.w : w.w));
+                    to.tangents.push_back(
+                        w.w == 0.0f || !(length > 0.0)
+                            ? glm::vec4(0.0f)
+                            : glm::vec4(glm::vec3(local / length), mirrored ? -w.w : w.w));
                 }
             }
             if (texcoords) to.texcoords.push_back(flat.texcoords[i]);
