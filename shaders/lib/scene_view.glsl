@@ -3,7 +3,8 @@
 // records (lib/records.glsl) and the frame's parameters, and the sceneHas* switches as the
 // kernel's specialisation constants (lib/features.glsl), so that code for a feature the scene
 // lacks folds away. The arrays a kernel declares itself are read where they are needed:
-// triangleUvs in lib/materials.glsl, emitterCdf in lib/lights.glsl.
+// triangleUvs and textureTexels in lib/materials.glsl, environmentTexels and environmentCdf in
+// lib/environment.glsl, emitterCdf in lib/lights.glsl.
 #ifndef VKPT_SCENE_VIEW_GLSL
 #define VKPT_SCENE_VIEW_GLSL
 
