@@ -469,7 +469,8 @@ VKPT_FN TriangleHit crossBvhPrimitive(WideWalk walk, Triangle primitive VKPT_BVH
 }
 
 // Tests the current node's remaining leaf primitives; returns a crossing of an alpha-masked
-// primitive for the includer to test (the walk stands just past it), else NO_PRIMITIVE.
+// primitive for the includer to test (the walk stands just past it), else NO_PRIMITIVE. Never
+// at the top level of a two-level walk, whose leaves continueWideWalk enters one by one.
 VKPT_FN PendingCrossing testLeaves(VKPT_INOUT(WideWalk) walk VKPT_BVH_PARAM) {
     PendingCrossing pending;
     pending.primitive = NO_PRIMITIVE;
@@ -477,10 +478,6 @@ VKPT_FN PendingCrossing testLeaves(VKPT_INOUT(WideWalk) walk VKPT_BVH_PARAM) {
         uint index = walk.next;
         ++walk.next;
         if (walk.next == walk.end) takeNextLeaf(walk);
-        if (bvhHasInstances(VKPT_BVH_ARG_ONLY) && walk.instance == NO_INSTANCE) {
-            enterInstance(walk, index VKPT_BVH_ARG); // a top-level leaf holds instances
-            continue;
-        }
         ++walk.primitiveTests;
         Triangle primitive = bvhPrimitive(index VKPT_BVH_ARG);
         TriangleHit h = crossBvhPrimitive(walk, primitive VKPT_BVH_ARG);
@@ -525,6 +522,16 @@ VKPT_FN PendingCrossing continueWideWalk(VKPT_INOUT(WideWalk) walk VKPT_BVH_PARA
     PendingCrossing pending;
     pending.primitive = NO_PRIMITIVE;
     while (walk.depth <= WIDE_BVH_MAX_DEPTH) {
+        // A top-level leaf holds instances: the next one is entered here, in the node loop, so
+        // that the leaf loop below stays the single-level one (lavapipe would run the entry's
+        // code, masked, at every primitive test; docs/gpu.md).
+        if (bvhHasInstances(VKPT_BVH_ARG_ONLY) && walk.instance == NO_INSTANCE &&
+            walk.next < walk.end) {
+            uint index = walk.next;
+            ++walk.next;
+            if (walk.next == walk.end) takeNextLeaf(walk);
+            enterInstance(walk, index VKPT_BVH_ARG);
+        }
         pending = testLeaves(walk VKPT_BVH_ARG);
         if (pending.primitive != NO_PRIMITIVE || walk.depth == WIDE_WALK_DONE) break;
         if (walk.next != walk.end) break; // the leaf loop was cut short

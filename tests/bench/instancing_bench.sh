@@ -54,6 +54,7 @@ for size in "${sizes[@]}"; do
                 hosts+=("$(awk '/Maximum resident set size/ { print $NF / 1024 }' "$work/time.txt")")
                 devices+=("$(json_number "$work/stats.json" deviceMemoryBytes)")
             done
+            printf '\r%*s\r' 60 '' >&2
             placed=$(json_number "$work/stats.json" placedTriangles)
             stored=$(json_number "$work/stats.json" triangles)
             device=$(printf '%s\n' "${devices[@]}" | median)

@@ -14,6 +14,7 @@
 // 2017) branches on the sign of its z, so some paths take the mirror image of their flattened
 // twin: same distribution, other samples. There the images are held equal per pixel by Welch's
 // test (expectSameImage), and vkpt to vkpt-ref at one seed.
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -190,6 +191,48 @@ TEST_P(InstancedScenes, GeneralPlacementRendersTheFlattenedImageInDistribution) 
 
 INSTANTIATE_TEST_SUITE_P(Instancing, InstancedScenes, ::testing::ValuesIn(instancedCases()),
                          nameOf);
+
+// 103 million placed triangles (6,272 spheres of 16,384 triangles and as many boxes), which the
+// default rule instances: the scene takes a few MiB of device memory and renders on lavapipe.
+// Flattened it would need about 11 GB of scene arrays.
+class HundredMillionTriangles : public GpuTest {};
+
+TEST_F(HundredMillionTriangles, RenderInstancedByDefault) {
+    const std::string path = (std::filesystem::current_path() / "hundred_million.gltf").string();
+    InstancedSceneSpec spec;
+    spec.columns = spec.rows = 112;
+    spec.rings = 64;
+    spec.separateBuffer = true;
+    writeInstancedScene(spec, path);
+    LoadOptions options;
+    options.warnUnsupportedExtensions = false;
+    LoadedTestScene loaded{loadGltfScene(path, options), {}};
+    EXPECT_GE(loaded.scene.placedTriangleCount(), 100000000u);
+    EXPECT_LT(loaded.scene.storedTriangleCount(), 20000u);
+    loaded.prepared = prepareScene(loaded.scene);
+    ASSERT_TRUE(loaded.prepared.features.instances);
+    RenderSettings settings = testSettings(32, 1);
+    settings.maxDepth = 2;
+    WavefrontResult result = renderWavefront(
+        context(), loaded.prepared,
+        makeGpuCamera(selectCamera(loaded.scene, std::nullopt), settings.width, settings.height),
+        settings, {});
+    EXPECT_EQ(result.truncatedTraversals, 0u);
+    double total = 0.0;
+    for (const glm::vec3& p : result.output.image.pixels) {
+        ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
+        total += double(p.x + p.y + p.z);
+    }
+    EXPECT_GT(total, 0.0);
+    const std::uint64_t sceneBytes = result.sceneBufferBytes;
+    std::printf("%llu placed triangles, %llu stored, %zu instances: scene buffers %.2f MiB, peak "
+                "device memory %.2f MiB\n",
+                static_cast<unsigned long long>(loaded.scene.placedTriangleCount()),
+                static_cast<unsigned long long>(loaded.scene.storedTriangleCount()),
+                loaded.scene.instances.size(), double(sceneBytes) / 1048576.0,
+                double(context().memoryStats().peakBytes) / 1048576.0);
+    EXPECT_LT(sceneBytes, 16u << 20);
+}
 
 } // namespace
 } // namespace vkpt::test
