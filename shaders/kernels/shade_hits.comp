@@ -224,7 +224,11 @@ Shading shadeRay(uint i) {
         Vertex vertex;
         vertex.ray = i;
         vertex.record = record;
-        uint instance = featureInstances ? hitInstances[i] : NO_INSTANCE;
+#if VKPT_INSTANCES
+        uint instance = hitInstances[i];
+#else
+        uint instance = NO_INSTANCE;
+#endif
         vertex.surface = makeSurfacePoint(hit.triangle, instance, triangleHitOf(hit), record.origin,
                                           record.direction);
         PathState before = fetchPathState(record.slot);

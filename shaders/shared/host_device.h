@@ -55,7 +55,15 @@ using uint = std::uint32_t;
 // C++ builds do not contract a·b − c·d into an FMA unless asked (-ffp-contract=off where it
 // matters); GLSL needs the precise qualifier for the same guarantee.
 #define VKPT_PRECISE
+// The CPU side walks and shades two-level scenes whatever it is given.
+#define VKPT_INSTANCES 1
 #else
+// Kernels are built twice where instances change them (trace_closest, trace_shadow, shade_hits):
+// with -DVKPT_INSTANCES=1 for two-level scenes, and without, so that a scene of one level
+// carries none of that code (lavapipe translates a whole module before it specialises it).
+#ifndef VKPT_INSTANCES
+#define VKPT_INSTANCES 0
+#endif
 #define VKPT_FN
 #define VKPT_INOUT(Type) inout Type
 #define VKPT_PRECISE precise

@@ -38,13 +38,15 @@ struct SurfacePoint {
 
 // Whether the point lies in an instance's mesh, whose data is in the mesh's own space.
 VKPT_FN bool isInstanced(SurfacePoint s VKPT_SCENE_PARAM) {
-    return sceneHasInstances(VKPT_SCENE_ARG_ONLY) && s.instance != NO_INSTANCE;
+    return VKPT_INSTANCES != 0 && sceneHasInstances(VKPT_SCENE_ARG_ONLY) &&
+           s.instance != NO_INSTANCE;
 }
 
 VKPT_FN void fillTriangle(VKPT_INOUT(SurfacePoint) s, Triangle tri, TriangleHit hit,
                           vec3 direction VKPT_SCENE_PARAM) {
     TriangleNormals normals = sceneNormals(s.triangle VKPT_SCENE_ARG);
     bool mirrored = false;
+#if VKPT_INSTANCES
     if (isInstanced(s VKPT_SCENE_ARG)) {
         // The corners and their normals in world space, then on as for a flattened triangle
         // (which the loader transformed the same way, in double).
@@ -57,6 +59,7 @@ VKPT_FN void fillTriangle(VKPT_INOUT(SurfacePoint) s, Triangle tri, TriangleHit 
         normals.n2 = vec4(instanceNormalToWorld(x, vec3(normals.n2)), 0.0f);
         mirrored = (x.flags & INSTANCE_MIRRORED) != 0u;
     }
+#endif
     // Barycentric interpolation keeps the point on the triangle's plane, unlike o + t·d.
     s.position = tri.v0 * (1.0f - hit.u - hit.v) + tri.v1 * hit.u + tri.v2 * hit.v;
     s.coordinateScale = triangleCoordinateScale(tri.v0, tri.v1, tri.v2);
@@ -88,12 +91,16 @@ VKPT_FN void fillSphere(VKPT_INOUT(SurfacePoint) s, Triangle sphere, TriangleHit
 
 // The tangent frame at the hit (normal_mapping.h, interpolatedTangent), in world space.
 VKPT_FN vec4 surfaceTangent(SurfacePoint s, TriangleHit hit VKPT_SCENE_PARAM) {
+#if VKPT_INSTANCES
     if (!isInstanced(s VKPT_SCENE_ARG))
         return interpolatedTangent(s.triangle, hit.u, hit.v VKPT_SCENE_ARG);
     Instance x = sceneInstance(s.instance VKPT_SCENE_ARG);
     TriangleTangents t = sceneTangents(s.triangle VKPT_SCENE_ARG);
     return instanceTangentToWorld(x, t.t0) * (1.0f - hit.u - hit.v) +
            instanceTangentToWorld(x, t.t1) * hit.u + instanceTangentToWorld(x, t.t2) * hit.v;
+#else
+    return interpolatedTangent(s.triangle, hit.u, hit.v VKPT_SCENE_ARG);
+#endif
 }
 
 // The normal texture's shading normal: mapped in the interpolated normal's tangent frame, turned

@@ -189,6 +189,14 @@ struct TopLevelPlace {
     uint end;
 };
 
+// The instance the walk stands in; NO_INSTANCE at the top level, and always in a build without
+// two-level walks.
+#if VKPT_INSTANCES
+#define WALK_INSTANCE(walk) (walk).instance
+#else
+#define WALK_INSTANCE(walk) NO_INSTANCE
+#endif
+
 // depth of a finished walk: the node loop runs while depth <= WIDE_BVH_MAX_DEPTH, so a walk
 // that a driver's loop limit ends early (continueWideWalk) keeps a real depth and reports
 // itself.
@@ -208,12 +216,14 @@ struct WideWalk {
     float v;
     uint primitive;
     uint hitInstance; // the instance of the best crossing; NO_INSTANCE in a single-level walk
+#if VKPT_INSTANCES
     // Two-level walks: the world ray, the instance being walked (NO_INSTANCE at the top level)
     // and where the top level stood.
     vec3 worldOrigin;
     vec3 worldDirection;
     uint instance;
     TopLevelPlace top;
+#endif
     // Where the walk stands.
     WideBitStack stack;
     uint depth;      // levels pushed; WIDE_WALK_DONE once finished
@@ -379,6 +389,7 @@ VKPT_FN WideWalk beginWideWalk(vec3 origin, vec3 direction, float tMin, float tM
     walk.v = 0.0f;
     walk.primitive = NO_PRIMITIVE;
     walk.hitInstance = NO_INSTANCE;
+#if VKPT_INSTANCES
     walk.worldOrigin = origin;
     walk.worldDirection = direction;
     walk.instance = NO_INSTANCE;
@@ -390,6 +401,7 @@ VKPT_FN WideWalk beginWideWalk(vec3 origin, vec3 direction, float tMin, float tM
     walk.top.leaves = 0u;
     walk.top.next = 0u;
     walk.top.end = 0u;
+#endif
     walk.stack.words = uvec4(0u);
     walk.stack.overflow = uvec4(0u);
     walk.depth = 0u;
@@ -417,10 +429,11 @@ VKPT_FN void takeCrossing(VKPT_INOUT(WideWalk) walk, TriangleHit h, uint primiti
     walk.u = h.u;
     walk.v = h.v;
     walk.primitive = primitive;
-    walk.hitInstance = walk.instance;
+    walk.hitInstance = WALK_INSTANCE(walk);
     if (walk.stopAtFirst) finishWideWalk(walk);
 }
 
+#if VKPT_INSTANCES
 // From a top-level leaf into instance `index`: keeps the top level's place, moves the ray into
 // the mesh's space and visits the mesh's root, whose first leaf becomes the current one.
 VKPT_FN void enterInstance(VKPT_INOUT(WideWalk) walk, uint index VKPT_BVH_PARAM) {
@@ -456,6 +469,7 @@ VKPT_FN void leaveInstance(VKPT_INOUT(WideWalk) walk VKPT_BVH_PARAM) {
     walk.end = walk.top.end;
     walk.entriesCurrent = false; // the entries were the instance's nodes'
 }
+#endif // VKPT_INSTANCES
 
 // The primitive's crossing within (tMin, best t], or within the ray's (tMin, tMax) before the
 // first (crossingPrecedes decides the ties).
@@ -481,7 +495,7 @@ VKPT_FN PendingCrossing testLeaves(VKPT_INOUT(WideWalk) walk VKPT_BVH_PARAM) {
         ++walk.primitiveTests;
         Triangle primitive = bvhPrimitive(index VKPT_BVH_ARG);
         TriangleHit h = crossBvhPrimitive(walk, primitive VKPT_BVH_ARG);
-        if (!h.hit || !instancedCrossingPrecedes(h.t, walk.instance, index, walk.t,
+        if (!h.hit || !instancedCrossingPrecedes(h.t, WALK_INSTANCE(walk), index, walk.t,
                                                  walk.hitInstance, walk.primitive))
             continue;
         // Marked at load time (PRIMITIVE_ALPHA_MASKED): no material read per crossing.
@@ -525,6 +539,7 @@ VKPT_FN PendingCrossing continueWideWalk(VKPT_INOUT(WideWalk) walk VKPT_BVH_PARA
         // A top-level leaf holds instances: the next one is entered here, in the node loop, so
         // that the leaf loop below stays the single-level one (lavapipe would run the entry's
         // code, masked, at every primitive test; docs/gpu.md).
+#if VKPT_INSTANCES
         if (bvhHasInstances(VKPT_BVH_ARG_ONLY) && walk.instance == NO_INSTANCE &&
             walk.next < walk.end) {
             uint index = walk.next;
@@ -532,6 +547,7 @@ VKPT_FN PendingCrossing continueWideWalk(VKPT_INOUT(WideWalk) walk VKPT_BVH_PARA
             if (walk.next == walk.end) takeNextLeaf(walk);
             enterInstance(walk, index VKPT_BVH_ARG);
         }
+#endif
         pending = testLeaves(walk VKPT_BVH_ARG);
         if (pending.primitive != NO_PRIMITIVE || walk.depth == WIDE_WALK_DONE) break;
         if (walk.next != walk.end) break; // the leaf loop was cut short
@@ -539,10 +555,12 @@ VKPT_FN PendingCrossing continueWideWalk(VKPT_INOUT(WideWalk) walk VKPT_BVH_PARA
         if (walk.pending == 0u) {
             // At a root the tree is done; elsewhere the climb was cut short.
             if (WIDE_HEADER_PARENT(walk.header) != BVH_END) break;
+#if VKPT_INSTANCES
             if (bvhHasInstances(VKPT_BVH_ARG_ONLY) && walk.instance != NO_INSTANCE) {
                 leaveInstance(walk VKPT_BVH_ARG); // an instance's root: on with the top level
                 continue;
             }
+#endif
             finishWideWalk(walk);
             break;
         }
