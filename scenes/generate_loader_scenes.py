@@ -368,6 +368,17 @@ def instancing():
     return gltf
 
 
+def instancing_far():
+    # A triangle mesh whose vertices lie a million units from its own origin, placed by two
+    # nodes that bring it back near the world's: kept once, it is measured from its centre.
+    gltf = Gltf()
+    far = [(1e6 + x, y, z) for x, y, z in TRIANGLE_POSITIONS]
+    mesh = gltf.mesh([primitive(gltf.positions(far))], name="far")
+    gltf.scene([gltf.node(name="near_a", mesh=mesh, translation=[-1e6, 0, 0]),
+                gltf.node(name="near_b", mesh=mesh, translation=[-1e6, 2, 0])])
+    return gltf
+
+
 def default_scene():
     gltf = Gltf()
     mesh = gltf.mesh([primitive(gltf.positions(TRIANGLE_POSITIONS))])
@@ -663,6 +674,8 @@ VALID_SCENES = [
     ("instancing.gltf", instancing, write_embedded,
      "a triangle mesh placed by two nodes, a mirrored node and three EXT_mesh_gpu_instancing "
      "instances; an emissive quad mesh placed twice"),
+    ("instancing_far.gltf", instancing_far, write_embedded,
+     "a triangle mesh 1e6 from its own origin, placed near the world's origin by two nodes"),
 ]
 
 

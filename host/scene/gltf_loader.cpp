@@ -107,7 +107,9 @@ private:
         // Emitters stay in world space at every placement (light sampling lists each one).
         appendPrimitives(meshIndex, placement, PrimitiveKinds::Emitting, scene_);
         const std::optional<std::uint32_t> slot = meshSlot(meshIndex);
-        if (slot) scene_.instances.push_back({*slot, placement});
+        if (!slot) return;
+        const glm::dvec3 origin = scene_.meshes[*slot].origin;
+        scene_.instances.push_back({*slot, placement * glm::translate(glm::dmat4(1.0), origin)});
     }
 
     // The mesh's own copy in Scene::meshes, read at its first placement; nullopt when it has no
@@ -121,12 +123,29 @@ private:
         mesh.name = "mesh " + std::to_string(meshIndex) +
                     (source.name.empty() ? "" : " (" + source.name + ")");
         appendPrimitives(meshIndex, glm::dmat4(1.0), PrimitiveKinds::NotEmitting, mesh);
+        recentre(mesh);
         slot = std::optional<std::uint32_t>();
         if (mesh.triangleCount() > 0) {
             *slot = static_cast<std::uint32_t>(scene_.meshes.size());
             scene_.meshes.push_back(std::move(mesh));
         }
         return *slot;
+    }
+
+    // Moves the mesh's positions to be measured from its centre when that lies far from its
+    // origin (gltf::chooseWorldOrigin's rule), in double: the file's floats there are as coarse
+    // as they are, but the rays moved into this space are then as fine as the mesh is small.
+    static void recentre(SceneMesh& mesh) {
+        if (mesh.positions.empty()) return;
+        gltf::WorldExtent extent{glm::dvec3(mesh.positions[0]), glm::dvec3(mesh.positions[0])};
+        for (const glm::vec3& p : mesh.positions) {
+            extent.min = glm::min(extent.min, glm::dvec3(p));
+            extent.max = glm::max(extent.max, glm::dvec3(p));
+        }
+        mesh.origin = gltf::chooseWorldOrigin(extent);
+        if (mesh.origin == glm::dvec3(0.0)) return;
+        for (glm::vec3& p : mesh.positions)
+            p = glm::vec3(glm::dvec3(p) - mesh.origin);
     }
 
     enum class PrimitiveKinds { All, Emitting, NotEmitting };

@@ -185,6 +185,11 @@ struct TriangleSoup {
 // emitter in world space, so they are flattened into the scene's own soup at each placement.
 struct SceneMesh : TriangleSoup {
     std::string name; // "mesh 3 (name)", for messages and statistics
+    // The point of the file's mesh space that positions are measured from: the mesh's centre
+    // when it lies far from its own origin relative to its size (as the loader recentres a
+    // whole scene: Scene::worldOrigin), so that rays moved into this space keep float
+    // precision. Instances place the recentred mesh (their transforms include the move).
+    glm::dvec3 origin{0.0};
 };
 
 // One placement of a SceneMesh: its vertices are objectToWorld × the mesh's positions.

@@ -100,6 +100,26 @@ TEST(GltfInstancing, BoundsOfInstancesHoldTheFlattenedBounds) {
     }
 }
 
+// A mesh a million units from its own origin is kept measured from its centre, so that rays in
+// its space keep float precision, and its instances still place it where flattening does.
+TEST(GltfInstancing, MeshFarFromItsOwnOriginIsRecentred) {
+    LoadOptions options;
+    options.instancing = Instancing::Off;
+    const Scene flat = loadGltfScene(VKPT_SCENES_DIR "/loader/instancing_far.gltf", options);
+    options.instancing = Instancing::On;
+    const Scene instanced = loadGltfScene(VKPT_SCENES_DIR "/loader/instancing_far.gltf", options);
+    ASSERT_EQ(instanced.meshes.size(), 1u);
+    const SceneMesh& mesh = instanced.meshes[0];
+    EXPECT_NEAR(mesh.origin.x, 1e6, 1.0);
+    for (const glm::vec3& p : mesh.positions)
+        EXPECT_LT(glm::length(p), 2.0f);
+    ASSERT_EQ(instanced.instances.size(), 2u);
+    for (std::size_t i = 0; i < 2; ++i)
+        for (std::size_t k = 0; k < 3; ++k)
+            expectNear(place(instanced.instances[i].objectToWorld, mesh.positions[k]),
+                       flat.positions[3 * i + k], 1e-6f);
+}
+
 // The plan counts placements and triangles from the node tree and accessor counts alone.
 TEST(GltfInstancingPlan, CountsPlacementsAndTriangles) {
     tinygltf::Model model;
