@@ -368,7 +368,6 @@ VKPT_FN void visitNode(VKPT_INOUT(WideWalk) walk, uint index VKPT_BVH_PARAM) {
     takeNextLeaf(walk);
 }
 
-// A walk of (tMin, tMax), standing at the root's children; continueWideWalk does the rest.
 // Points the walk's ray (origin, direction and what is derived from them) at a space.
 VKPT_FN void aimWalk(VKPT_INOUT(WideWalk) walk, vec3 origin, vec3 direction) {
     walk.origin = origin;
@@ -378,6 +377,7 @@ VKPT_FN void aimWalk(VKPT_INOUT(WideWalk) walk, vec3 origin, vec3 direction) {
     walk.sheared = shearRay(direction);
 }
 
+// A walk of (tMin, tMax), standing at the root's children; continueWideWalk does the rest.
 VKPT_FN WideWalk beginWideWalk(vec3 origin, vec3 direction, float tMin, float tMax,
                                bool stopAtFirst VKPT_BVH_PARAM) {
     WideWalk walk;

@@ -196,6 +196,14 @@ TEST(TwoLevelTraverse, AllWalksAgreeOnManyPlacementsOfOneMesh) {
     checkWalksAgree(test::randomInstancedScene({synthetic::closedCube(2)}, 200, 23));
 }
 
+// One instance and no geometry of the scene's own: a top level of a single leaf.
+TEST(TwoLevelTraverse, AllWalksAgreeOnASingleInstance) {
+    Scene scene = test::randomInstancedScene({synthetic::displacedSphere(6, 12)}, 1, 7);
+    static_cast<TriangleSoup&>(scene) = TriangleSoup{};
+    scene.instances.resize(1);
+    checkWalksAgree(scene);
+}
+
 // Two placements at the very same place cross every ray at the same t: the lower instance wins,
 // whichever the walk meets first.
 TEST(TwoLevelTraverse, CoincidentPlacementsTieToTheLowerInstance) {
