@@ -6,50 +6,34 @@ namespace vkpt {
 
 namespace {
 
-class StackIntersector final : public SceneIntersector {
+// One thread's queries on a layout `Bvh` (one level or two), through its walks.
+template <typename Bvh, ClosestHit (*kClosest)(const Bvh&, const RayQuery&, TraversalCounters*),
+          bool (*kAny)(const Bvh&, const RayQuery&, TraversalCounters*)>
+class LayoutIntersector final : public SceneIntersector {
 public:
-    StackIntersector(const StackBvh& bvh, const HitFilter* filter) : bvh_(bvh), filter_(filter) {}
+    LayoutIntersector(const Bvh& bvh, const HitFilter* filter) : bvh_(bvh), filter_(filter) {}
 
     ClosestHit closestHit(const glm::vec3& origin, const glm::vec3& direction) override {
         RayQuery query{origin, direction, 0.0f, VKPT_FAR, filter_};
-        return closestHitStack(bvh_, query, &counters_);
+        return kClosest(bvh_, query, &counters_);
     }
 
     bool occluded(const glm::vec3& origin, const glm::vec3& direction, float tMax) override {
         RayQuery query{origin, direction, 0.0f, tMax, filter_};
-        return anyHitStack(bvh_, query, &counters_);
+        return kAny(bvh_, query, &counters_);
     }
 
     TraversalCounters traversal() const override { return counters_; }
 
 private:
-    const StackBvh& bvh_;
+    const Bvh& bvh_;
     const HitFilter* filter_;
     TraversalCounters counters_;
 };
 
-class TwoLevelStackIntersector final : public SceneIntersector {
-public:
-    TwoLevelStackIntersector(const TwoLevelStackBvh& bvh, const HitFilter* filter)
-        : bvh_(bvh), filter_(filter) {}
-
-    ClosestHit closestHit(const glm::vec3& origin, const glm::vec3& direction) override {
-        RayQuery query{origin, direction, 0.0f, VKPT_FAR, filter_};
-        return closestHitTwoLevel(bvh_, query, &counters_);
-    }
-
-    bool occluded(const glm::vec3& origin, const glm::vec3& direction, float tMax) override {
-        RayQuery query{origin, direction, 0.0f, tMax, filter_};
-        return anyHitTwoLevel(bvh_, query, &counters_);
-    }
-
-    TraversalCounters traversal() const override { return counters_; }
-
-private:
-    const TwoLevelStackBvh& bvh_;
-    const HitFilter* filter_;
-    TraversalCounters counters_;
-};
+using StackIntersector = LayoutIntersector<StackBvh, closestHitStack, anyHitStack>;
+using TwoLevelStackIntersector =
+    LayoutIntersector<TwoLevelStackBvh, closestHitTwoLevel, anyHitTwoLevel>;
 
 } // namespace
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app/command_line.h"
+#include "app/run_program.h"
 #include "common/errors.h"
 #include "instanced_scene.h"
 
@@ -43,13 +44,5 @@ int writeScene(int argc, char** argv) {
 } // namespace
 
 int main(int argc, char** argv) {
-    try {
-        return writeScene(argc, argv);
-    } catch (const vkpt::InputError& error) {
-        std::fprintf(stderr, "%s: error: %s\n", kProgram, error.what());
-        return 1;
-    } catch (const std::exception& error) {
-        std::fprintf(stderr, "%s: error: %s\n", kProgram, error.what());
-        return 3;
-    }
+    return vkpt::runProgram(kProgram, [argc, argv] { return writeScene(argc, argv); });
 }

@@ -1,18 +1,17 @@
-// instanced_scene.cpp — writes the instancing test scene with tinygltf.
+// instanced_scene.cpp — writes the instancing test scene with the tests' glTF writer.
 #include "instanced_scene.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <numbers>
-#include <stdexcept>
+#include <numeric>
 #include <vector>
 
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
-#include <tiny_gltf.h>
 
 #include "bvh/synthetic_scenes.h"
+#include "gltf_writer.h"
 
 namespace vkpt::test {
 
@@ -21,152 +20,15 @@ namespace {
 constexpr float kSpacing = 2.5f; // between placements' centres
 constexpr std::uint32_t kBoxCells = 2;
 
-class Writer {
-public:
-    Writer() {
-        model_.asset.version = "2.0";
-        model_.asset.generator = "vkpt tests: instanced scene";
-        model_.buffers.emplace_back();
-        model_.scenes.emplace_back();
-        model_.defaultScene = 0;
-    }
-
-    int material(glm::vec3 albedo, glm::vec3 emission, float metallic, float roughness) {
-        tinygltf::Material m;
-        m.pbrMetallicRoughness.baseColorFactor = {albedo.x, albedo.y, albedo.z, 1.0};
-        m.pbrMetallicRoughness.metallicFactor = metallic;
-        m.pbrMetallicRoughness.roughnessFactor = roughness;
-        const double strength =
-            std::max({1.0, double(emission.x), double(emission.y), double(emission.z)});
-        m.emissiveFactor = {emission.x / strength, emission.y / strength, emission.z / strength};
-        if (strength > 1.0) {
-            tinygltf::Value::Object emissive;
-            emissive["emissiveStrength"] = tinygltf::Value(strength);
-            m.extensions["KHR_materials_emissive_strength"] = tinygltf::Value(emissive);
-            used("KHR_materials_emissive_strength");
-        }
-        model_.materials.push_back(m);
-        return int(model_.materials.size() - 1);
-    }
-
-    // A mesh of one primitive from a soup of three positions per triangle (flat normals, which
-    // the loader generates).
-    int mesh(const std::vector<glm::vec3>& soup, int material) {
-        tinygltf::Primitive primitive;
-        primitive.mode = TINYGLTF_MODE_TRIANGLES;
-        primitive.material = material;
-        primitive.attributes["POSITION"] = vec3Accessor(soup, true);
-        tinygltf::Mesh mesh;
-        mesh.primitives.push_back(primitive);
-        model_.meshes.push_back(mesh);
-        return int(model_.meshes.size() - 1);
-    }
-
-    void node(int mesh, glm::vec3 translation, glm::quat rotation, glm::vec3 scale) {
-        tinygltf::Node node;
-        node.mesh = mesh;
-        node.translation = {translation.x, translation.y, translation.z};
-        node.rotation = {rotation.x, rotation.y, rotation.z, rotation.w};
-        node.scale = {scale.x, scale.y, scale.z};
-        root(node);
-    }
-
-    void instancedNode(int mesh, const std::vector<glm::vec3>& translations,
-                       const std::vector<glm::quat>& rotations,
-                       const std::vector<glm::vec3>& scales) {
-        std::vector<glm::vec4> quaternions;
-        for (const glm::quat& q : rotations)
-            quaternions.emplace_back(q.x, q.y, q.z, q.w);
-        tinygltf::Value::Object attributes;
-        attributes["TRANSLATION"] = tinygltf::Value(vec3Accessor(translations, false));
-        attributes["ROTATION"] = tinygltf::Value(vec4Accessor(quaternions));
-        attributes["SCALE"] = tinygltf::Value(vec3Accessor(scales, false));
-        tinygltf::Value::Object extension;
-        extension["attributes"] = tinygltf::Value(attributes);
-        tinygltf::Node node;
-        node.mesh = mesh;
-        node.extensions["EXT_mesh_gpu_instancing"] = tinygltf::Value(extension);
-        used("EXT_mesh_gpu_instancing");
-        root(node);
-    }
-
-    void camera(glm::vec3 position, glm::quat rotation) {
-        tinygltf::Camera camera;
-        camera.type = "perspective";
-        camera.perspective.yfov = 0.8;
-        camera.perspective.znear = 0.01;
-        model_.cameras.push_back(camera);
-        tinygltf::Node node;
-        node.camera = int(model_.cameras.size() - 1);
-        node.translation = {position.x, position.y, position.z};
-        node.rotation = {rotation.x, rotation.y, rotation.z, rotation.w};
-        root(node);
-    }
-
-    void write(const std::string& path, bool separateBuffer) {
-        tinygltf::TinyGLTF io;
-        if (!io.WriteGltfSceneToFile(&model_, path, false, !separateBuffer, true, false))
-            throw std::runtime_error("cannot write " + path);
-    }
-
-private:
-    void used(const char* name) {
-        for (const std::string& u : model_.extensionsUsed)
-            if (u == name) return;
-        model_.extensionsUsed.emplace_back(name);
-    }
-
-    void root(const tinygltf::Node& node) {
-        model_.nodes.push_back(node);
-        model_.scenes[0].nodes.push_back(int(model_.nodes.size() - 1));
-    }
-
-    int view(const void* bytes, std::size_t size, int target) {
-        std::vector<unsigned char>& data = model_.buffers[0].data;
-        tinygltf::BufferView view;
-        view.buffer = 0;
-        view.byteOffset = data.size();
-        view.byteLength = size;
-        view.target = target;
-        data.resize(data.size() + size);
-        std::memcpy(data.data() + view.byteOffset, bytes, size);
-        model_.bufferViews.push_back(view);
-        return int(model_.bufferViews.size() - 1);
-    }
-
-    // POSITION accessors carry min and max, as glTF requires.
-    int vec3Accessor(const std::vector<glm::vec3>& values, bool positions) {
-        tinygltf::Accessor accessor;
-        accessor.bufferView = view(values.data(), values.size() * sizeof(glm::vec3),
-                                   positions ? TINYGLTF_TARGET_ARRAY_BUFFER : 0);
-        accessor.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
-        accessor.count = values.size();
-        accessor.type = TINYGLTF_TYPE_VEC3;
-        if (positions) {
-            glm::vec3 lo(values[0]), hi(values[0]);
-            for (const glm::vec3& v : values) {
-                lo = glm::min(lo, v);
-                hi = glm::max(hi, v);
-            }
-            accessor.minValues = {lo.x, lo.y, lo.z};
-            accessor.maxValues = {hi.x, hi.y, hi.z};
-        }
-        model_.accessors.push_back(accessor);
-        return int(model_.accessors.size() - 1);
-    }
-
-    int vec4Accessor(const std::vector<glm::vec4>& values) {
-        tinygltf::Accessor accessor;
-        accessor.bufferView = view(values.data(), values.size() * sizeof(glm::vec4), 0);
-        accessor.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
-        accessor.count = values.size();
-        accessor.type = TINYGLTF_TYPE_VEC4;
-        model_.accessors.push_back(accessor);
-        return int(model_.accessors.size() - 1);
-    }
-
-    tinygltf::Model model_;
-};
+// A mesh of a soup of three positions per triangle (flat normals, which the loader generates).
+MeshData soupMesh(std::vector<glm::vec3> soup, int material) {
+    MeshData mesh;
+    mesh.indices.resize(soup.size());
+    std::iota(mesh.indices.begin(), mesh.indices.end(), 0u);
+    mesh.positions = std::move(soup);
+    mesh.material = material;
+    return mesh;
+}
 
 std::vector<glm::vec3> quad(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d) {
     return {a, b, c, a, c, d};
@@ -178,6 +40,10 @@ std::vector<glm::vec3> centredBox() {
     for (glm::vec3& p : box)
         p = p / float(kBoxCells) - glm::vec3(0.5f);
     return box;
+}
+
+glm::vec4 xyzw(const glm::quat& q) {
+    return {q.x, q.y, q.z, q.w};
 }
 
 // Placement i of the grid: where, turned how far, scaled how (mirrored in x for every third
@@ -218,28 +84,27 @@ std::uint64_t instancedScenePlacedTriangles(const InstancedSceneSpec& spec) {
 }
 
 void writeInstancedScene(const InstancedSceneSpec& spec, const std::string& path) {
-    Writer w;
-    const int floorMaterial = w.material(glm::vec3(0.6f), glm::vec3(0.0f), 0.0f, 1.0f);
-    const int lightMaterial = w.material(glm::vec3(0.0f), glm::vec3(12.0f), 0.0f, 1.0f);
-    const int sphereMaterial =
-        w.material(glm::vec3(0.8f, 0.75f, 0.6f), glm::vec3(0.0f), 0.0f, 0.6f);
-    const int boxMaterial = w.material(glm::vec3(0.7f, 0.3f, 0.25f), glm::vec3(0.0f), 0.3f, 0.4f);
+    GltfWriter w;
+    const int floorMaterial = w.addMaterial(glm::vec3(0.6f));
+    const int lightMaterial = w.addMaterial(glm::vec3(0.0f), glm::vec3(12.0f));
+    const int sphereMaterial = w.addMaterial(glm::vec3(0.8f, 0.75f, 0.6f));
+    const int boxMaterial = w.addMaterial(glm::vec3(0.7f, 0.3f, 0.25f));
 
     const float half = 0.5f * kSpacing * float(std::max(spec.columns, spec.rows)) + 2.0f;
-    w.node(w.mesh(quad({-half, 0, -half}, {-half, 0, half}, {half, 0, half}, {half, 0, -half}),
-                  floorMaterial),
-           glm::vec3(0.0f), glm::quat(1, 0, 0, 0), glm::vec3(1.0f));
+    w.addMesh(soupMesh(quad({-half, 0, -half}, {-half, 0, half}, {half, 0, half}, {half, 0, -half}),
+                       floorMaterial));
     // One emissive mesh, facing down, placed twice.
-    const int light = w.mesh(quad({-1, 0, -1}, {1, 0, -1}, {1, 0, 1}, {-1, 0, 1}), lightMaterial);
+    const int light = w.addMeshData(
+        soupMesh(quad({-1, 0, -1}, {1, 0, -1}, {1, 0, 1}, {-1, 0, 1}), lightMaterial));
     const float height = 0.6f * half + 3.0f;
-    w.node(light, glm::vec3(-0.3f * half, height, 0.0f), glm::quat(1, 0, 0, 0), glm::vec3(1.0f));
-    w.node(light, glm::vec3(0.3f * half, height, 0.0f), glm::quat(1, 0, 0, 0), glm::vec3(1.0f));
+    w.addMeshNode(light, glm::vec3(-0.3f * half, height, 0.0f));
+    w.addMeshNode(light, glm::vec3(0.3f * half, height, 0.0f));
 
-    const int sphere =
-        w.mesh(synthetic::displacedSphere(spec.rings, 2 * spec.rings), sphereMaterial);
-    const int box = w.mesh(centredBox(), boxMaterial);
+    const int sphere = w.addMeshData(
+        soupMesh(synthetic::displacedSphere(spec.rings, 2 * spec.rings), sphereMaterial));
+    const int box = w.addMeshData(soupMesh(centredBox(), boxMaterial));
     std::vector<glm::vec3> translations, scales;
-    std::vector<glm::quat> rotations;
+    std::vector<glm::vec4> rotations;
     const std::uint32_t count = spec.columns * spec.rows;
     for (std::uint32_t i = 0; i < count; ++i) {
         const Placement p = placementOf(spec, i);
@@ -248,19 +113,19 @@ void writeInstancedScene(const InstancedSceneSpec& spec, const std::string& path
         const glm::vec3 scale = isSphere ? 0.5f * p.scale : p.scale;
         if (isSphere && spec.gpuInstancing && (i / 2) % 2 == 1) {
             translations.push_back(p.translation);
-            rotations.push_back(p.rotation);
+            rotations.push_back(xyzw(p.rotation));
             scales.push_back(scale);
             continue;
         }
-        w.node(isSphere ? sphere : box, p.translation, p.rotation, scale);
+        w.addMeshNode(isSphere ? sphere : box, p.translation, xyzw(p.rotation), scale);
     }
-    if (!translations.empty()) w.instancedNode(sphere, translations, rotations, scales);
+    if (!translations.empty()) w.addInstancedMeshNode(sphere, translations, rotations, scales);
     // Above the near edge, looking down at the field's centre.
     const glm::vec3 eye(0.0f, 0.55f * half + 2.0f, 1.1f * half + 2.0f);
-    const glm::vec3 forward = glm::normalize(-eye);
-    const glm::quat look = glm::quatLookAtRH(forward, glm::vec3(0, 1, 0));
-    w.camera(eye, look);
-    w.write(path, spec.separateBuffer);
+    const glm::quat look = glm::quatLookAtRH(glm::normalize(-eye), glm::vec3(0, 1, 0));
+    w.addCamera(eye, 0.8, xyzw(look));
+    w.write(path,
+            spec.separateBuffer ? GltfWriter::Buffers::Separate : GltfWriter::Buffers::Embedded);
 }
 
 } // namespace vkpt::test

@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/ray_description.h"
+
 #include "../support/instancing.h"
 #include "bvh/bvh_traverse.h"
 #include "bvh/wide_traverse.h"
@@ -51,8 +53,8 @@ ClosestHit bruteForce(const TwoLevelScene& s, const RayQuery& ray) {
              ++p) {
             const gpu::Triangle& tri = s.prepared.triangles[p];
             const float tMax = best.hit ? gpu::nextFloatUp(best.t) : best.t;
-            gpu::TriangleHit h = gpu::intersectTriangle(origin, direction, tri.v0, tri.v1, tri.v2,
-                                                        ray.tMin, tMax);
+            gpu::TriangleHit h =
+                gpu::intersectTriangle(origin, direction, tri.v0, tri.v1, tri.v2, ray.tMin, tMax);
             if (!h.hit || !gpu::instancedCrossingPrecedes(h.t, i, p, best.t, best.instance,
                                                           best.hit ? best.triangle : NO_PRIMITIVE))
                 continue;
@@ -62,36 +64,27 @@ ClosestHit bruteForce(const TwoLevelScene& s, const RayQuery& ray) {
     return best.hit ? best : ClosestHit{};
 }
 
-std::string describe(const RayQuery& ray) {
-    std::ostringstream s;
-    s << std::setprecision(9) << "ray o=(" << ray.origin.x << ", " << ray.origin.y << ", "
-      << ray.origin.z << ") d=(" << ray.direction.x << ", " << ray.direction.y << ", "
-      << ray.direction.z << ") t in (" << ray.tMin << ", " << ray.tMax << ")";
-    return s.str();
-}
-
 // The crossing of placed triangle (instance, primitive) at t, by the walks' arithmetic.
 bool crossesAt(const TwoLevelScene& s, const RayQuery& ray, std::uint32_t instance,
                std::uint32_t primitive, float t) {
     const gpu::Instance& x = s.prepared.instances[instance];
     const gpu::Triangle& tri = s.prepared.triangles[primitive];
     gpu::TriangleHit h = gpu::intersectTriangle(gpu::instanceRayOrigin(x, ray.origin),
-                                                gpu::instanceRayDirection(x, ray.direction),
-                                                tri.v0, tri.v1, tri.v2, ray.tMin,
-                                                gpu::nextFloatUp(t));
+                                                gpu::instanceRayDirection(x, ray.direction), tri.v0,
+                                                tri.v1, tri.v2, ray.tMin, gpu::nextFloatUp(t));
     return h.hit && h.t == t;
 }
 
 // Equal hits: both miss, or both at exactly the same t on the same placed triangle with the
 // same barycentrics, or on two placed triangles that really tie there (a walk may pass over a
 // box entered just beyond the best t that holds a tying crossing: bvh_traverse_test.cpp).
-::testing::AssertionResult sameHit(const TwoLevelScene& s, const RayQuery& ray,
-                                   const ClosestHit& a, const ClosestHit& b) {
+::testing::AssertionResult sameHit(const TwoLevelScene& s, const RayQuery& ray, const ClosestHit& a,
+                                   const ClosestHit& b) {
     if (a.hit != b.hit) return ::testing::AssertionFailure() << "hit " << a.hit << " vs " << b.hit;
     if (!a.hit) return ::testing::AssertionSuccess();
     if (a.t != b.t)
-        return ::testing::AssertionFailure() << std::setprecision(9) << "t " << a.t << " vs "
-                                             << b.t;
+        return ::testing::AssertionFailure()
+               << std::setprecision(9) << "t " << a.t << " vs " << b.t;
     if (a.triangle == b.triangle && a.instance == b.instance) {
         if (a.u == b.u && a.v == b.v) return ::testing::AssertionSuccess();
         return ::testing::AssertionFailure() << "same triangle, different barycentrics";
@@ -99,19 +92,19 @@ bool crossesAt(const TwoLevelScene& s, const RayQuery& ray, std::uint32_t instan
     if (crossesAt(s, ray, a.instance, a.triangle, a.t) &&
         crossesAt(s, ray, b.instance, b.triangle, b.t))
         return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << "instance " << a.instance << " triangle " << a.triangle
-                                         << " vs instance " << b.instance << " triangle "
-                                         << b.triangle << ": no tie";
+    return ::testing::AssertionFailure()
+           << "instance " << a.instance << " triangle " << a.triangle << " vs instance "
+           << b.instance << " triangle " << b.triangle << ": no tie";
 }
 
 // Random rays as bvh_traverse_test makes them, rays aimed at the placements (most of the scene's
 // volume is empty), and axis-parallel ones whose zero components are −0 or +0 at random.
 class RayMaker {
 public:
-    explicit RayMaker(const TwoLevelScene& s)
-        : rng_(99), lo_(s.bounds.min), hi_(s.bounds.max) {
+    explicit RayMaker(const TwoLevelScene& s) : rng_(99), lo_(s.bounds.min), hi_(s.bounds.max) {
         for (const gpu::Instance& x : s.prepared.instances)
-            targets_.push_back(glm::vec3(x.objectToWorld0.w, x.objectToWorld1.w, x.objectToWorld2.w));
+            targets_.push_back(
+                glm::vec3(x.objectToWorld0.w, x.objectToWorld1.w, x.objectToWorld2.w));
     }
 
     RayQuery next() {
@@ -159,24 +152,24 @@ void checkWalksAgree(const Scene& scene) {
     for (int i = 0; i < kRays; ++i) {
         const RayQuery ray = rays.next();
         const ClosestHit stack = closestHitTwoLevel(s.stack, ray);
-        const ClosestHit wide = closestHitWide(s.prepared.nodes, s.prepared.triangles,
-                                               s.prepared.instances, ray);
+        const ClosestHit wide =
+            closestHitWide(s.prepared.nodes, s.prepared.triangles, s.prepared.instances, ray);
         hits += stack.hit ? 1 : 0;
-        EXPECT_TRUE(sameHit(s, ray, stack, wide)) << "stack vs wide, " << describe(ray);
+        EXPECT_TRUE(sameHit(s, ray, stack, wide)) << "stack vs wide, " << test::describeRay(ray);
         if (i < kBruteForceRays) {
             EXPECT_TRUE(sameHit(s, ray, bruteForce(s, ray), stack))
-                << "brute force vs stack, " << describe(ray);
+                << "brute force vs stack, " << test::describeRay(ray);
         }
-        EXPECT_EQ(anyHitTwoLevel(s.stack, ray), stack.hit) << describe(ray);
+        EXPECT_EQ(anyHitTwoLevel(s.stack, ray), stack.hit) << test::describeRay(ray);
         EXPECT_EQ(anyHitWide(s.prepared.nodes, s.prepared.triangles, s.prepared.instances, ray),
                   stack.hit)
-            << describe(ray);
+            << test::describeRay(ray);
         if (stack.hit) {
             RayQuery nearer = ray;
             nearer.tMax = stack.t;
-            EXPECT_FALSE(anyHitWide(s.prepared.nodes, s.prepared.triangles, s.prepared.instances,
-                                    nearer))
-                << describe(ray);
+            EXPECT_FALSE(
+                anyHitWide(s.prepared.nodes, s.prepared.triangles, s.prepared.instances, nearer))
+                << test::describeRay(ray);
         }
         if (::testing::Test::HasFailure()) return;
     }
@@ -221,14 +214,14 @@ TEST(TwoLevelTraverse, CoincidentPlacementsTieToTheLowerInstance) {
     for (int i = 0; i < 1000; ++i) {
         const glm::vec3 origin = centre + 30.0f * rays.next().direction;
         const RayQuery ray{origin, centre - origin};
-        const ClosestHit wide = closestHitWide(s.prepared.nodes, s.prepared.triangles,
-                                               s.prepared.instances, ray);
+        const ClosestHit wide =
+            closestHitWide(s.prepared.nodes, s.prepared.triangles, s.prepared.instances, ray);
         const ClosestHit stack = closestHitTwoLevel(s.stack, ray);
         if (!stack.hit) continue;
         if (s.prepared.instances[stack.instance].mesh == 0) continue; // the scene's own
         ++hits;
-        EXPECT_EQ(stack.instance, placedTwice[0]) << describe(ray);
-        EXPECT_EQ(wide.instance, placedTwice[0]) << describe(ray);
+        EXPECT_EQ(stack.instance, placedTwice[0]) << test::describeRay(ray);
+        EXPECT_EQ(wide.instance, placedTwice[0]) << test::describeRay(ray);
     }
     EXPECT_GT(hits, 100);
 }
