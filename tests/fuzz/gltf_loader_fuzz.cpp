@@ -1,7 +1,8 @@
 // gltf_loader_fuzz.cpp — libFuzzer entry point over the whole glTF loader: .gltf/.glb parsing,
 // the JSON pre-pass, validation of every index and range, instancing (EXT_mesh_gpu_instancing,
-// meshes kept once), and the Draco, meshopt, WebP, PNG and JPEG decoders. An input either loads or ends in one InputError; anything else (a crash, a
-// sanitizer report, another exception, a leak, a hang) is a finding.
+// meshes kept once), and the Draco, meshopt, WebP, PNG and JPEG decoders. An input either loads or
+// ends in one InputError; anything else (a crash, a sanitizer report, another exception, a leak, a
+// hang) is a finding.
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
