@@ -317,6 +317,68 @@ def materials():
     return gltf
 
 
+def instancing_attributes(gltf, translations, rotations=None, scales=None,
+                          rotation_type=SHORT):
+    """EXT_mesh_gpu_instancing attributes: float TRANSLATION and SCALE, ROTATION as normalized
+    `rotation_type` (x, y, z, w) or FLOAT."""
+    attributes = {"TRANSLATION": gltf.accessor(gltf.view(floats(translations)), FLOAT,
+                                               len(translations), "VEC3")}
+    if rotations is not None:
+        if rotation_type == FLOAT:
+            attributes["ROTATION"] = gltf.accessor(gltf.view(floats(rotations)), FLOAT,
+                                                   len(rotations), "VEC4")
+        else:
+            code, peak = {SHORT: ("h", 32767), BYTE: ("b", 127),
+                          UNSIGNED_BYTE: ("B", 255)}[rotation_type]
+            values = [round(c * peak) for q in rotations for c in q]
+            data = struct.pack("<%d%s" % (len(values), code), *values)
+            attributes["ROTATION"] = gltf.accessor(gltf.view(data), rotation_type,
+                                                   len(rotations), "VEC4", normalized=True)
+    if scales is not None:
+        attributes["SCALE"] = gltf.accessor(gltf.view(floats(scales)), FLOAT, len(scales),
+                                            "VEC3")
+    return {"EXT_mesh_gpu_instancing": {"attributes": attributes}}
+
+
+def instancing():
+    # One triangle mesh placed six times: by two nodes, a mirrored node, and three
+    # EXT_mesh_gpu_instancing instances under a translated node; an emissive quad mesh placed by
+    # two nodes (emitters are flattened at every placement).
+    gltf = Gltf()
+    gltf.doc["extensionsUsed"] = ["EXT_mesh_gpu_instancing"]
+    gltf.doc["materials"] = [{"name": "grey"},
+                             {"name": "light", "emissiveFactor": [1, 1, 1]}]
+    position = gltf.positions(TRIANGLE_POSITIONS)
+    triangle_mesh = gltf.mesh([primitive(position, gltf.normals([(0, 0, 1)] * 3), material=0)],
+                              name="triangle")
+    quad_mesh = gltf.mesh([primitive(gltf.positions(QUAD_POSITIONS), gltf.normals(QUAD_NORMALS),
+                                     gltf.indices(QUAD_INDICES), material=1)], name="lamp")
+    extension = instancing_attributes(
+        gltf, [(0, 0, 0), (2, 0, 0), (0, 3, 0)],
+        [(0, 0, 0, 1), (0, 0, S45, S45), (S45, 0, 0, S45)], [(1, 1, 1), (2, 2, 2), (1, 0.5, 1)])
+    nodes = [gltf.node(name="plain", mesh=triangle_mesh),
+             gltf.node(name="moved", mesh=triangle_mesh, translation=[0, 0, -4],
+                       rotation=[0, S45, 0, S45]),
+             gltf.node(name="mirrored", mesh=triangle_mesh, scale=[-1, 1, 1]),
+             gltf.node(name="instanced", mesh=triangle_mesh, translation=[10, 0, 0],
+                       extensions=extension),
+             gltf.node(name="lamp_a", mesh=quad_mesh, translation=[0, 5, 0]),
+             gltf.node(name="lamp_b", mesh=quad_mesh, translation=[3, 5, 0])]
+    gltf.scene(nodes)
+    return gltf
+
+
+def instancing_far():
+    # A triangle mesh whose vertices lie a million units from its own origin, placed by two
+    # nodes that bring it back near the world's: kept once, it is measured from its centre.
+    gltf = Gltf()
+    far = [(1e6 + x, y, z) for x, y, z in TRIANGLE_POSITIONS]
+    mesh = gltf.mesh([primitive(gltf.positions(far))], name="far")
+    gltf.scene([gltf.node(name="near_a", mesh=mesh, translation=[-1e6, 0, 0]),
+                gltf.node(name="near_b", mesh=mesh, translation=[-1e6, 2, 0])])
+    return gltf
+
+
 def default_scene():
     gltf = Gltf()
     mesh = gltf.mesh([primitive(gltf.positions(TRIANGLE_POSITIONS))])
@@ -352,8 +414,8 @@ def cameras():
 
 def extensions():
     gltf = quad(UNSIGNED_SHORT)
-    gltf.doc["extensionsUsed"] = ["KHR_materials_emissive_strength", "EXT_mesh_gpu_instancing",
-                                  "NV_materials_mdl", "EXT_mesh_gpu_instancing"]
+    gltf.doc["extensionsUsed"] = ["KHR_materials_emissive_strength", "EXT_lights_image_based",
+                                  "NV_materials_mdl", "EXT_lights_image_based"]
     return gltf
 
 
@@ -609,6 +671,11 @@ VALID_SCENES = [
     ("specular.gltf", specular, write_embedded, "KHR_materials_specular factors and a texture"),
     ("glass.gltf", glass, write_embedded,
      "KHR_materials_transmission, KHR_materials_ior and KHR_materials_volume"),
+    ("instancing.gltf", instancing, write_embedded,
+     "a triangle mesh placed by two nodes, a mirrored node and three EXT_mesh_gpu_instancing "
+     "instances; an emissive quad mesh placed twice"),
+    ("instancing_far.gltf", instancing_far, write_embedded,
+     "a triangle mesh 1e6 from its own origin, placed near the world's origin by two nodes"),
 ]
 
 
@@ -771,7 +838,7 @@ def no_triangles():
 
 def required_extension():
     gltf = triangle()
-    unknown = ["KHR_texture_basisu", "EXT_mesh_gpu_instancing"]
+    unknown = ["KHR_texture_basisu", "EXT_lights_image_based"]
     gltf.doc["extensionsUsed"] = unknown
     gltf.doc["extensionsRequired"] = unknown
     return embedded_text(gltf)
@@ -913,6 +980,44 @@ def textured_triangle(image, texture=None, texture_info=None):
     return embedded_text(gltf)
 
 
+def instanced_triangle(extension):
+    gltf = triangle()
+    gltf.doc["extensionsUsed"] = ["EXT_mesh_gpu_instancing"]
+    gltf.doc["nodes"][0]["extensions"] = extension
+    return gltf
+
+
+def instancing_count_mismatch():
+    gltf = triangle()
+    extension = instancing_attributes(gltf, [(0, 0, 0), (1, 0, 0), (2, 0, 0)],
+                                      scales=[(1, 1, 1), (1, 1, 1)])
+    gltf.doc["extensionsUsed"] = ["EXT_mesh_gpu_instancing"]
+    gltf.doc["nodes"][0]["extensions"] = extension
+    return embedded_text(gltf)
+
+
+def instancing_without_attributes():
+    return embedded_text(instanced_triangle({"EXT_mesh_gpu_instancing": {"attributes": {}}}))
+
+
+def instancing_zero_rotation():
+    gltf = triangle()
+    extension = instancing_attributes(gltf, [(0, 0, 0), (1, 0, 0)], [(0, 0, 0, 1), (0, 0, 0, 0)],
+                                      rotation_type=FLOAT)
+    gltf.doc["extensionsUsed"] = ["EXT_mesh_gpu_instancing"]
+    gltf.doc["nodes"][0]["extensions"] = extension
+    return embedded_text(gltf)
+
+
+def instancing_rotation_unsigned():
+    gltf = triangle()
+    extension = instancing_attributes(gltf, [(0, 0, 0)], [(0, 0, 0, 1)],
+                                      rotation_type=UNSIGNED_BYTE)
+    gltf.doc["extensionsUsed"] = ["EXT_mesh_gpu_instancing"]
+    gltf.doc["nodes"][0]["extensions"] = extension
+    return embedded_text(gltf)
+
+
 def write_invalid_scenes():
     good_glb = glb_of(triangle())
     files = [
@@ -942,6 +1047,14 @@ def write_invalid_scenes():
         ("required_extension.gltf", required_extension(),
          "requires two extensions vkpt does not implement"),
         ("node_cycle.gltf", node_cycle(), "node 0 is its own grandchild"),
+        ("instancing_count_mismatch.gltf", instancing_count_mismatch(),
+         "EXT_mesh_gpu_instancing with 3 translations and 2 scales"),
+        ("instancing_without_attributes.gltf", instancing_without_attributes(),
+         "EXT_mesh_gpu_instancing with an empty attributes object"),
+        ("instancing_zero_rotation.gltf", instancing_zero_rotation(),
+         "EXT_mesh_gpu_instancing instance 1 rotated by the zero quaternion"),
+        ("instancing_rotation_unsigned.gltf", instancing_rotation_unsigned(),
+         "EXT_mesh_gpu_instancing ROTATION of normalized UNSIGNED_BYTE"),
         ("missing_node.gltf", missing_node(), "the scene lists node 7 of 2"),
         ("missing_material.gltf", missing_material(), "material 3 of 2"),
         ("partial_triangle.gltf", partial_triangle(), "4 indices"),

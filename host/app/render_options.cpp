@@ -15,6 +15,13 @@ Integrator parseIntegrator(const std::string& text) {
     throw InputError("option --integrator: '" + text + "' is not one of path, direct, normals");
 }
 
+Instancing parseInstancing(const std::string& text) {
+    if (text == "auto") return Instancing::Auto;
+    if (text == "on") return Instancing::On;
+    if (text == "off") return Instancing::Off;
+    throw InputError("option --instancing: '" + text + "' is not one of auto, on, off");
+}
+
 LightSampling parseLightSampling(const std::string& text) {
     if (text == "light") return LightSampling::Light;
     if (text == "hemisphere") return LightSampling::Hemisphere;
@@ -108,6 +115,12 @@ void addSceneOptions(CommandLine& cl, RenderSettings& s) {
             "",
             "build the all-features pipelines and buffers instead of the scene's own set",
             [&s](auto) { s.general = true; }});
+    cl.add({"instancing",
+            {},
+            "MODE",
+            "meshes placed many times kept once under a top-level BVH: auto (default: large "
+            "scenes), on (every mesh), off (all flattened)",
+            [&s](auto v) { s.instancing = parseInstancing(v[0]); }});
     cl.add({"verbose", {'v'}, "", "print the scene's feature set and setup details", [&s](auto) {
                 s.verbose = true;
             }});

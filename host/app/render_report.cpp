@@ -36,6 +36,9 @@ void writeSettings(JsonWriter& json, const RenderSettings& s) {
     json.field("adaptiveMinSamples", s.adaptive.minSamples);
     json.field("clamp", s.clamp); // 0 = off
     json.field("environment", s.environmentPath).field("general", s.general);
+    json.field("instancing", s.instancing == Instancing::Auto ? "auto"
+                             : s.instancing == Instancing::On ? "on"
+                                                              : "off");
     json.endObject();
 }
 
@@ -60,6 +63,8 @@ void writeStats(JsonWriter& json, const RenderReport& r) {
 void writeBvh(JsonWriter& json, const RenderReport& r) {
     json.key("bvh").beginObject();
     json.field("triangles", r.triangles).field("emitters", r.emitters);
+    json.field("placedTriangles", r.placedTriangles).field("instances", r.instances);
+    json.field("meshes", r.meshes);
     json.field("nodes", r.bvh.nodeCount).field("leaves", r.bvh.leafCount);
     json.field("maxDepth", r.bvh.maxDepth).field("sahCost", r.bvh.sahCost);
     json.field("buildSeconds", r.bvh.buildSeconds);
@@ -83,6 +88,7 @@ void writeFeatures(JsonWriter& json, const RenderReport& r) {
     json.field("alphaMask", f.alphaMask).field("doubleSided", f.doubleSided);
     json.field("transmission", f.transmission);
     json.field("triangles", f.triangles).field("spheres", f.spheres);
+    json.field("instances", f.instances);
     json.field("emissiveTriangles", f.emissiveTriangles);
     json.field("emissiveSpheres", f.emissiveSpheres);
     json.field("pointLights", f.pointLights).field("spotLights", f.spotLights);
@@ -137,6 +143,9 @@ RenderReport sceneReport(const std::string& program, const RenderSettings& setti
     report.settings = &settings;
     report.bvh = setup.prepared.bvhStats;
     report.triangles = setup.prepared.triangles.size();
+    report.placedTriangles = setup.placedTriangles;
+    report.instances = setup.instances;
+    report.meshes = setup.meshes;
     report.emitters = setup.prepared.emitters.size();
     report.features = setup.prepared.usedFeatures;
     report.generalPipelines = settings.general;

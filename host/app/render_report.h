@@ -34,7 +34,10 @@ struct RenderReport {
     std::string device;  // "CPU, 2 threads" or the Vulkan device name
     const RenderSettings* settings = nullptr;
     BvhStats bvh;
-    std::size_t triangles = 0;
+    std::size_t triangles = 0;         // primitives stored (triangles and spheres)
+    std::uint64_t placedTriangles = 0; // triangles placed: more than stored with instances
+    std::size_t instances = 0;
+    std::size_t meshes = 0;
     std::size_t emitters = 0;
     SceneFeatures features;        // what the scene uses
     bool generalPipelines = false; // --general: built for every feature instead

@@ -11,6 +11,9 @@ struct SceneSetup {
     PreparedScene prepared;
     gpu::Camera camera{};
     double loadSeconds = 0.0;
+    std::uint64_t placedTriangles = 0; // what the render sees (Scene::placedTriangleCount)
+    std::size_t instances = 0;         // placements of meshes kept once
+    std::size_t meshes = 0;            // meshes kept once
 };
 
 SceneSetup setUpScene(const RenderSettings& settings, const std::string& program);

@@ -173,6 +173,8 @@ int render(const Invocation& invocation) {
     options.beforeSceneUpload = [&part, &setup] {
         part.computeFeatures();
         setup.prepared.tree = {};
+        setup.prepared.meshes = {};
+        setup.prepared.instanceTree = {};
     };
     WavefrontResult result =
         renderWavefrontReleasing(context, setup.prepared, setup.camera, renderSettings, options);

@@ -80,11 +80,16 @@ private:
 } // namespace
 
 StackBvh makeStackBvh(const BvhTree& tree, std::span<const gpu::Triangle> primitives) {
+    VKPT_ASSERT(primitives.size() == tree.primitiveOrder.size(), "one record per primitive");
+    StackBvh bvh = makeStackBvhLayout(tree);
+    bvh.primitives.assign(primitives.begin(), primitives.end());
+    return bvh;
+}
+
+StackBvh makeStackBvhLayout(const BvhTree& tree) {
     StackBvh bvh;
     if (tree.nodes.empty() || tree.primitiveOrder.empty()) return bvh;
-    VKPT_ASSERT(primitives.size() == tree.primitiveOrder.size(), "one record per primitive");
     bvh.empty = false;
-    bvh.primitives.assign(primitives.begin(), primitives.end());
     bvh.rootBounds = tree.nodes[0].bounds;
     bvh.root = leafOrInterior(tree.nodes[0]);
     if (bvh.root.isLeaf()) return bvh;

@@ -54,7 +54,8 @@ struct StackBvh {
     Aabb rootBounds;
     StackBvhChild root;
     std::vector<StackBvhPair, HugePageAllocator<StackBvhPair>> pairs;
-    // The primitives in BVH order, as given: leaf ranges and hit indices refer to them.
+    // The primitives in BVH order, as given: leaf ranges and hit indices refer to them (empty for
+    // a layout alone, makeStackBvhLayout).
     std::vector<gpu::Triangle, HugePageAllocator<gpu::Triangle>> primitives;
     bool empty = true; // no primitives: every walk finds nothing
 
@@ -65,5 +66,9 @@ struct StackBvh {
 // ranges index them as in the tree. Throws InputError for leaves of more than 15 primitives
 // (BvhBuildOptions::maxLeafSize allows 15).
 StackBvh makeStackBvh(const BvhTree& tree, std::span<const gpu::Triangle> primitives);
+
+// The nodes alone, for a tree whose leaves index something other than primitives (the top level
+// of a two-level scene, whose leaves are instances): `primitives` stays empty.
+StackBvh makeStackBvhLayout(const BvhTree& tree);
 
 } // namespace vkpt

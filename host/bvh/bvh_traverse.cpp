@@ -8,6 +8,7 @@
 #include "bvh/pair_box_test.h"
 #include "bvh/ray_triangle_test.h"
 #include "common/errors.h"
+#include "shared/instance.h"
 #include "shared/intersect.h"
 #include "shared/sphere.h"
 
@@ -26,6 +27,10 @@ struct Walk {
     std::uint64_t boxTests = 0;
     std::uint64_t primitiveTests = 0;
     TraversalCounters* counters;
+    // A bottom level of a two-level scene: the instance walked and where its primitives start in
+    // the scene's array (hits and the filter take that numbering).
+    std::uint32_t instance = NO_INSTANCE;
+    std::uint32_t firstPrimitive = 0;
 
     Walk(const RayQuery& r, TraversalCounters* c)
         : ray(r), invDirection(gpu::safeInverseDirection(r.direction)),
@@ -58,12 +63,14 @@ struct Walk {
                 ? gpu::intersectSphere(ray.origin, ray.direction, tri.v0, tri.v1.x, ray.tMin, tMax)
                 : triangleTest.intersect(tri.v0, tri.v1, tri.v2, ray.tMin, tMax);
         if (!h.hit) return false;
-        if (!gpu::crossingPrecedes(h.t, index, best.t, best.hit ? best.triangle : NO_PRIMITIVE))
+        const std::uint32_t primitive = firstPrimitive + index;
+        if (!gpu::instancedCrossingPrecedes(h.t, instance, primitive, best.t, best.instance,
+                                            best.hit ? best.triangle : NO_PRIMITIVE))
             return false;
         if (ray.filter != nullptr && gpu::isAlphaMaskedPrimitive(tri) &&
-            !ray.filter->accepts(index, ray, h))
+            !ray.filter->accepts(primitive, ray, h))
             return false;
-        best = {h.t, h.u, h.v, index, true};
+        best = {h.t, h.u, h.v, primitive, true, instance};
         return true;
     }
 
@@ -130,6 +137,7 @@ void prefetchBlock(const StackBvh& bvh, StackBvhChild node) {
 }
 
 void prefetchLeaf(const StackBvh& bvh, StackBvhChild leaf) {
+    if (bvh.primitives.empty()) return; // a top level: its leaves are instances
     const char* begin = reinterpret_cast<const char*>(&bvh.primitives[leaf.first]);
     const char* end = begin + leaf.primitiveCount() * sizeof(gpu::Triangle);
     for (const char* line = begin; line < end; line += 64)
@@ -143,18 +151,18 @@ void prefetchLeaf(const StackBvh& bvh, StackBvhChild leaf) {
 // one on a tie.
 // This is pbrt-v4's front-to-back BVHAggregate::Intersect, ordered by entry distance where pbrt
 // uses the ray's direction sign on the split axis.
-bool walkStack(const StackBvh& bvh, Walk& walk, bool stopAtFirst) {
+// testLeaf(first, count) tests a leaf's primitives and says whether it found a hit.
+template <typename TestLeaf>
+bool walkStack(const StackBvh& bvh, Walk& walk, bool stopAtFirst, TestLeaf testLeaf) {
     if (bvh.empty) return false;
     if (!mayHoldBest(walk.enterBox(bvh.rootBounds.min, bvh.rootBounds.max), walk)) return false;
-    const std::span<const gpu::Triangle> triangles(bvh.primitives);
     const PairBoxTest pairTest(walk.ray.origin, walk.ray.direction);
     NodeStack stack;
     StackBvhChild node = bvh.root;
     bool any = false;
     for (;;) {
         if (node.isLeaf()) {
-            any = walk.testTriangles(triangles, node.first, node.primitiveCount(), stopAtFirst) ||
-                  any;
+            any = testLeaf(node.first, node.primitiveCount()) || any;
             if (any && stopAtFirst) return true;
         } else {
             prefetchBlock(bvh, node);
@@ -179,6 +187,40 @@ bool walkStack(const StackBvh& bvh, Walk& walk, bool stopAtFirst) {
     }
 }
 
+bool walkStack(const StackBvh& bvh, Walk& walk, bool stopAtFirst) {
+    const std::span<const gpu::Triangle> triangles(bvh.primitives);
+    return walkStack(bvh, walk, stopAtFirst, [&](std::uint32_t first, std::uint32_t count) {
+        return walk.testTriangles(triangles, first, count, stopAtFirst);
+    });
+}
+
+// The instances of a top-level leaf: each one's bottom level walked with the ray in its space,
+// from the best hit so far.
+bool walkInstances(const TwoLevelStackBvh& bvh, Walk& top, std::uint32_t first, std::uint32_t count,
+                   bool stopAtFirst) {
+    bool any = false;
+    for (std::uint32_t i = first; i < first + count; ++i) {
+        const gpu::Instance& x = bvh.instances[i];
+        const RayQuery local{gpu::instanceRayOrigin(x, top.ray.origin),
+                             gpu::instanceRayDirection(x, top.ray.direction), top.ray.tMin,
+                             top.ray.tMax, top.ray.filter};
+        Walk inner(local, top.counters);
+        inner.best = top.best;
+        inner.instance = i;
+        inner.firstPrimitive = bvh.firstPrimitives[x.mesh];
+        any = walkStack(bvh.bottoms[x.mesh], inner, stopAtFirst) || any;
+        top.best = inner.best;
+        if (any && stopAtFirst) return true;
+    }
+    return any;
+}
+
+bool walkTwoLevel(const TwoLevelStackBvh& bvh, Walk& walk, bool stopAtFirst) {
+    return walkStack(bvh.top, walk, stopAtFirst, [&](std::uint32_t first, std::uint32_t count) {
+        return walkInstances(bvh, walk, first, count, stopAtFirst);
+    });
+}
+
 } // namespace
 
 ClosestHit closestHitStack(const StackBvh& bvh, const RayQuery& ray, TraversalCounters* counters) {
@@ -190,6 +232,18 @@ ClosestHit closestHitStack(const StackBvh& bvh, const RayQuery& ray, TraversalCo
 bool anyHitStack(const StackBvh& bvh, const RayQuery& ray, TraversalCounters* counters) {
     Walk walk(ray, counters);
     return walkStack(bvh, walk, true);
+}
+
+ClosestHit closestHitTwoLevel(const TwoLevelStackBvh& bvh, const RayQuery& ray,
+                              TraversalCounters* counters) {
+    Walk walk(ray, counters);
+    walkTwoLevel(bvh, walk, false);
+    return finish(walk);
+}
+
+bool anyHitTwoLevel(const TwoLevelStackBvh& bvh, const RayQuery& ray, TraversalCounters* counters) {
+    Walk walk(ray, counters);
+    return walkTwoLevel(bvh, walk, true);
 }
 
 // With intersect.h's own tests rather than the walk's per-ray versions (pair_box_test.h,

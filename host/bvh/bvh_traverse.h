@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "bvh/bvh_build.h"
 #include "bvh/bvh_stack_layout.h"
@@ -41,6 +42,7 @@ struct ClosestHit {
     float v = 0.0f;             // barycentric weight of v2
     std::uint32_t triangle = 0; // index into the BVH-ordered triangle array
     bool hit = false;
+    std::uint32_t instance = NO_INSTANCE; // two-level scenes: the instance whose mesh was hit
 };
 
 // Work counters, for the reference's statistics and the traversal tests.
@@ -53,6 +55,26 @@ struct TraversalCounters {
 ClosestHit closestHitStack(const StackBvh& bvh, const RayQuery& ray,
                            TraversalCounters* counters = nullptr);
 bool anyHitStack(const StackBvh& bvh, const RayQuery& ray, TraversalCounters* counters = nullptr);
+
+// A two-level scene laid out for the stack walk: the top level, whose leaves index `instances`
+// (in the top-level tree's leaf order, as PreparedScene holds them), and each bottom level with
+// its primitives; gpu::Instance::mesh names an instance's bottom level. Hits number primitives
+// in the scene's one primitive array: a bottom level's own index plus its firstPrimitive.
+struct TwoLevelStackBvh {
+    StackBvh top;
+    std::vector<StackBvh> bottoms;
+    std::vector<std::uint32_t> firstPrimitives; // per bottom level
+    std::vector<gpu::Instance> instances;
+};
+
+// The reference's two-level walk: the ordered stack walk of the top level; at each instance it
+// meets, the ray moves into the mesh's space (shared/instance.h, as the device walk does) and the
+// bottom level's walk goes on with the same best hit. Ties between instances go to the lower
+// instance (instancedCrossingPrecedes).
+ClosestHit closestHitTwoLevel(const TwoLevelStackBvh& bvh, const RayQuery& ray,
+                              TraversalCounters* counters = nullptr);
+bool anyHitTwoLevel(const TwoLevelStackBvh& bvh, const RayQuery& ray,
+                    TraversalCounters* counters = nullptr);
 
 // Below, triangles are in BVH order (gpu::Triangle built from primitiveOrder).
 

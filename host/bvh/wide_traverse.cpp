@@ -9,9 +9,11 @@ namespace vkpt {
 namespace {
 
 gpu::WideWalk walkWide(std::span<const gpu::WideBvhNode> nodes,
-                       std::span<const gpu::Triangle> primitives, const RayQuery& ray,
+                       std::span<const gpu::Triangle> primitives,
+                       std::span<const gpu::Instance> instances, const RayQuery& ray,
                        bool stopAtFirst, TraversalCounters* counters) {
-    const gpu::WideBvhView bvh{nodes.data(), primitives.data(), true, ray.filter != nullptr};
+    const gpu::WideBvhView bvh{nodes.data(), primitives.data(), true, ray.filter != nullptr,
+                               instances.empty() ? nullptr : instances.data()};
     gpu::WideWalk walk =
         gpu::beginWideWalk(ray.origin, ray.direction, ray.tMin, ray.tMax, stopAtFirst, bvh);
     for (;;) {
@@ -30,16 +32,29 @@ gpu::WideWalk walkWide(std::span<const gpu::WideBvhNode> nodes,
 } // namespace
 
 ClosestHit closestHitWide(std::span<const gpu::WideBvhNode> nodes,
+                          std::span<const gpu::Triangle> primitives,
+                          std::span<const gpu::Instance> instances, const RayQuery& ray,
+                          TraversalCounters* counters) {
+    const gpu::WideWalk walk = walkWide(nodes, primitives, instances, ray, false, counters);
+    if (walk.primitive == NO_PRIMITIVE) return {};
+    return {walk.t, walk.u, walk.v, walk.primitive, true, walk.hitInstance};
+}
+
+bool anyHitWide(std::span<const gpu::WideBvhNode> nodes, std::span<const gpu::Triangle> primitives,
+                std::span<const gpu::Instance> instances, const RayQuery& ray,
+                TraversalCounters* counters) {
+    return walkWide(nodes, primitives, instances, ray, true, counters).primitive != NO_PRIMITIVE;
+}
+
+ClosestHit closestHitWide(std::span<const gpu::WideBvhNode> nodes,
                           std::span<const gpu::Triangle> primitives, const RayQuery& ray,
                           TraversalCounters* counters) {
-    const gpu::WideWalk walk = walkWide(nodes, primitives, ray, false, counters);
-    if (walk.primitive == NO_PRIMITIVE) return {};
-    return {walk.t, walk.u, walk.v, walk.primitive, true};
+    return closestHitWide(nodes, primitives, {}, ray, counters);
 }
 
 bool anyHitWide(std::span<const gpu::WideBvhNode> nodes, std::span<const gpu::Triangle> primitives,
                 const RayQuery& ray, TraversalCounters* counters) {
-    return walkWide(nodes, primitives, ray, true, counters).primitive != NO_PRIMITIVE;
+    return anyHitWide(nodes, primitives, {}, ray, counters);
 }
 
 } // namespace vkpt

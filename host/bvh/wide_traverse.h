@@ -18,4 +18,14 @@ ClosestHit closestHitWide(std::span<const gpu::WideBvhNode> nodes,
 bool anyHitWide(std::span<const gpu::WideBvhNode> nodes, std::span<const gpu::Triangle> primitives,
                 const RayQuery& ray, TraversalCounters* counters = nullptr);
 
+// A two-level scene (PreparedScene::nodes, ::triangles and ::instances): node 0 is the top level,
+// whose leaves index `instances`. ClosestHit::instance names the instance hit.
+ClosestHit closestHitWide(std::span<const gpu::WideBvhNode> nodes,
+                          std::span<const gpu::Triangle> primitives,
+                          std::span<const gpu::Instance> instances, const RayQuery& ray,
+                          TraversalCounters* counters = nullptr);
+bool anyHitWide(std::span<const gpu::WideBvhNode> nodes, std::span<const gpu::Triangle> primitives,
+                std::span<const gpu::Instance> instances, const RayQuery& ray,
+                TraversalCounters* counters = nullptr);
+
 } // namespace vkpt

@@ -10,6 +10,10 @@ namespace vkpt {
 enum class Integrator { Path, Direct, Normals };
 enum class LightSampling { Light, Hemisphere };
 enum class PathFilter : std::uint32_t { All = 0, DirectOnly = 1, IndirectOnly = 2 };
+// --instancing: which meshes placed more than once are kept once and walked through a top-level
+// BVH (docs/scene-model.md, "Instancing"): by the measured rule, all meshes, or none (every
+// placement flattened into world space).
+enum class Instancing : std::uint32_t { Auto = 0, On = 1, Off = 2 };
 
 struct AdaptiveSettings {
     bool enabled = false;
@@ -44,6 +48,7 @@ struct RenderSettings {
     float environmentColor[3] = {0.0f, 0.0f, 0.0f};
     float environmentScale = 1.0f;
     bool general = false; // --general: the all-features pipelines and buffers
+    Instancing instancing = Instancing::Auto;
     bool verbose = false; // --verbose: the scene's feature set and more on stderr
     std::string statsJsonPath;
     bool quiet = false; // no progress bar

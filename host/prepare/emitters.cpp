@@ -114,18 +114,38 @@ private:
     std::vector<double> powers_;
 };
 
+// The emitting primitives in the loaded scene's order (its triangles, then its spheres) rather
+// than the BVH's: the list, and so which emitter a random number selects, does not depend on how
+// the BVH was built or laid out (a two-level scene's emitters sit in its own geometry's
+// bottom level, in that level's BVH order).
+std::vector<std::uint32_t>
+emittingPrimitivesInSceneOrder(std::span<const gpu::Triangle> primitives,
+                               std::span<const gpu::Material> materials) {
+    std::vector<std::uint32_t> emitting;
+    for (std::uint32_t i = 0; i < primitives.size(); ++i)
+        if (luminanceOf(materials[primitives[i].materialIndex].emission) > 0.0)
+            emitting.push_back(i);
+    const auto sceneOrder = [&](std::uint32_t i) {
+        const gpu::Triangle& p = primitives[i];
+        return std::pair(gpu::isSpherePrimitive(p), p.sourceIndex & PRIMITIVE_SOURCE_MASK);
+    };
+    std::sort(emitting.begin(), emitting.end(),
+              [&](std::uint32_t a, std::uint32_t b) { return sceneOrder(a) < sceneOrder(b); });
+    return emitting;
+}
+
 } // namespace
 
 EmitterList buildEmitters(std::span<gpu::Triangle> primitives,
                           std::span<const gpu::Material> materials, const EmitterSources& sources) {
     ListBuilder builder;
     std::map<SurfaceKey, std::uint32_t> surfaces;
-    for (std::uint32_t i = 0; i < primitives.size(); ++i) {
-        gpu::Triangle& primitive = primitives[i];
+    for (gpu::Triangle& primitive : primitives)
         primitive.emitterIndex = NO_EMITTER;
+    for (std::uint32_t i : emittingPrimitivesInSceneOrder(primitives, materials)) {
+        gpu::Triangle& primitive = primitives[i];
         const gpu::Material& material = materials[primitive.materialIndex];
         const double radiance = luminanceOf(material.emission);
-        if (!(radiance > 0.0)) continue;
         if (gpu::isSpherePrimitive(primitive)) {
             const double radius = primitive.v1.x;
             const double area = 4.0 * kPi * radius * radius;

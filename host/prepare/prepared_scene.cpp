@@ -10,6 +10,7 @@
 #include "prepare/environment_map.h"
 #include "prepare/gpu_materials.h"
 #include "prepare/gpu_primitives.h"
+#include "prepare/two_level_bvh.h"
 #include "shared/albedo_lookup.h"
 
 namespace vkpt {
@@ -47,18 +48,11 @@ std::uint32_t findEnvironmentEmitter(const std::vector<gpu::Emitter>& emitters) 
     return NO_EMITTER;
 }
 
-} // namespace
-
-PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options) {
-    VKPT_ASSERT(scene.positions.size() == 3 * scene.triangleCount(), "three vertices a triangle");
+// One BVH over the scene's own geometry.
+void prepareSingleLevel(const Scene& scene, const PrepareOptions& options, bool withUvs,
+                        bool withTangents, PreparedScene& prepared) {
     const std::size_t primitiveCount = scene.triangleCount() + scene.spheres.size();
     VKPT_ASSERT(primitiveCount < BVH_MAX_TRIANGLES, "primitive count fits a leaf word");
-    PreparedScene prepared;
-    prepared.usedFeatures = analyseScene(scene);
-    prepared.features =
-        options.general ? generalFeatures(prepared.usedFeatures) : prepared.usedFeatures;
-    const SceneFeatures features = prepared.features;
-
     auto start = std::chrono::steady_clock::now();
     prepared.tree = buildBvh(primitiveBounds(scene), options.bvh);
     std::chrono::duration<double> buildTime = std::chrono::steady_clock::now() - start;
@@ -68,12 +62,29 @@ PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options) {
     // primitive arrays below follow that order.
     prepared.nodes = flattenWideBvh(prepared.tree);
 
-    GpuPrimitives primitives =
-        makeGpuPrimitives(scene, prepared.tree, features.textureCoordinates(), features.tangents());
+    GpuPrimitives primitives = makeGpuPrimitives(scene, prepared.tree, withUvs, withTangents);
     prepared.triangles = std::move(primitives.records);
     prepared.normals = std::move(primitives.normals);
     prepared.uvs = std::move(primitives.uvs);
     prepared.tangents = std::move(primitives.tangents);
+}
+
+} // namespace
+
+PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options) {
+    VKPT_ASSERT(scene.positions.size() == 3 * scene.triangleCount(), "three vertices a triangle");
+    PreparedScene prepared;
+    prepared.usedFeatures = analyseScene(scene);
+    prepared.features =
+        options.general ? generalFeatures(prepared.usedFeatures) : prepared.usedFeatures;
+    const SceneFeatures features = prepared.features;
+    if (features.instances) {
+        prepareTwoLevel(scene, options, features.textureCoordinates(), features.tangents(),
+                        prepared);
+    } else {
+        prepareSingleLevel(scene, options, features.textureCoordinates(), features.tangents(),
+                           prepared);
+    }
     prepared.materials = makeGpuMaterials(scene.materials);
     if (features.metallicRoughnessMaterials)
         prepared.albedoTables.assign(gpu::albedoTableEntries.begin(),

@@ -1,8 +1,8 @@
-// prepared_scene.h — the loaded scene in the layouts both executors consume: the BVH tree,
-// its flattened nodes, primitives (triangles and spheres) and their normals, texture
-// coordinates and tangents in BVH order, materials, textures, the emitter list and the environment.
-// An array a scene's features do not need stays empty (docs/scene-model.md), unless the general
-// layout was asked for.
+// prepared_scene.h — the loaded scene in the layouts both executors consume: the BVH tree (or,
+// with instances, its two levels), its flattened nodes, primitives (triangles and spheres) and
+// their normals, texture coordinates and tangents in BVH order, materials, textures, the emitter
+// list and the environment. An array a scene's features do not need stays empty
+// (docs/scene-model.md), unless the general layout was asked for.
 #pragma once
 
 #include <optional>
@@ -15,9 +15,18 @@
 
 namespace vkpt {
 
+// A bottom-level BVH of a two-level scene: the world's own geometry or a stored mesh, in its own
+// space. Its nodes and primitives are ranges of PreparedScene::nodes and ::triangles.
+struct PreparedMesh {
+    BvhTree tree; // leaves index its own primitives, 0 .. primitiveCount − 1
+    std::uint32_t rootNode = 0;
+    std::uint32_t firstPrimitive = 0; // in triangles, normals, uvs and tangents
+    std::uint32_t primitiveCount = 0;
+};
+
 struct PreparedScene {
-    BvhTree tree;                         // for the reference's stack traversal
-    BvhStats bvhStats;                    // with the build time
+    BvhTree tree;                         // single-level: for the reference's stack traversal
+    BvhStats bvhStats;                    // with the build time (two-level: of all levels)
     std::vector<gpu::WideBvhNode> nodes;  // the device's 8-wide nodes (flattenWideBvh)
     std::vector<gpu::Triangle> triangles; // triangles and spheres (PRIMITIVE_SPHERE)
     std::vector<gpu::TriangleNormals> normals;
@@ -34,6 +43,12 @@ struct PreparedScene {
     // The layered BSDF's albedo tables (shared/albedo_lookup.h); empty unless
     // features.metallicRoughnessMaterials.
     std::vector<float> albedoTables;
+    // Two-level scenes (features.instances, two_level_bvh.h): the bottom levels (the world's own
+    // geometry first when it has any, then Scene::meshes), the top level over the instances'
+    // world boxes, and the instances in its leaf order; `tree` is then empty.
+    std::vector<PreparedMesh> meshes;
+    BvhTree instanceTree;
+    std::vector<gpu::Instance> instances;
     SceneFeatures features;     // what the scene uses (all of it for a general layout)
     SceneFeatures usedFeatures; // what the scene uses, whatever the layout
     double totalEmittedPower = 0.0;

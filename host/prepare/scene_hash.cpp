@@ -52,6 +52,8 @@ std::string sceneContentHash(const PreparedScene& scene, const gpu::Camera& came
     // --general fills these even for a scene that does not use them.
     if (scene.usedFeatures.textureCoordinates()) hash.add(scene.uvs);
     if (scene.usedFeatures.tangents()) hash.add(scene.tangents);
+    // Instanced meshes are in their own space: the placements are part of the scene.
+    if (scene.usedFeatures.instances) hash.add(scene.instances);
     if (scene.usedFeatures.textures()) {
         hash.add(scene.textures);
         hash.add(scene.texels);

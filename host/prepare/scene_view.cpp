@@ -8,6 +8,7 @@ gpu::SceneView makeSceneView(const PreparedScene& scene) {
     view.primitives = scene.triangles;
     view.normals = scene.normals;
     view.tangents = scene.tangents;
+    view.instances = scene.instances;
     view.uvs = scene.uvs;
     view.materials = scene.materials;
     view.textures = scene.textures;

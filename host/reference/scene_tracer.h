@@ -34,8 +34,9 @@ public:
     // The surface point of `hit`, found by a ray from `origin` along `direction`.
     gpu::SurfacePoint surfaceAt(const ClosestHit& hit, const glm::vec3& origin,
                                 const glm::vec3& direction) const {
-        return gpu::makeSurfacePoint(hit.triangle, gpu::TriangleHit{hit.t, hit.u, hit.v, true},
-                                     origin, direction, view_);
+        return gpu::makeSurfacePoint(hit.triangle, hit.instance,
+                                     gpu::TriangleHit{hit.t, hit.u, hit.v, true}, origin, direction,
+                                     view_);
     }
 
     const PreparedScene& scene() const { return scene_; }

@@ -39,9 +39,8 @@ constexpr SceneArrayAccess kStorage = SceneArrayAccess::Storage;
 // Every array the kernels read from the scene, one line each. Records of
 // 16-byte multiples are fetched as texels (lib/records.glsl), the rest read as storage buffers
 // (lib/kernel_bindings.h). A splittable array is declared in GLSL with VKPT_SCENE_TEXELS or a
-// SCENE entry; the last four are read by shared code as one array (shared/environment.h,
-// shared/texture_sampling.h, shared/albedo_lookup.h) and grow with image sizes (or not at
-// all), not with the geometry.
+// SCENE entry; the last is read by shared code as one array (shared/albedo_lookup.h) and has a
+// fixed size.
 const SceneArrayDesc kSceneArrays[] = {
     sceneArray<&PreparedScene::nodes>("bvhNodes", BINDING_BVH_NODES, kTexels),
     sceneArray<&PreparedScene::triangles>("triangles", BINDING_TRIANGLES, kTexels),
@@ -49,14 +48,14 @@ const SceneArrayDesc kSceneArrays[] = {
     sceneArray<&PreparedScene::tangents>("triangleTangents", BINDING_TRIANGLE_TANGENTS, kTexels),
     sceneArray<&PreparedScene::materials>("materials", BINDING_MATERIALS, kTexels),
     sceneArray<&PreparedScene::emitters>("emitters", BINDING_EMITTERS, kTexels),
+    sceneArray<&PreparedScene::instances>("instances", BINDING_INSTANCES, kTexels),
     sceneArray<&PreparedScene::uvs>("triangleUvs", BINDING_TRIANGLE_UVS, kStorage),
     sceneArray<&PreparedScene::textures>("textures", BINDING_TEXTURES, kTexels),
     sceneArray<&PreparedScene::emitterCdf>("emitterCdf", BINDING_EMITTER_CDF, kStorage),
-    sceneArray<&PreparedScene::texels>("textureTexels", BINDING_TEXTURE_TEXELS, kStorage, false),
+    sceneArray<&PreparedScene::texels>("textureTexels", BINDING_TEXTURE_TEXELS, kStorage),
     sceneArray<&PreparedScene::environmentTexels>("environmentTexels", BINDING_ENVIRONMENT_TEXELS,
-                                                  kStorage, false),
-    sceneArray<&PreparedScene::environmentCdf>("environmentCdf", BINDING_ENVIRONMENT_CDF, kStorage,
-                                               false),
+                                                  kStorage),
+    sceneArray<&PreparedScene::environmentCdf>("environmentCdf", BINDING_ENVIRONMENT_CDF, kStorage),
     sceneArray<&PreparedScene::albedoTables>("albedoTables", BINDING_ALBEDO_TABLES, kStorage,
                                              false),
 };

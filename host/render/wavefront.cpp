@@ -158,7 +158,7 @@ public:
           plan_(samplePlanFor(camera, settings, options)), budget_(plan_.range.size()),
           pixelCount_(camera.width * camera.height),
           buffers_(context, slotCountFor(context, settings, plan_, options), settings.lightSamples,
-                   pixelCount_),
+                   pixelCount_, scene.features.instances),
           scene_(uploadAfterHook(upload, options)), table_(makeBufferTable(scene_, buffers_)),
           pipelines_(context, table_, kernelFeaturesFor(scene, options)),
           timer_(makeTimer(context, options)),

@@ -8,6 +8,7 @@
 #include "lib/kernel_bindings.h"
 #include "lib/wavefront.h"
 #include "render/scene_arrays.h"
+#include "vkpt_instanced_kernels.h"
 #include "vkpt_kernels.h"
 
 namespace vkpt {
@@ -100,13 +101,23 @@ bool isSpecialised(WavefrontKernel kernel) {
     return info(kernel).specialised;
 }
 
+// The kernel's SPIR-V: its two-level build where the scene has instances and instancing changes
+// the kernel, else the one-level build.
+std::span<const std::uint32_t> kernelSpirv(WavefrontKernel kernel, const SceneFeatures& features) {
+    const std::string_view name = kernelName(kernel);
+    if (features.instances)
+        for (const instanced_kernels::EmbeddedKernel& embedded :
+             instanced_kernels::embeddedKernels())
+            if (embedded.name == name) return embedded.spirv;
+    return kernels::findKernel(name).spirv;
+}
+
 Kernel makeWavefrontKernel(const GpuContext& context, WavefrontKernel kernel,
                            const SceneFeatures& features,
                            const std::vector<SpecializationConstant>& chunks) {
-    const kernels::EmbeddedKernel& embedded = kernels::findKernel(kernelName(kernel));
     KernelDesc desc;
-    desc.name = std::string(embedded.name);
-    desc.spirv = embedded.spirv;
+    desc.name = std::string(kernelName(kernel));
+    desc.spirv = kernelSpirv(kernel, features);
     desc.bindings = info(kernel).bindings;
     desc.pushConstantSize = sizeof(gpu::PassParams);
     if (isSpecialised(kernel)) desc.specializationConstants = featureConstants(features);

@@ -30,7 +30,7 @@ std::uint64_t largestBytesPerSlot(std::uint32_t lightSamples) {
 
 std::uint64_t totalBytesPerSlot(std::uint32_t lightSamples) {
     return sizeof(gpu::PathState) + 2 * sizeof(gpu::RayRecord) + sizeof(gpu::HitRecord) +
-           recordsPerSlot(lightSamples) * sizeof(gpu::ShadowRay);
+           sizeof(std::uint32_t) + recordsPerSlot(lightSamples) * sizeof(gpu::ShadowRay);
 }
 
 Buffer makeWorkBuffer(GpuContext& context, const char* name, std::uint64_t bytes,
@@ -57,7 +57,7 @@ std::uint32_t chooseSlotCount(const GpuContext& context, const SlotRequest& requ
 }
 
 WorkBuffers::WorkBuffers(GpuContext& context, std::uint32_t slots, std::uint32_t lightSamples,
-                         std::uint32_t pixelCount)
+                         std::uint32_t pixelCount, bool withInstances)
     : slotCount(slots), frameParams(makeWorkBuffer(context, "frameParams", sizeof(gpu::FrameParams),
                                                    VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT)),
       pathStates(
@@ -76,7 +76,11 @@ WorkBuffers::WorkBuffers(GpuContext& context, std::uint32_t slots, std::uint32_t
       dispatchArgs(makeWorkBuffer(context, "dispatchArgs", DISPATCH_WORDS * sizeof(std::uint32_t),
                                   VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT)),
       countersReadback(context, {"queueCounters.readback", COUNTER_WORDS * sizeof(std::uint32_t),
-                                 VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryLocation::Readback}) {}
+                                 VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryLocation::Readback}) {
+    if (withInstances)
+        hitInstances.emplace(
+            makeWorkBuffer(context, "hitInstances", std::uint64_t(slots) * sizeof(std::uint32_t)));
+}
 
 void WorkBuffers::bind(BufferTable& table) const {
     table.set(BINDING_FRAME_PARAMS, frameParams);
@@ -86,6 +90,9 @@ void WorkBuffers::bind(BufferTable& table) const {
     table.set(BINDING_RAY_TEXELS, rays);
     table.set(BINDING_HITS, hits);
     table.set(BINDING_HIT_TEXELS, hits);
+    // A scene of one level binds hits there, which its kernels, specialised without
+    // instances, never touch (every binding of a layout needs a buffer).
+    table.set(BINDING_HIT_INSTANCES, hitInstances ? *hitInstances : hits);
     table.set(BINDING_SHADOW_RAYS, shadowRays);
     table.set(BINDING_SHADOW_RAY_TEXELS, shadowRays);
     table.set(BINDING_PIXEL_STATES, pixelStates);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include "gpu/buffer.h"
 #include "gpu/context.h"
@@ -24,19 +25,21 @@ struct SlotRequest {
 std::uint32_t chooseSlotCount(const GpuContext& context, const SlotRequest& request);
 
 struct WorkBuffers {
+    // withInstances: the scene has two levels, and hits say which instance they found.
     WorkBuffers(GpuContext& context, std::uint32_t slotCount, std::uint32_t lightSamples,
-                std::uint32_t pixelCount);
+                std::uint32_t pixelCount, bool withInstances = false);
 
     std::uint32_t slotCount;
-    Buffer frameParams;      // FrameParams
-    Buffer pathStates;       // PathState per slot
-    Buffer rays;             // RayRecord, two queues of slotCount
-    Buffer hits;             // HitRecord per ray of the current queue
-    Buffer shadowRays;       // ShadowRay, lightSamples per ray of the current queue
-    Buffer pixelStates;      // PixelState per pixel
-    Buffer activePixels;     // uint, two lists of pixelCount
-    Buffer queueCounters;    // COUNTER_WORDS uints
-    Buffer dispatchArgs;     // DISPATCH_WORDS uints: VkDispatchIndirectCommands
+    Buffer frameParams;                 // FrameParams
+    Buffer pathStates;                  // PathState per slot
+    Buffer rays;                        // RayRecord, two queues of slotCount
+    Buffer hits;                        // HitRecord per ray of the current queue
+    std::optional<Buffer> hitInstances; // uint per hit: its instance (two-level scenes only)
+    Buffer shadowRays;                  // ShadowRay, lightSamples per ray of the current queue
+    Buffer pixelStates;                 // PixelState per pixel
+    Buffer activePixels;                // uint, two lists of pixelCount
+    Buffer queueCounters;               // COUNTER_WORDS uints
+    Buffer dispatchArgs;                // DISPATCH_WORDS uints: VkDispatchIndirectCommands
     Buffer countersReadback; // host-visible copy of queueCounters, written at the end of a pass
 
     // Points every work binding of `table` (storage and texel bindings alike) at its buffer.

@@ -59,11 +59,7 @@ gpu::Camera makeGpuCamera(const SceneCamera& camera, std::uint32_t width, std::u
     gpuCamera.aspect = static_cast<float>(width) / static_cast<float>(height);
     gpuCamera.up = glm::cross(right, forward); // unit, and exactly orthogonal to both
     gpuCamera.width = width;
-    // −0 components become +0: every orthographic ray takes this direction as it is, and the
-    // device's wide-BVH walk orders children by the direction's sign bits (−0 as negative)
-    // while its slab test takes the reciprocal of a zero component as +1e30, so a −0 there would
-    // miss every box (a camera looking down −Z has forward.x = −0 from the node transform).
-    gpuCamera.forward = forward + glm::vec3(0.0f);
+    gpuCamera.forward = forward;
     gpuCamera.height = height;
     const bool orthographic = camera.projection == CameraProjection::Orthographic;
     gpuCamera.projection = orthographic ? CAMERA_ORTHOGRAPHIC : CAMERA_PERSPECTIVE;

@@ -312,6 +312,17 @@ std::vector<glm::vec4> readTangents(const tinygltf::Model& model, int accessorIn
     return readVectors<4>(model, accessor, accessorIndex, where);
 }
 
+std::vector<glm::vec4> readRotations(const tinygltf::Model& model, int accessorIndex,
+                                     const std::string& where) {
+    const tinygltf::Accessor& accessor = findAccessor(model, accessorIndex, where);
+    requireLayout(accessor, accessorIndex, TINYGLTF_TYPE_VEC4,
+                  {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE,
+                   TINYGLTF_COMPONENT_TYPE_SHORT},
+                  where);
+    requireNormalizedIntegers(accessor, accessorIndex, "rotations", where);
+    return readVectors<4>(model, accessor, accessorIndex, where);
+}
+
 std::vector<glm::vec2> readTexcoords(const tinygltf::Model& model, int accessorIndex,
                                      const std::string& where) {
     const tinygltf::Accessor& accessor = findAccessor(model, accessorIndex, where);

@@ -36,6 +36,11 @@ std::vector<glm::vec3> readNormals(const tinygltf::Model& model, int accessorInd
 std::vector<glm::vec4> readTangents(const tinygltf::Model& model, int accessorIndex,
                                     const std::string& where);
 
+// EXT_mesh_gpu_instancing ROTATION: VEC4 quaternions (x, y, z, w) of FLOAT or of normalized BYTE
+// or SHORT, the types that extension allows.
+std::vector<glm::vec4> readRotations(const tinygltf::Model& model, int accessorIndex,
+                                     const std::string& where);
+
 // TEXCOORD_n values: VEC2 of FLOAT, or of normalized UNSIGNED_BYTE or UNSIGNED_SHORT mapped to
 // [0, 1], the three layouts glTF 2.0 allows (section 3.7.2.1); with KHR_mesh_quantization also
 // BYTE and SHORT, and all four integer types unnormalized (KHR_texture_transform then scales).

@@ -26,7 +26,8 @@ const std::vector<std::string> kSupportedExtensions = {"KHR_materials_emissive_s
                                                        "KHR_draco_mesh_compression",
                                                        "EXT_meshopt_compression",
                                                        "KHR_mesh_quantization",
-                                                       "EXT_texture_webp"};
+                                                       "EXT_texture_webp",
+                                                       "EXT_mesh_gpu_instancing"};
 
 std::string joinNames(const std::vector<std::string>& names) {
     std::string joined;

@@ -17,8 +17,10 @@
 #include "scene/gltf_cameras.h"
 #include "scene/gltf_document.h"
 #include "scene/gltf_extensions.h"
+#include "scene/gltf_instancing_plan.h"
 #include "scene/gltf_lights.h"
 #include "scene/gltf_materials.h"
+#include "scene/gltf_mesh_instancing.h"
 #include "scene/gltf_nodes.h"
 #include "scene/gltf_origin.h"
 #include "scene/gltf_primitives.h"
@@ -43,13 +45,27 @@ std::string formatNumber(double value) {
     return text;
 }
 
-// Collects the triangles, spheres, lights and cameras of the nodes the walk visits.
+// Whether an instance may place a mesh by `transform`: the walk transforms rays into the mesh's
+// space by its inverse, which must exist and be well conditioned. A placement that (nearly)
+// flattens a dimension is flattened instead, where its triangles have no area and are skipped.
+bool canInstance(const glm::dmat4& transform) {
+    const glm::dmat3 linear(transform);
+    const double scale = glm::length(linear[0]) * glm::length(linear[1]) * glm::length(linear[2]);
+    const double det = glm::determinant(linear);
+    return std::isfinite(det) && scale > 0.0 && std::abs(det) > 1e-6 * scale;
+}
+
+// Collects the triangles, spheres, lights and cameras of the nodes the walk visits; a mesh the
+// instancing plan keeps once is read into Scene::meshes at its first placement and placed by
+// Scene::instances.
 class SceneBuilder {
 public:
-    SceneBuilder(const tinygltf::Model& model, Scene& scene, gltf::Texcoords texcoords)
-        : model_(model), scene_(scene), texcoords_(texcoords),
+    SceneBuilder(const tinygltf::Model& model, Scene& scene, gltf::Texcoords texcoords,
+                 const gltf::InstancingPlan& plan)
+        : model_(model), scene_(scene), texcoords_(texcoords), plan_(plan),
           withTangents_(std::any_of(scene.materials.begin(), scene.materials.end(),
-                                    [](const SceneMaterial& m) { return m.hasNormalMap(); })) {}
+                                    [](const SceneMaterial& m) { return m.hasNormalMap(); })),
+          meshSlots_(model.meshes.size()) {}
 
     void visitNode(int nodeIndex, const glm::dmat4& world) {
         const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(nodeIndex)];
@@ -65,20 +81,89 @@ public:
     }
 
 private:
+    // The node's mesh at each of its placements: the node itself, or each EXT_mesh_gpu_instancing
+    // instance.
     void appendMesh(int nodeIndex, int meshIndex, const glm::dmat4& world) {
         if (meshIndex < 0 || static_cast<std::size_t>(meshIndex) >= model_.meshes.size()) {
             throw GltfProblem("node " + std::to_string(nodeIndex) + ": mesh " +
                               std::to_string(meshIndex) + " does not exist (the file has " +
                               std::to_string(model_.meshes.size()) + " meshes)");
         }
+        const std::optional<std::vector<glm::dmat4>> local =
+            gltf::meshInstanceTransforms(model_, nodeIndex);
+        if (!local) {
+            placeMesh(meshIndex, world);
+            return;
+        }
+        for (const glm::dmat4& transform : *local)
+            placeMesh(meshIndex, world * transform);
+    }
+
+    void placeMesh(int meshIndex, const glm::dmat4& placement) {
+        if (!plan_.isInstanced(meshIndex) || !canInstance(placement)) {
+            appendPrimitives(meshIndex, placement, PrimitiveKinds::All, scene_);
+            return;
+        }
+        // Emitters stay in world space at every placement (light sampling lists each one).
+        appendPrimitives(meshIndex, placement, PrimitiveKinds::Emitting, scene_);
+        const std::optional<std::uint32_t> slot = meshSlot(meshIndex);
+        if (!slot) return;
+        const glm::dvec3 origin = scene_.meshes[*slot].origin;
+        scene_.instances.push_back({*slot, placement * glm::translate(glm::dmat4(1.0), origin)});
+    }
+
+    // The mesh's own copy in Scene::meshes, read at its first placement; nullopt when it has no
+    // triangles to keep (all of them emit, or have no area).
+    std::optional<std::uint32_t> meshSlot(int meshIndex) {
+        std::optional<std::optional<std::uint32_t>>& slot =
+            meshSlots_[static_cast<std::size_t>(meshIndex)];
+        if (slot) return *slot;
+        SceneMesh mesh;
+        const tinygltf::Mesh& source = model_.meshes[static_cast<std::size_t>(meshIndex)];
+        mesh.name = "mesh " + std::to_string(meshIndex) +
+                    (source.name.empty() ? "" : " (" + source.name + ")");
+        appendPrimitives(meshIndex, glm::dmat4(1.0), PrimitiveKinds::NotEmitting, mesh);
+        recentre(mesh);
+        slot = std::optional<std::uint32_t>();
+        if (mesh.triangleCount() > 0) {
+            *slot = static_cast<std::uint32_t>(scene_.meshes.size());
+            scene_.meshes.push_back(std::move(mesh));
+        }
+        return *slot;
+    }
+
+    // Moves the mesh's positions to be measured from its centre when that lies far from its
+    // origin (gltf::chooseWorldOrigin's rule), in double: the file's floats there are as coarse
+    // as they are, but the rays moved into this space are then as fine as the mesh is small.
+    static void recentre(SceneMesh& mesh) {
+        if (mesh.positions.empty()) return;
+        gltf::WorldExtent extent{glm::dvec3(mesh.positions[0]), glm::dvec3(mesh.positions[0])};
+        for (const glm::vec3& p : mesh.positions) {
+            extent.min = glm::min(extent.min, glm::dvec3(p));
+            extent.max = glm::max(extent.max, glm::dvec3(p));
+        }
+        mesh.origin = gltf::chooseWorldOrigin(extent);
+        if (mesh.origin == glm::dvec3(0.0)) return;
+        for (glm::vec3& p : mesh.positions)
+            p = glm::vec3(glm::dvec3(p) - mesh.origin);
+    }
+
+    enum class PrimitiveKinds { All, Emitting, NotEmitting };
+
+    void appendPrimitives(int meshIndex, const glm::dmat4& transform, PrimitiveKinds kinds,
+                          TriangleSoup& soup) {
         const tinygltf::Mesh& mesh = model_.meshes[static_cast<std::size_t>(meshIndex)];
         for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
             const std::string where =
                 "mesh " + std::to_string(meshIndex) + ", primitive " + std::to_string(p);
             const tinygltf::Primitive& primitive = mesh.primitives[p];
             const std::uint32_t material = materialIndex(primitive.material, where);
-            gltf::appendPrimitiveTriangles(model_, primitive, world, material, texcoords_,
-                                           tangentsFor(material), where, scene_);
+            const bool emitting = scene_.materials[material].emits();
+            if ((kinds == PrimitiveKinds::Emitting && !emitting) ||
+                (kinds == PrimitiveKinds::NotEmitting && emitting))
+                continue;
+            gltf::appendPrimitiveTriangles(model_, primitive, transform, material, texcoords_,
+                                           tangentsFor(material), where, soup, scene_.repairs);
         }
     }
 
@@ -133,8 +218,11 @@ private:
     const tinygltf::Model& model_;
     Scene& scene_;
     gltf::Texcoords texcoords_;
+    const gltf::InstancingPlan& plan_;
     bool withTangents_; // some material has a normal texture
     std::optional<std::uint32_t> defaultMaterial_;
+    // Per glTF mesh: not read yet, or its slot in Scene::meshes (nullopt: nothing to keep).
+    std::vector<std::optional<std::optional<std::uint32_t>>> meshSlots_;
 };
 
 std::string formatPoint(const glm::dvec3& p) {
@@ -200,16 +288,17 @@ Scene buildScene(const std::string& path, const LoadOptions& options) {
     const gltf::Texcoords texcoords =
         scene.textures.empty() ? gltf::Texcoords::Skip : gltf::Texcoords::Read;
     const int sceneIndex = gltf::defaultSceneIndex(model);
+    const gltf::InstancingPlan plan = gltf::planInstancing(model, sceneIndex, options.instancing);
     // First the scene's extent in double, so that a far-away scene is recentred before its
     // positions are rounded to float.
-    const std::optional<gltf::WorldExtent> extent = gltf::worldExtent(model, sceneIndex);
+    const std::optional<gltf::WorldExtent> extent = gltf::worldExtent(model, sceneIndex, plan);
     scene.worldOrigin = extent ? gltf::chooseWorldOrigin(*extent) : glm::dvec3(0.0);
-    SceneBuilder builder(model, scene, texcoords);
+    SceneBuilder builder(model, scene, texcoords, plan);
     gltf::walkSceneNodes(
         model, sceneIndex,
         [&](int node, const glm::dmat4& world) { builder.visitNode(node, world); },
         glm::translate(glm::dmat4(1.0), -scene.worldOrigin));
-    if (scene.triangleCount() == 0 && scene.spheres.empty()) {
+    if (scene.triangleCount() == 0 && scene.instances.empty() && scene.spheres.empty()) {
         throw GltfProblem(noTrianglesMessage(scene));
     }
     std::vector<std::string> notes = loadNotes(model, options);

@@ -1,5 +1,6 @@
 // gltf_origin.cpp — a first walk over the default scene that measures its world-space bounds in
-// double (vertices, spheres and the positions of point and spot lights), and the rule that
+// double (vertices, or an instanced mesh's box, spheres and the positions of point and spot
+// lights), and the rule that
 // decides whether to recentre it. The loading walk then moves all of them alike, through the
 // root transform it applies to every node.
 #include "scene/gltf_origin.h"
@@ -12,6 +13,7 @@
 #include "scene/gltf_document.h"
 #include "scene/gltf_draco.h"
 #include "scene/gltf_lights.h"
+#include "scene/gltf_mesh_instancing.h"
 #include "scene/gltf_nodes.h"
 #include "scene/gltf_shapes.h"
 
@@ -22,71 +24,115 @@ bool isFinite(const glm::dvec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-class ExtentBuilder {
+// Bounds in double, grown point by point.
+class ExtentAccumulator {
 public:
-    explicit ExtentBuilder(const tinygltf::Model& model) : model_(model) {}
-
-    void visitNode(int nodeIndex, const glm::dmat4& world) {
-        if (const std::optional<WorldSphere> sphere = placeSphere(model_, nodeIndex, world)) {
-            addPoint(sphere->centre - glm::dvec3(sphere->radius));
-            addPoint(sphere->centre + glm::dvec3(sphere->radius));
-        }
-        if (const std::optional<SceneLight> light = placeLight(model_, nodeIndex, world)) {
-            // A directional light has no place; the others are points of the scene.
-            if (light->kind != LightKind::Directional) addPoint(glm::dvec3(world[3]));
-        }
-        const int mesh = model_.nodes[static_cast<std::size_t>(nodeIndex)].mesh;
-        if (mesh < 0 || static_cast<std::size_t>(mesh) >= model_.meshes.size()) return;
-        for (const tinygltf::Primitive& primitive :
-             model_.meshes[static_cast<std::size_t>(mesh)].primitives) {
-            const auto position = primitive.attributes.find("POSITION");
-            if (position == primitive.attributes.end()) continue;
-            if (isDracoPrimitive(primitive)) {
-                addAccessorBounds(position->second, world);
-            } else {
-                addVertices(position->second, world);
-            }
-        }
-    }
-
-    std::optional<WorldExtent> extent() const {
-        if (!any_) return std::nullopt;
-        return extent_;
-    }
-
-private:
-    // A Draco primitive's POSITION accessor has no data of its own, but the min and max that
-    // glTF requires of every POSITION accessor bound it; its 8 corners bound the transformed
-    // vertices.
-    void addAccessorBounds(int accessor, const glm::dmat4& world) {
-        if (accessor < 0 || static_cast<std::size_t>(accessor) >= model_.accessors.size()) return;
-        const tinygltf::Accessor& bounds = model_.accessors[static_cast<std::size_t>(accessor)];
-        if (bounds.minValues.size() != 3 || bounds.maxValues.size() != 3) return;
-        for (int corner = 0; corner < 8; ++corner) {
-            glm::dvec3 p;
-            for (int axis = 0; axis < 3; ++axis) {
-                const auto a = static_cast<std::size_t>(axis);
-                p[axis] = (corner >> axis) & 1 ? bounds.maxValues[a] : bounds.minValues[a];
-            }
-            addPoint(glm::dvec3(world * glm::dvec4(p, 1.0)));
-        }
-    }
-
-    void addVertices(int accessor, const glm::dmat4& world) {
-        for (const glm::vec3& p : readPositions(model_, accessor, "POSITION"))
-            addPoint(glm::dvec3(world * glm::dvec4(glm::dvec3(p), 1.0)));
-    }
-
     void addPoint(const glm::dvec3& w) {
         if (!isFinite(w)) return;
         extent_.min = any_ ? glm::min(extent_.min, w) : w;
         extent_.max = any_ ? glm::max(extent_.max, w) : w;
         any_ = true;
     }
+    void addBox(const WorldExtent& box, const glm::dmat4& transform) {
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::dvec3 p((corner & 1) ? box.max.x : box.min.x,
+                               (corner & 2) ? box.max.y : box.min.y,
+                               (corner & 4) ? box.max.z : box.min.z);
+            addPoint(glm::dvec3(transform * glm::dvec4(p, 1.0)));
+        }
+    }
+    std::optional<WorldExtent> extent() const {
+        if (!any_) return std::nullopt;
+        return extent_;
+    }
 
-    const tinygltf::Model& model_;
+private:
     WorldExtent extent_;
     bool any_ = false;
+};
+
+class ExtentBuilder {
+public:
+    ExtentBuilder(const tinygltf::Model& model, const InstancingPlan& plan)
+        : model_(model), plan_(plan), meshBoxes_(model.meshes.size()) {}
+
+    void visitNode(int nodeIndex, const glm::dmat4& world) {
+        if (const std::optional<WorldSphere> sphere = placeSphere(model_, nodeIndex, world)) {
+            extent_.addPoint(sphere->centre - glm::dvec3(sphere->radius));
+            extent_.addPoint(sphere->centre + glm::dvec3(sphere->radius));
+        }
+        if (const std::optional<SceneLight> light = placeLight(model_, nodeIndex, world)) {
+            // A directional light has no place; the others are points of the scene.
+            if (light->kind != LightKind::Directional) extent_.addPoint(glm::dvec3(world[3]));
+        }
+        const int mesh = model_.nodes[static_cast<std::size_t>(nodeIndex)].mesh;
+        if (mesh < 0 || static_cast<std::size_t>(mesh) >= model_.meshes.size()) return;
+        const std::optional<std::vector<glm::dmat4>> local =
+            meshInstanceTransforms(model_, nodeIndex);
+        if (!local) {
+            addMeshPlacement(mesh, world);
+            return;
+        }
+        for (const glm::dmat4& transform : *local)
+            addMeshPlacement(mesh, world * transform);
+    }
+
+    std::optional<WorldExtent> extent() const { return extent_.extent(); }
+
+private:
+    // A flattened placement adds its vertices, as the loader will place them; an instanced one
+    // the corners of its mesh's own box (read once), which is as good for choosing an origin.
+    void addMeshPlacement(int mesh, const glm::dmat4& transform) {
+        if (!plan_.isInstanced(mesh)) {
+            addMeshVertices(mesh, transform, extent_);
+            return;
+        }
+        std::optional<std::optional<WorldExtent>>& box = meshBoxes_[static_cast<std::size_t>(mesh)];
+        if (!box) {
+            ExtentAccumulator own;
+            addMeshVertices(mesh, glm::dmat4(1.0), own);
+            box = own.extent();
+        }
+        if (*box) extent_.addBox(**box, transform);
+    }
+
+    void addMeshVertices(int mesh, const glm::dmat4& transform, ExtentAccumulator& target) const {
+        for (const tinygltf::Primitive& primitive :
+             model_.meshes[static_cast<std::size_t>(mesh)].primitives) {
+            const auto position = primitive.attributes.find("POSITION");
+            if (position == primitive.attributes.end()) continue;
+            if (isDracoPrimitive(primitive)) {
+                addAccessorBounds(position->second, transform, target);
+            } else {
+                addVertices(position->second, transform, target);
+            }
+        }
+    }
+
+    // A Draco primitive's POSITION accessor has no data of its own, but the min and max that
+    // glTF requires of every POSITION accessor bound it; its 8 corners bound the transformed
+    // vertices.
+    void addAccessorBounds(int accessor, const glm::dmat4& transform,
+                           ExtentAccumulator& target) const {
+        if (accessor < 0 || static_cast<std::size_t>(accessor) >= model_.accessors.size()) return;
+        const tinygltf::Accessor& bounds = model_.accessors[static_cast<std::size_t>(accessor)];
+        if (bounds.minValues.size() != 3 || bounds.maxValues.size() != 3) return;
+        WorldExtent box;
+        box.min = glm::dvec3(bounds.minValues[0], bounds.minValues[1], bounds.minValues[2]);
+        box.max = glm::dvec3(bounds.maxValues[0], bounds.maxValues[1], bounds.maxValues[2]);
+        target.addBox(box, transform);
+    }
+
+    void addVertices(int accessor, const glm::dmat4& transform, ExtentAccumulator& target) const {
+        for (const glm::vec3& p : readPositions(model_, accessor, "POSITION"))
+            target.addPoint(glm::dvec3(transform * glm::dvec4(glm::dvec3(p), 1.0)));
+    }
+
+    const tinygltf::Model& model_;
+    const InstancingPlan& plan_;
+    ExtentAccumulator extent_;
+    // Per mesh: not yet read, or its own box (nullopt: no finite vertex).
+    std::vector<std::optional<std::optional<WorldExtent>>> meshBoxes_;
 };
 
 } // namespace
@@ -96,8 +142,9 @@ double WorldExtent::size() const {
     return std::max(side.x, std::max(side.y, side.z));
 }
 
-std::optional<WorldExtent> worldExtent(const tinygltf::Model& model, int sceneIndex) {
-    ExtentBuilder builder(model);
+std::optional<WorldExtent> worldExtent(const tinygltf::Model& model, int sceneIndex,
+                                       const InstancingPlan& plan) {
+    ExtentBuilder builder(model, plan);
     try {
         walkSceneNodes(model, sceneIndex,
                        [&](int node, const glm::dmat4& world) { builder.visitNode(node, world); });

@@ -8,6 +8,8 @@
 #include <glm/glm.hpp>
 #include <tiny_gltf.h>
 
+#include "scene/gltf_instancing_plan.h"
+
 namespace vkpt::gltf {
 
 // A scene is recentred when a coordinate of its centre exceeds this many times its largest side:
@@ -22,11 +24,12 @@ struct WorldExtent {
     double size() const; // the largest side
 };
 
-// Bounds of the default scene's vertex positions, spheres and point and spot lights in world
-// space, in double. Tolerant by design:
-// nullopt when the scene has no readable finite geometry or the file has a problem, which the
-// loading pass that follows reports in its own words.
-std::optional<WorldExtent> worldExtent(const tinygltf::Model& model, int sceneIndex);
+// Bounds of the default scene's vertex positions (for a mesh `plan` instances, the corners of
+// its own box at each placement), spheres and point and spot lights in world space, in double.
+// Tolerant by design: nullopt when the scene has no readable finite geometry or the file has a
+// problem, which the loading pass that follows reports in its own words.
+std::optional<WorldExtent> worldExtent(const tinygltf::Model& model, int sceneIndex,
+                                       const InstancingPlan& plan);
 
 // The centre of `extent` when it lies beyond kRecentreRatio times the scene's size from the
 // origin, else the origin.

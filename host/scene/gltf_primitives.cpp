@@ -259,16 +259,16 @@ glm::vec3 unitVector(const glm::vec3& v) {
 
 // A zero or non-finite normal in the file must still give a unit vector: a NaN in the normals
 // buffer would spread through every path that touches it. Counted once per vertex.
-void repairNormals(std::vector<glm::vec3>& normals, Scene& scene) {
+void repairNormals(std::vector<glm::vec3>& normals, GeometryRepairs& repairs) {
     for (glm::vec3& normal : normals) {
         const glm::vec3 unit = unitVector(normal);
-        if (unit == glm::vec3(0.0f)) ++scene.repairs.invalidNormals;
+        if (unit == glm::vec3(0.0f)) ++repairs.invalidNormals;
         normal = unit; // zero: replaced by the face normal per triangle
     }
 }
 
 void appendTriangle(const WorldGeometry& geometry, std::size_t first, std::uint32_t materialIndex,
-                    Scene& scene) {
+                    TriangleSoup& soup, GeometryRepairs& repairs) {
     std::uint32_t corners[3] = {geometry.indices[first], geometry.indices[first + 1],
                                 geometry.indices[first + 2]};
     if (geometry.mirrored) std::swap(corners[1], corners[2]);
@@ -280,34 +280,34 @@ void appendTriangle(const WorldGeometry& geometry, std::size_t first, std::uint3
     // coordinates near 1e19, lands here too: such a triangle is past what floats can render.)
     const glm::vec3 flat = unitVector(glm::cross(p1 - p0, p2 - p0));
     if (flat == glm::vec3(0.0f)) {
-        ++scene.repairs.zeroAreaTriangles;
+        ++repairs.zeroAreaTriangles;
         return;
     }
     for (std::uint32_t corner : corners) {
-        scene.positions.push_back(geometry.positions[corner]);
+        soup.positions.push_back(geometry.positions[corner]);
         const glm::vec3 normal = geometry.normals ? (*geometry.normals)[corner] : flat;
-        scene.normals.push_back(normal == glm::vec3(0.0f) ? flat : normal);
+        soup.normals.push_back(normal == glm::vec3(0.0f) ? flat : normal);
         if (geometry.withTexcoords) {
-            scene.texcoords.push_back(geometry.texcoords ? (*geometry.texcoords)[corner]
-                                                         : glm::vec2(0.0f));
+            soup.texcoords.push_back(geometry.texcoords ? (*geometry.texcoords)[corner]
+                                                        : glm::vec2(0.0f));
         }
-        if (geometry.tangentMode == Tangents::Zero) scene.tangents.emplace_back(0.0f);
+        if (geometry.tangentMode == Tangents::Zero) soup.tangents.emplace_back(0.0f);
         if (geometry.tangentMode == Tangents::Read && geometry.tangents) {
-            scene.tangents.push_back((*geometry.tangents)[corner]);
+            soup.tangents.push_back((*geometry.tangents)[corner]);
         }
     }
-    scene.materialIndices.push_back(materialIndex);
+    soup.materialIndices.push_back(materialIndex);
 }
 
 // MikkTSpace frames for the corners from firstCorner on, as they were appended: world-space
 // positions, the final shading normals and TEXCOORD_0.
-void appendGeneratedTangents(std::size_t firstCorner, Scene& scene) {
-    const std::size_t count = scene.positions.size() - firstCorner;
-    const std::span<const glm::vec3> positions(scene.positions.data() + firstCorner, count);
-    const std::span<const glm::vec3> normals(scene.normals.data() + firstCorner, count);
-    const std::span<const glm::vec2> texcoords(scene.texcoords.data() + firstCorner, count);
+void appendGeneratedTangents(std::size_t firstCorner, TriangleSoup& soup) {
+    const std::size_t count = soup.positions.size() - firstCorner;
+    const std::span<const glm::vec3> positions(soup.positions.data() + firstCorner, count);
+    const std::span<const glm::vec3> normals(soup.normals.data() + firstCorner, count);
+    const std::span<const glm::vec2> texcoords(soup.texcoords.data() + firstCorner, count);
     const std::vector<glm::vec4> generated = generateTangents(positions, normals, texcoords);
-    scene.tangents.insert(scene.tangents.end(), generated.begin(), generated.end());
+    soup.tangents.insert(soup.tangents.end(), generated.begin(), generated.end());
 }
 
 } // namespace
@@ -315,16 +315,16 @@ void appendGeneratedTangents(std::size_t firstCorner, Scene& scene) {
 void appendPrimitiveTriangles(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
                               const glm::dmat4& world, std::uint32_t materialIndex,
                               Texcoords texcoords, Tangents tangents, const std::string& where,
-                              Scene& scene) {
+                              TriangleSoup& soup, GeometryRepairs& repairs) {
     requireTriangles(primitive.mode, where);
     WorldGeometry geometry = readWorldGeometry(model, primitive, world, texcoords, tangents, where);
-    if (geometry.normals) repairNormals(*geometry.normals, scene);
-    const std::size_t firstCorner = scene.positions.size();
+    if (geometry.normals) repairNormals(*geometry.normals, repairs);
+    const std::size_t firstCorner = soup.positions.size();
     for (std::size_t first = 0; first < geometry.indices.size(); first += 3) {
-        appendTriangle(geometry, first, materialIndex, scene);
+        appendTriangle(geometry, first, materialIndex, soup, repairs);
     }
     if (tangents == Tangents::Read && !geometry.tangents)
-        appendGeneratedTangents(firstCorner, scene);
+        appendGeneratedTangents(firstCorner, soup);
 }
 
 } // namespace vkpt::gltf

@@ -1,4 +1,5 @@
-// gltf_primitives.h — one mesh primitive to world-space triangles with shading normals.
+// gltf_primitives.h — one mesh primitive to triangles with shading normals, in world space or in
+// its mesh's own.
 #pragma once
 
 #include <cstdint>
@@ -11,23 +12,23 @@
 
 namespace vkpt::gltf {
 
-// Whether to fill Scene::texcoords: only a scene with textures needs them.
+// Whether to fill TriangleSoup::texcoords: only a scene with textures needs them.
 enum class Texcoords { Skip, Read };
 
-// What to put in Scene::tangents for a primitive: nothing (the scene has no normal textures),
-// zeros (its material has none), or its frames: the file's TANGENT, else generated
+// What to put in TriangleSoup::tangents for a primitive: nothing (the scene has no normal
+// textures), zeros (its material has none), or its frames: the file's TANGENT, else generated
 // (scene/tangents.h). Read needs Texcoords::Read.
 enum class Tangents { Skip, Zero, Read };
 
-// Appends the primitive's triangles, in world space and with material materialIndex, to the
-// scene's triangle soup, with Texcoords::Read their TEXCOORD_0 ((0, 0) when absent), and their
-// tangents as `tangents` asks.
-// Normals are transformed by the inverse transpose, or generated flat when absent; a mirroring
-// transform swaps two corners so that the front face stays the front face. `where` names the
-// primitive ("mesh 3, primitive 0") in messages.
+// Appends the primitive's triangles, transformed by `world` (the identity for a mesh kept in its
+// own space) and with material materialIndex, to `soup`, with Texcoords::Read their TEXCOORD_0 ((0,
+// 0) when absent), and their tangents as `tangents` asks. Normals are transformed by the inverse
+// transpose, or generated flat when absent; a mirroring transform swaps two corners so that the
+// front face stays the front face. `where` names the primitive ("mesh 3, primitive 0") in messages;
+// what was repaired or skipped is counted in `repairs`.
 void appendPrimitiveTriangles(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
                               const glm::dmat4& world, std::uint32_t materialIndex,
                               Texcoords texcoords, Tangents tangents, const std::string& where,
-                              Scene& scene);
+                              TriangleSoup& soup, GeometryRepairs& repairs);
 
 } // namespace vkpt::gltf

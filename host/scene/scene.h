@@ -1,4 +1,5 @@
-// scene.h — the loaded scene as plain structs: world-space triangles, materials, cameras.
+// scene.h — the loaded scene as plain structs: world-space triangles, meshes placed by
+// instances, materials, cameras.
 // No Vulkan and no BVH here; everything downstream starts from this.
 #pragma once
 
@@ -60,6 +61,8 @@ struct SceneMaterial {
     TextureReference sheenRoughnessTexture; // linear: A roughness
 
     bool hasClearcoat() const { return clearcoat > 0.0f; }
+    // Some colour of emission: such a material's triangles are never instanced (Scene::meshes).
+    bool emits() const { return emission.r > 0.0f || emission.g > 0.0f || emission.b > 0.0f; }
     // Some normal texture shades the material (its own, or its clearcoat's): tangents needed.
     bool hasNormalMap() const {
         return normalTexture.texture >= 0 ||
@@ -159,11 +162,9 @@ struct GeometryRepairs {
     std::size_t invalidNormals = 0;    // zero-length or non-finite vertex normals: face normal used
 };
 
-// A triangle soup in world space: triangle i has vertices positions[3i .. 3i+2] (counter-
-// clockwise seen from its front face), shading normals normals[3i .. 3i+2] and material
-// materialIndices[i].
-struct Scene {
-    std::string sourcePath;
+// A triangle soup: triangle i has vertices positions[3i .. 3i+2] (counter-clockwise seen from
+// its front face), shading normals normals[3i .. 3i+2] and material materialIndices[i].
+struct TriangleSoup {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;
     std::vector<std::uint32_t> materialIndices;
@@ -175,10 +176,40 @@ struct Scene {
     // of materials without one: no tangent frame). From the file's TANGENT, else generated
     // (scene/tangents.h).
     std::vector<glm::vec4> tangents;
+
+    std::size_t triangleCount() const { return materialIndices.size(); }
+};
+
+// A glTF mesh kept once, in its own space, and placed by instances (docs/scene-model.md,
+// "Instancing"). Its emitting primitives are not here: light sampling needs every placed
+// emitter in world space, so they are flattened into the scene's own soup at each placement.
+struct SceneMesh : TriangleSoup {
+    std::string name; // "mesh 3 (name)", for messages and statistics
+    // The point of the file's mesh space that positions are measured from: the mesh's centre
+    // when it lies far from its own origin relative to its size (as the loader recentres a
+    // whole scene: Scene::worldOrigin), so that rays moved into this space keep float
+    // precision. Instances place the recentred mesh (their transforms include the move).
+    glm::dvec3 origin{0.0};
+};
+
+// One placement of a SceneMesh: its vertices are objectToWorld × the mesh's positions.
+// Invertible (a placement that flattens a dimension is flattened instead: its triangles have no
+// area and are skipped, as the loader does for any zero-area triangle).
+struct SceneInstance {
+    std::uint32_t mesh = 0;        // index into Scene::meshes
+    glm::dmat4 objectToWorld{1.0}; // affine; after the recentring (worldOrigin)
+};
+
+// The loaded scene: its world-space triangle soup (every placement the loader flattened),
+// spheres, the meshes it kept once and their placements, and what lights and frames it.
+struct Scene : TriangleSoup {
+    std::string sourcePath;
     std::vector<SceneMaterial> materials;
     std::vector<SceneImage> images;
     std::vector<SceneTexture> textures;
     std::vector<SceneSphere> spheres;
+    std::vector<SceneMesh> meshes;        // empty unless some mesh is instanced
+    std::vector<SceneInstance> instances; // placements of meshes, in node-walk order
     std::vector<SceneLight> lights;
     SceneEnvironment environment;
     std::vector<SceneCamera> cameras; // in depth-first node-walk order
@@ -188,9 +219,20 @@ struct Scene {
     glm::dvec3 worldOrigin{0.0};
     GeometryRepairs repairs;
 
-    std::size_t triangleCount() const { return materialIndices.size(); }
+    // The triangles a render sees: the soup's and every instance's mesh's.
+    std::uint64_t placedTriangleCount() const;
+    // The triangles kept in memory: the soup's and each mesh's once.
+    std::uint64_t storedTriangleCount() const;
 };
 
+// World-space bounds of the soup, the spheres and every instance (its mesh's box, transformed:
+// a box around the placed vertices, not the tightest one).
 Bounds computeBounds(const Scene& scene);
+
+// Bounds of a soup's vertices in its own space.
+Bounds computeBounds(const TriangleSoup& soup);
+
+// The box around `bounds` after an affine transform: its eight corners transformed, in double.
+Bounds transformBounds(const Bounds& bounds, const glm::dmat4& transform);
 
 } // namespace vkpt

@@ -42,6 +42,9 @@ std::vector<char> usedMaterials(const Scene& scene) {
     std::vector<char> used(scene.materials.size(), 0);
     for (std::uint32_t material : scene.materialIndices)
         used[material] = 1;
+    for (const SceneMesh& mesh : scene.meshes) // the loader keeps only meshes it places
+        for (std::uint32_t material : mesh.materialIndices)
+            used[material] = 1;
     for (const SceneSphere& sphere : scene.spheres)
         used[sphere.material] = 1;
     return used;
@@ -127,6 +130,7 @@ std::array<bool, FEATURE_COUNT> SceneFeatures::kernelFeatures() const {
     on[FEATURE_TRANSMISSION] = transmission;
     on[FEATURE_CLEARCOAT] = clearcoatMaterials;
     on[FEATURE_SHEEN] = sheenMaterials;
+    on[FEATURE_INSTANCES] = instances;
     return on;
 }
 
@@ -135,8 +139,9 @@ SceneFeatures analyseScene(const Scene& scene) {
     const std::vector<char> used = usedMaterials(scene);
     for (std::size_t m = 0; m < scene.materials.size(); ++m)
         if (used[m]) addMaterial(scene.materials[m], features);
-    features.triangles = scene.triangleCount() > 0;
+    features.triangles = scene.triangleCount() > 0 || !scene.instances.empty();
     features.spheres = !scene.spheres.empty();
+    features.instances = !scene.instances.empty();
     const std::uint32_t triangles = emittingTriangles(scene);
     const std::uint32_t spheres = emittingSpheres(scene);
     features.emissiveTriangles = triangles > 0;
@@ -161,6 +166,7 @@ SceneFeatures generalFeatures(const SceneFeatures& used) {
     all.emissiveTriangles = all.emissiveSpheres = true;
     all.pointLights = all.spotLights = all.directionalLights = true;
     all.environment = all.environmentMap = true;
+    all.instances = used.instances;
     all.emitterCount = used.emitterCount;
     all.general = true;
     return all;
@@ -186,6 +192,7 @@ std::string describeFeatures(const SceneFeatures& features) {
     appendIf(features.transmission, "transmission", names);
     appendIf(features.triangles, "triangles", names);
     appendIf(features.spheres, "spheres", names);
+    appendIf(features.instances, "instances", names);
     appendIf(features.emissiveTriangles, "emissive triangles", names);
     appendIf(features.emissiveSpheres, "emissive spheres", names);
     appendIf(features.pointLights, "point lights", names);

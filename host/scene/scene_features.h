@@ -32,6 +32,9 @@ struct SceneFeatures {
     bool sheenTextures = false;      // sheen colour or sheen roughness textures
     bool triangles = false;
     bool spheres = false;
+    // Meshes placed by instances: a two-level BVH. A layout, not an optional feature: --general
+    // keeps the scene's own.
+    bool instances = false;
     bool emissiveTriangles = false;
     bool emissiveSpheres = false;
     bool pointLights = false;

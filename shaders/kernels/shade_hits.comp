@@ -224,8 +224,13 @@ Shading shadeRay(uint i) {
         Vertex vertex;
         vertex.ray = i;
         vertex.record = record;
-        vertex.surface =
-            makeSurfacePoint(hit.triangle, triangleHitOf(hit), record.origin, record.direction);
+#if VKPT_INSTANCES
+        uint instance = hitInstances[i];
+#else
+        uint instance = NO_INSTANCE;
+#endif
+        vertex.surface = makeSurfacePoint(hit.triangle, instance, triangleHitOf(hit), record.origin,
+                                          record.direction);
         PathState before = fetchPathState(record.slot);
         PathState state = before;
         // The segment to this hit crossed the path's medium (Beer–Lambert, shared/volume.h).

@@ -18,6 +18,9 @@ Traversal traceRay(uint i) {
     RayRecord ray = fetchRay(queueHalf * frame.slotCount + i);
     Traversal walk = traceClosest(ray.origin, ray.direction, 0.0, VKPT_FAR);
     hits[i] = walk.hit;
+#if VKPT_INSTANCES
+    hitInstances[i] = walk.instance;
+#endif
     return walk;
 }
 

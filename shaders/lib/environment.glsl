@@ -5,6 +5,15 @@
 #define VKPT_ENVIRONMENT_GLSL
 
 #include "lib/scene_view.glsl"
+
+vec4 sceneEnvironmentTexel(uint i) {
+    return environmentTexelsAt(i);
+}
+
+float sceneEnvironmentCdf(uint i) {
+    return environmentCdfAt(i);
+}
+
 #include "shared/scene_environment.h"
 
 #endif // VKPT_ENVIRONMENT_GLSL

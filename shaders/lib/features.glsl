@@ -34,5 +34,9 @@ layout(constant_id = FEATURE_TRANSMISSION) const bool featureTransmission = true
 layout(constant_id = FEATURE_CLEARCOAT) const bool featureClearcoat = true;
 // Some material has a KHR_materials_sheen layer.
 layout(constant_id = FEATURE_SHEEN) const bool featureSheen = true;
+// A two-level BVH: the top level's leaves are instances of meshes (shared/instance.h). A layout
+// the scene has or has not, not a feature the general kernels add: the kernels it changes are
+// built once for each (VKPT_INSTANCES, shared/host_device.h), so it is a constant of the build.
+const bool featureInstances = VKPT_INSTANCES != 0;
 
 #endif // VKPT_FEATURES_GLSL

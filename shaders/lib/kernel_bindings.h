@@ -38,9 +38,11 @@
     TEXELS(BINDING_MATERIALS)                                                                      \
     TEXELS(BINDING_TEXTURES)                                                                       \
     TEXELS(BINDING_RAY_TEXELS)                                                                     \
+    TEXELS(BINDING_INSTANCES)                                                                      \
     BUFFER(BINDING_TRIANGLE_UVS, SCENE, vec2, triangleUvs)                                         \
-    BUFFER(BINDING_TEXTURE_TEXELS, READ, uint, textureTexels)                                      \
+    BUFFER(BINDING_TEXTURE_TEXELS, SCENE, uint, textureTexels)                                     \
     BUFFER(BINDING_HITS, WRITE, HitRecord, hits)                                                   \
+    BUFFER(BINDING_HIT_INSTANCES, WRITE, uint, hitInstances)                                       \
     BUFFER(BINDING_QUEUE_COUNTERS, READ_WRITE, uint, queueCounters)
 
 #define SHADE_HITS_BINDINGS(UNIFORM, TEXELS, BUFFER)                                               \
@@ -54,11 +56,13 @@
     TEXELS(BINDING_PATH_STATE_TEXELS)                                                              \
     TEXELS(BINDING_RAY_TEXELS)                                                                     \
     TEXELS(BINDING_HIT_TEXELS)                                                                     \
+    TEXELS(BINDING_INSTANCES)                                                                      \
+    BUFFER(BINDING_HIT_INSTANCES, READ, uint, hitInstances)                                        \
     BUFFER(BINDING_TRIANGLE_UVS, SCENE, vec2, triangleUvs)                                         \
-    BUFFER(BINDING_TEXTURE_TEXELS, READ, uint, textureTexels)                                      \
+    BUFFER(BINDING_TEXTURE_TEXELS, SCENE, uint, textureTexels)                                     \
     BUFFER(BINDING_EMITTER_CDF, SCENE, float, emitterCdf)                                          \
-    BUFFER(BINDING_ENVIRONMENT_TEXELS, READ, vec4, environmentTexels)                              \
-    BUFFER(BINDING_ENVIRONMENT_CDF, READ, float, environmentCdf)                                   \
+    BUFFER(BINDING_ENVIRONMENT_TEXELS, SCENE, vec4, environmentTexels)                             \
+    BUFFER(BINDING_ENVIRONMENT_CDF, SCENE, float, environmentCdf)                                  \
     BUFFER(BINDING_ALBEDO_TABLES, READ, float, albedoTables)                                       \
     BUFFER(BINDING_PATH_STATES, WRITE, PathState, pathStates)                                      \
     BUFFER(BINDING_RAYS, WRITE, RayRecord, rays)                                                   \
@@ -72,10 +76,11 @@
     TEXELS(BINDING_MATERIALS)                                                                      \
     TEXELS(BINDING_TEXTURES)                                                                       \
     TEXELS(BINDING_SHADOW_RAY_TEXELS)                                                              \
+    TEXELS(BINDING_INSTANCES)                                                                      \
     BUFFER(BINDING_TRIANGLE_UVS, SCENE, vec2, triangleUvs)                                         \
-    BUFFER(BINDING_TEXTURE_TEXELS, READ, uint, textureTexels)                                      \
-    BUFFER(BINDING_ENVIRONMENT_TEXELS, READ, vec4, environmentTexels)                              \
-    BUFFER(BINDING_ENVIRONMENT_CDF, READ, float, environmentCdf)                                   \
+    BUFFER(BINDING_TEXTURE_TEXELS, SCENE, uint, textureTexels)                                     \
+    BUFFER(BINDING_ENVIRONMENT_TEXELS, SCENE, vec4, environmentTexels)                             \
+    BUFFER(BINDING_ENVIRONMENT_CDF, SCENE, float, environmentCdf)                                  \
     BUFFER(BINDING_SHADOW_RAYS, WRITE, ShadowRay, shadowRays)                                      \
     BUFFER(BINDING_QUEUE_COUNTERS, READ_WRITE, uint, queueCounters)
 

@@ -12,6 +12,10 @@ vec2 sceneUv(uint k) {
     return triangleUvsAt(k);
 }
 
+uint sceneTextureTexel(uint i) {
+    return textureTexelsAt(i);
+}
+
 #include "shared/materials.h"
 
 #endif // VKPT_MATERIALS_GLSL

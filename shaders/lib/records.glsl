@@ -33,6 +33,7 @@ VKPT_SCENE_TEXELS(BINDING_TRIANGLE_TANGENTS, triangleTangentTexels)
 VKPT_SCENE_TEXELS(BINDING_MATERIALS, materialTexels)
 VKPT_SCENE_TEXELS(BINDING_TEXTURES, textureInfoTexels)
 VKPT_SCENE_TEXELS(BINDING_EMITTERS, emitterTexels)
+VKPT_SCENE_TEXELS(BINDING_INSTANCES, instanceTexels)
 // Work arrays, sized by the host to fit one binding (host/render/work_buffers.cpp).
 VKPT_WORK_TEXELS(BINDING_RAY_TEXELS, rayTexels)
 VKPT_WORK_TEXELS(BINDING_HIT_TEXELS, hitTexels)
@@ -104,6 +105,26 @@ Material fetchMaterial(uint i) {
                     uintBitsToFloat(clearcoat.z), clearcoat.w, fetchTextureSlot(i, 19u),
                     fetchTextureSlot(i, 21u), fetchTextureSlot(i, 23u), fetchTextureSlot(i, 25u),
                     fetchTextureSlot(i, 27u));
+}
+
+#define INSTANCE_TEXELS 7u // sizeof(Instance) / 16
+
+// What a walk reads of an instance: the inverse transform and the mesh's root (texels 0–3); the
+// compiler drops the rest.
+Instance fetchWalkInstance(uint i) {
+    uvec4 flags = RECORD_TEXEL(instanceTexels, INSTANCE_TEXELS, i, 3u);
+    return Instance(texelVec4(RECORD_TEXEL(instanceTexels, INSTANCE_TEXELS, i, 0u)),
+                    texelVec4(RECORD_TEXEL(instanceTexels, INSTANCE_TEXELS, i, 1u)),
+                    texelVec4(RECORD_TEXEL(instanceTexels, INSTANCE_TEXELS, i, 2u)), flags.x,
+                    flags.y, flags.z, flags.w, vec4(0.0), vec4(0.0), vec4(0.0));
+}
+
+Instance fetchInstance(uint i) {
+    Instance x = fetchWalkInstance(i);
+    x.objectToWorld0 = texelVec4(RECORD_TEXEL(instanceTexels, INSTANCE_TEXELS, i, 4u));
+    x.objectToWorld1 = texelVec4(RECORD_TEXEL(instanceTexels, INSTANCE_TEXELS, i, 5u));
+    x.objectToWorld2 = texelVec4(RECORD_TEXEL(instanceTexels, INSTANCE_TEXELS, i, 6u));
+    return x;
 }
 
 TextureInfo fetchTextureInfo(uint i) {

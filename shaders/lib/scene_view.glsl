@@ -3,7 +3,8 @@
 // records (lib/records.glsl) and the frame's parameters, and the sceneHas* switches as the
 // kernel's specialisation constants (lib/features.glsl), so that code for a feature the scene
 // lacks folds away. The arrays a kernel declares itself are read where they are needed:
-// triangleUvs in lib/materials.glsl, emitterCdf in lib/lights.glsl.
+// triangleUvs and textureTexels in lib/materials.glsl, environmentTexels and environmentCdf in
+// lib/environment.glsl, emitterCdf in lib/lights.glsl.
 #ifndef VKPT_SCENE_VIEW_GLSL
 #define VKPT_SCENE_VIEW_GLSL
 
@@ -25,6 +26,10 @@ TriangleTangents sceneTangents(uint i) {
 
 Material sceneMaterial(uint i) {
     return fetchMaterial(i);
+}
+
+Instance sceneInstance(uint i) {
+    return fetchInstance(i);
 }
 
 TextureInfo sceneTexture(uint i) {
@@ -89,6 +94,10 @@ bool sceneHasClearcoat() {
 
 bool sceneHasSheen() {
     return featureSheen;
+}
+
+bool sceneHasInstances() {
+    return featureInstances;
 }
 
 // trace_closest's record of a hit as the shared code takes it.

@@ -12,6 +12,7 @@
 Traversal noTraversal() {
     Traversal none;
     none.hit = HitRecord(VKPT_FAR, 0.0, 0.0, NO_HIT);
+    none.instance = NO_INSTANCE;
     none.truncated = false;
     none.nodesVisited = 0u;
     none.triangleTests = 0u;

@@ -1,5 +1,6 @@
 // traverse.glsl — the kernels' BVH walk: shared/wide_bvh.h's stackless walk of the 8-wide
-// compressed nodes, reading nodes and primitives as texels (lib/records.glsl). A
+// compressed nodes, reading nodes, primitives and (two-level scenes, FEATURE_INSTANCES)
+// instances as texels (lib/records.glsl). A
 // leaf's primitives are triangles or spheres (FEATURE_SPHERES); a crossing of an alpha-masked
 // material's cut-out (FEATURE_ALPHA_MASK, shared/materials.h's isCutOut, which the
 // reference's AlphaMaskFilter asks too) is no hit, for every kind of ray, in the same order of
@@ -25,10 +26,19 @@ bool bvhHasAlphaMask() {
     return featureAlphaMask;
 }
 
+bool bvhHasInstances() {
+    return featureInstances;
+}
+
+Instance bvhInstance(uint index) {
+    return fetchWalkInstance(index);
+}
+
 #include "shared/wide_bvh.h"
 
 struct Traversal {
     HitRecord hit;  // the closest hit found, triangle NO_HIT when none
+    uint instance;  // its instance (two-level scenes), else NO_INSTANCE
     bool truncated; // the walk stopped before its end (a driver's loop limit, docs/gpu.md)
     uint nodesVisited;
     uint triangleTests;
@@ -50,6 +60,7 @@ Traversal walkBvh(vec3 origin, vec3 direction, float tMin, float tMax, bool stop
     } while (featureAlphaMask && pending.primitive != NO_PRIMITIVE);
     Traversal result;
     result.hit = HitRecord(walk.t, walk.u, walk.v, walk.primitive);
+    result.instance = walk.hitInstance;
     result.truncated = wideWalkTruncated(walk);
     result.nodesVisited = walk.nodesVisited;
     result.triangleTests = walk.primitiveTests;

@@ -48,7 +48,9 @@ namespace vkpt::gpu {
 #define BINDING_PATH_STATE_TEXELS 23
 #define BINDING_TRIANGLE_TANGENTS 24 // TriangleTangents, uniform texel buffer (normal maps)
 #define BINDING_ALBEDO_TABLES 25     // float, the layered BSDF's tables (shared/albedo_lookup.h)
-#define BINDING_COUNT 26
+#define BINDING_INSTANCES 26         // Instance, uniform texel buffer (two-level scenes)
+#define BINDING_HIT_INSTANCES 27     // uint per hit: the instance hit (two-level scenes)
+#define BINDING_COUNT 28
 
 // A scene array larger than one binding may hold (maxStorageBufferRange, maxTexelBufferElements,
 // maxMemoryAllocationSize) is split into up to SCENE_ARRAY_MAX_CHUNKS buffers of 2^k elements

@@ -4,29 +4,22 @@
 // distribution in (u, v), marginal over rows then conditional within the row, and the
 // Jacobian 2π² sin θ from (u, v) to solid angle).
 //
-// The C++ side receives the map's buffers as parameters; GLSL reads the storage buffers the
-// includer declares under the same names:
-//   vec4 environmentTexels[]: width × height RGB (w unused), row 0 at the top (+Y);
-//   float environmentCdf[]:   height rows of width inclusive conditional entries (each row
-//                             ends at 1), then height inclusive marginal entries (ending at 1).
+// The map is read one element at a time through scene_view.h's accessors: a span of the
+// SceneView on the C++ side, the kernels' arrays, which may be split across several buffers,
+// on the GLSL side (lib/environment.glsl):
+//   vec4 sceneEnvironmentTexel(i):  width × height RGB (w unused), row 0 at the top (+Y);
+//   float sceneEnvironmentCdf(i):   height rows of width inclusive conditional entries (each
+//                                   row ends at 1), then height inclusive marginal entries
+//                                   (ending at 1).
 #ifndef VKPT_ENVIRONMENT_H
 #define VKPT_ENVIRONMENT_H
 
 #include "host_device.h"
 #include "sampling.h"
+#include "scene_view.h"
 
 #ifdef __cplusplus
 namespace vkpt::gpu {
-#define VKPT_ENVIRONMENT_PARAM                                                                     \
-    , [[maybe_unused]] const vec4 *environmentTexels, [[maybe_unused]] const float *environmentCdf
-#define VKPT_ENVIRONMENT_ARG , environmentTexels, environmentCdf
-#define VKPT_ENVIRONMENT_CDF_PARAM , const float* environmentCdf
-#define VKPT_ENVIRONMENT_CDF_ARG , environmentCdf
-#else
-#define VKPT_ENVIRONMENT_PARAM
-#define VKPT_ENVIRONMENT_ARG
-#define VKPT_ENVIRONMENT_CDF_PARAM
-#define VKPT_ENVIRONMENT_CDF_ARG
 #endif
 
 // GLSL's two-argument arctangent atan(y, x) (host_device.h maps it onto GLM), with the value
@@ -71,11 +64,11 @@ VKPT_FN uint environmentCell(float x, uint n) {
     return scaled > 0.0f ? uint(min(scaled, float(n - 1u))) : 0u;
 }
 
-VKPT_FN vec3 environmentRadiance(EnvironmentParams env, vec3 unitDirection VKPT_ENVIRONMENT_PARAM) {
+VKPT_FN vec3 environmentRadiance(EnvironmentParams env, vec3 unitDirection VKPT_SCENE_PARAM) {
     if (env.width == 0u) return env.radiance;
     vec2 uv = directionToEquirect(unitDirection);
     uint texel = environmentCell(uv.y, env.height) * env.width + environmentCell(uv.x, env.width);
-    return vec3(environmentTexels[texel]) * env.radiance;
+    return vec3(sceneEnvironmentTexel(texel VKPT_SCENE_ARG)) * env.radiance;
 }
 
 struct EnvironmentSample {
@@ -97,12 +90,12 @@ VKPT_FN EnvironmentSample environmentNoSample() {
 // The first of `count` inclusive CDF entries starting at `first` that exceeds u
 // (std::upper_bound), the last one if none does. An entry equal to its predecessor (weight 0)
 // is never returned for u >= 0: any u below it is also below the predecessor.
-VKPT_FN uint environmentUpperBound(uint first, uint count, float u VKPT_ENVIRONMENT_CDF_PARAM) {
+VKPT_FN uint environmentUpperBound(uint first, uint count, float u VKPT_SCENE_PARAM) {
     uint lo = 0u;
     uint hi = count;
     while (lo < hi) {
         uint mid = (lo + hi) / 2u;
-        if (u < environmentCdf[first + mid]) {
+        if (u < sceneEnvironmentCdf(first + mid VKPT_SCENE_ARG)) {
             hi = mid;
         } else {
             lo = mid + 1u;
@@ -114,13 +107,13 @@ VKPT_FN uint environmentUpperBound(uint first, uint count, float u VKPT_ENVIRONM
 // The CDF below entry `index`, and the entry's probability: its CDF step. The pdf is read from
 // the stored floats, not from the weights they came from, so that it is exactly the
 // probability the search realises.
-VKPT_FN float environmentCdfBelow(uint first, uint index VKPT_ENVIRONMENT_CDF_PARAM) {
-    return index > 0u ? environmentCdf[first + index - 1u] : 0.0f;
+VKPT_FN float environmentCdfBelow(uint first, uint index VKPT_SCENE_PARAM) {
+    return index > 0u ? sceneEnvironmentCdf(first + index - 1u VKPT_SCENE_ARG) : 0.0f;
 }
 
-VKPT_FN float environmentCdfStep(uint first, uint index VKPT_ENVIRONMENT_CDF_PARAM) {
-    return environmentCdf[first + index] -
-           environmentCdfBelow(first, index VKPT_ENVIRONMENT_CDF_ARG);
+VKPT_FN float environmentCdfStep(uint first, uint index VKPT_SCENE_PARAM) {
+    return sceneEnvironmentCdf(first + index VKPT_SCENE_ARG) -
+           environmentCdfBelow(first, index VKPT_SCENE_ARG);
 }
 
 // (u, v) density → solid-angle density: dω = 2π² sin θ du dv. sin θ is taken from the
@@ -138,7 +131,7 @@ VKPT_FN float environmentOffsetInStep(float u, float below, float step) {
 }
 
 // u.x chooses the row by the marginal CDF, u.y the column by that row's conditional CDF.
-VKPT_FN EnvironmentSample sampleEnvironment(EnvironmentParams env, vec2 u VKPT_ENVIRONMENT_PARAM) {
+VKPT_FN EnvironmentSample sampleEnvironment(EnvironmentParams env, vec2 u VKPT_SCENE_PARAM) {
     EnvironmentSample result = environmentNoSample();
     if (env.width == 0u) {
         result.direction = sampleUniformSphere(u);
@@ -148,15 +141,15 @@ VKPT_FN EnvironmentSample sampleEnvironment(EnvironmentParams env, vec2 u VKPT_E
         return result;
     }
     uint marginal = env.width * env.height;
-    uint row = environmentUpperBound(marginal, env.height, u.x VKPT_ENVIRONMENT_CDF_ARG);
-    float rowProbability = environmentCdfStep(marginal, row VKPT_ENVIRONMENT_CDF_ARG);
+    uint row = environmentUpperBound(marginal, env.height, u.x VKPT_SCENE_ARG);
+    float rowProbability = environmentCdfStep(marginal, row VKPT_SCENE_ARG);
     uint rowStart = row * env.width;
-    uint column = environmentUpperBound(rowStart, env.width, u.y VKPT_ENVIRONMENT_CDF_ARG);
-    float columnProbability = environmentCdfStep(rowStart, column VKPT_ENVIRONMENT_CDF_ARG);
+    uint column = environmentUpperBound(rowStart, env.width, u.y VKPT_SCENE_ARG);
+    float columnProbability = environmentCdfStep(rowStart, column VKPT_SCENE_ARG);
     if (!(rowProbability > 0.0f) || !(columnProbability > 0.0f)) return result;
 
-    float rowBelow = environmentCdfBelow(marginal, row VKPT_ENVIRONMENT_CDF_ARG);
-    float columnBelow = environmentCdfBelow(rowStart, column VKPT_ENVIRONMENT_CDF_ARG);
+    float rowBelow = environmentCdfBelow(marginal, row VKPT_SCENE_ARG);
+    float columnBelow = environmentCdfBelow(rowStart, column VKPT_SCENE_ARG);
     float dv = environmentOffsetInStep(u.x, rowBelow, rowProbability);
     float du = environmentOffsetInStep(u.y, columnBelow, columnProbability);
     vec2 uv = vec2((float(column) + du) / float(env.width), (float(row) + dv) / float(env.height));
@@ -165,19 +158,19 @@ VKPT_FN EnvironmentSample sampleEnvironment(EnvironmentParams env, vec2 u VKPT_E
     result.pdf = environmentSolidAnglePdf(pdfUv, result.direction);
     // The chosen texel's own radiance: a lookup by direction could land in the neighbour when
     // the point rounds onto a texel edge, and radiance/pdf must belong to the same texel.
-    result.radiance = vec3(environmentTexels[rowStart + column]) * env.radiance;
+    result.radiance = vec3(sceneEnvironmentTexel(rowStart + column VKPT_SCENE_ARG)) * env.radiance;
     result.valid = result.pdf > 0.0f;
     return result;
 }
 
 // The solid-angle pdf with which sampleEnvironment produces unitDirection.
-VKPT_FN float environmentPdf(EnvironmentParams env, vec3 unitDirection VKPT_ENVIRONMENT_PARAM) {
+VKPT_FN float environmentPdf(EnvironmentParams env, vec3 unitDirection VKPT_SCENE_PARAM) {
     if (env.width == 0u) return uniformSpherePdf();
     vec2 uv = directionToEquirect(unitDirection);
     uint row = environmentCell(uv.y, env.height);
     uint column = environmentCell(uv.x, env.width);
-    float rowProbability = environmentCdfStep(env.width * env.height, row VKPT_ENVIRONMENT_CDF_ARG);
-    float columnProbability = environmentCdfStep(row * env.width, column VKPT_ENVIRONMENT_CDF_ARG);
+    float rowProbability = environmentCdfStep(env.width * env.height, row VKPT_SCENE_ARG);
+    float columnProbability = environmentCdfStep(row * env.width, column VKPT_SCENE_ARG);
     float pdfUv = rowProbability * columnProbability * float(env.width) * float(env.height);
     return environmentSolidAnglePdf(pdfUv, unitDirection);
 }

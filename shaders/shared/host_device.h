@@ -55,7 +55,15 @@ using uint = std::uint32_t;
 // C++ builds do not contract a·b − c·d into an FMA unless asked (-ffp-contract=off where it
 // matters); GLSL needs the precise qualifier for the same guarantee.
 #define VKPT_PRECISE
+// The CPU side walks and shades two-level scenes whatever it is given.
+#define VKPT_INSTANCES 1
 #else
+// Kernels are built twice where instances change them (trace_closest, trace_shadow, shade_hits):
+// with -DVKPT_INSTANCES=1 for two-level scenes, and without, so that a scene of one level
+// carries none of that code (lavapipe translates a whole module before it specialises it).
+#ifndef VKPT_INSTANCES
+#define VKPT_INSTANCES 0
+#endif
 #define VKPT_FN
 #define VKPT_INOUT(Type) inout Type
 #define VKPT_PRECISE precise
@@ -130,6 +138,31 @@ VKPT_FN bool isSpherePrimitive(Triangle primitive) {
 VKPT_FN bool isAlphaMaskedPrimitive(Triangle primitive) {
     return (primitive.sourceIndex & PRIMITIVE_ALPHA_MASKED) != 0u;
 }
+
+// ---------------------------------------------------------------------------------------------
+// Instances (two-level scenes, FEATURE_INSTANCES): a mesh kept once in its own space, placed by
+// an affine transform. The top-level BVH (nodes from 0) has instances for leaf primitives, in
+// the order of this array; each mesh's BVH follows in bvhNodes and its primitives in triangles.
+// A walk meets an instance in a top-level leaf and walks the mesh's BVH with the ray in the
+// mesh's space (o' = worldToObject·(o, 1), d' = worldToObject·(d, 0): not normalised, so that t
+// is the same in both spaces); shading takes the hit back to world space with objectToWorld
+// (normals with worldToObject's transpose, the inverse transpose). Texels 0–3 are what a walk
+// reads; 3–6 what shading reads.
+#define NO_INSTANCE 0xffffffffu
+#define INSTANCE_MIRRORED 1u // objectToWorld has a negative determinant: the front face turns over
+
+struct Instance {
+    vec4 worldToObject0; // rows of the 3×4 inverse transform
+    vec4 worldToObject1;
+    vec4 worldToObject2;
+    uint root;  // node index of the mesh's BVH root in bvhNodes
+    uint flags; // INSTANCE_*
+    uint mesh;  // index of the mesh (statistics and tests)
+    uint unused0;
+    vec4 objectToWorld0; // rows of the 3×4 transform
+    vec4 objectToWorld1;
+    vec4 objectToWorld2;
+};
 
 // Shading normals, one record per triangle in the same order (w unused, kept for std430).
 struct TriangleNormals {
@@ -292,7 +325,8 @@ struct EnvironmentParams {
 #define FEATURE_TRANSMISSION 10 // transmission, a volume, or an ior other than 1.5
 #define FEATURE_CLEARCOAT 11
 #define FEATURE_SHEEN 12
-#define FEATURE_COUNT 13
+#define FEATURE_INSTANCES 13 // a two-level BVH: meshes placed by instances
+#define FEATURE_COUNT 14
 
 // ---------------------------------------------------------------------------------------------
 // The camera (shared/camera.h). Pixel (0, 0) is the top-left; a sample at (x + u, y + v) has
@@ -324,6 +358,8 @@ static_assert(sizeof(Triangle) == 48 && offsetof(Triangle, materialIndex) == 12 
               offsetof(Triangle, v1) == 16 && offsetof(Triangle, emitterIndex) == 28 &&
               offsetof(Triangle, v2) == 32 && offsetof(Triangle, sourceIndex) == 44);
 static_assert(sizeof(TriangleNormals) == 48 && offsetof(TriangleNormals, n2) == 32);
+static_assert(sizeof(Instance) == 112 && offsetof(Instance, root) == 48 &&
+              offsetof(Instance, flags) == 52 && offsetof(Instance, objectToWorld0) == 64);
 static_assert(sizeof(TextureSlot) == 32 && offsetof(TextureSlot, texture) == 12 &&
               offsetof(TextureSlot, transformRow1) == 16);
 static_assert(offsetof(Material, emission) == 16 && offsetof(Material, flags) == 28 &&

@@ -19,10 +19,14 @@ struct TriangleHit {
 #define VKPT_TINY_DIRECTION 1e-30f
 
 // 1/x without infinities: a zero direction component becomes ±1e30, so the slab test below
-// never computes 0·∞ = NaN for a ray that starts on a slab plane.
+// never computes 0·∞ = NaN for a ray that starts on a slab plane. The sign is the sign bit's, −0
+// giving −1e30, as 1/x would: the wide walk picks each axis's near plane by the same sign bit
+// (wide_bvh.h, rayOctant), and the two must agree. Rays moved into an instance's space, and
+// orthographic camera rays, have −0 components.
 VKPT_FN float safeReciprocal(float x) {
     const float tiny = VKPT_TINY_DIRECTION;
-    return abs(x) > tiny ? 1.0f / x : (x >= 0.0f ? 1.0f / tiny : -1.0f / tiny);
+    bool negative = (floatBitsToUint(x) >> 31u) != 0u;
+    return abs(x) > tiny ? 1.0f / x : (negative ? -1.0f / tiny : 1.0f / tiny);
 }
 
 VKPT_FN vec3 safeInverseDirection(vec3 d) {

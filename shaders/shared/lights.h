@@ -139,7 +139,7 @@ VKPT_FN void samplePunctualLight(VKPT_INOUT(LightSample) light, Emitter emitter,
 VKPT_FN void sampleEnvironmentLight(VKPT_INOUT(LightSample) light, Emitter emitter,
                                     vec2 u VKPT_SCENE_PARAM) {
     EnvironmentSample e =
-        sampleEnvironment(sceneEnvironment(VKPT_SCENE_ARG_ONLY), u VKPT_SCENE_ENVIRONMENT_ARG);
+        sampleEnvironment(sceneEnvironment(VKPT_SCENE_ARG_ONLY), u VKPT_SCENE_ARG);
     if (!e.valid) return;
     light.atInfinity = true;
     light.direction = e.direction;

@@ -58,7 +58,7 @@ VKPT_FN vec2 primitiveUv(uint index, Triangle primitive, float u, float v,
 VKPT_FN vec4 sampleSlot(TextureSlot slot, vec2 uv, bool srgb VKPT_SCENE_PARAM) {
     if (!hasTexture(slot VKPT_SCENE_ARG)) return vec4(1.0f);
     return sampleTexture(sceneTexture(slot.texture VKPT_SCENE_ARG), transformUv(slot, uv),
-                         srgb VKPT_SCENE_TEXELS_ARG);
+                         srgb VKPT_SCENE_ARG);
 }
 
 // Alpha MASK: whether a ray crossing primitive `index` at (u, v) (a sphere: its outward normal

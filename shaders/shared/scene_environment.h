@@ -23,8 +23,7 @@ VKPT_FN bool hasEnvironment(VKPT_SCENE_PARAM_ONLY) {
 // The environment's radiance along a unit direction (0 without one).
 VKPT_FN vec3 environmentRadianceAlong(vec3 direction VKPT_SCENE_PARAM) {
     if (!hasEnvironment(VKPT_SCENE_ARG_ONLY)) return vec3(0.0f);
-    return environmentRadiance(sceneEnvironment(VKPT_SCENE_ARG_ONLY),
-                               direction VKPT_SCENE_ENVIRONMENT_ARG);
+    return environmentRadiance(sceneEnvironment(VKPT_SCENE_ARG_ONLY), direction VKPT_SCENE_ARG);
 }
 
 // Solid-angle pdf with which light sampling chooses the environment along a unit direction.
@@ -32,7 +31,7 @@ VKPT_FN float environmentLightPdf(vec3 direction VKPT_SCENE_PARAM) {
     if (!hasEnvironment(VKPT_SCENE_ARG_ONLY)) return 0.0f;
     EnvironmentParams env = sceneEnvironment(VKPT_SCENE_ARG_ONLY);
     return sceneEmitter(env.emitterIndex VKPT_SCENE_ARG).selectProbability *
-           environmentPdf(env, direction VKPT_SCENE_ENVIRONMENT_ARG);
+           environmentPdf(env, direction VKPT_SCENE_ARG);
 }
 
 #ifdef __cplusplus

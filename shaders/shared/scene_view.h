@@ -1,26 +1,29 @@
-// scene_view.h — how the shared surface, material and light code (materials.h, surface.h,
-// lights.h, light_connection.h) reaches the prepared scene, so that the kernels and the CPU
-// reference run that very code: the pattern of wide_bvh.h.
+// scene_view.h — how the shared surface, material, texture and light code (materials.h,
+// surface.h, texture_sampling.h, environment.h, lights.h, light_connection.h) reaches the
+// prepared scene, so that the kernels and the CPU reference run that very code: the pattern of
+// wide_bvh.h.
 //
 // Every function of that code takes VKPT_SCENE_PARAM last. On the C++ side it is a SceneView,
 // spans over the arrays of a PreparedScene (host/prepare/scene_view.h makes one), and the
 // accessors below read them. On the GLSL side it is empty: the includer defines the same
 // accessors over its texel fetches and storage buffers before including the shared code
-// (lib/materials.glsl, lib/surface.glsl, lib/lights.glsl), and the sceneHas* switches return
-// the kernel's specialisation constants (lib/features.glsl), so that code for a feature the
-// scene lacks folds away.
+// (lib/materials.glsl, lib/surface.glsl, lib/environment.glsl, lib/lights.glsl), and the
+// sceneHas* switches return the kernel's specialisation constants (lib/features.glsl), so that
+// code for a feature the scene lacks folds away. The shared code reads every array one element
+// at a time through these accessors, never as a whole, so that the kernels may split any of
+// them across several buffers (lib/scene_arrays.glsl).
 //
 //   Triangle scenePrimitive(uint i)         TriangleNormals sceneNormals(uint i)
-//   TriangleTangents sceneTangents(uint i)
+//   TriangleTangents sceneTangents(uint i)  Instance sceneInstance(uint i)
 //   vec2 sceneUv(uint k)  (3 per primitive) Material sceneMaterial(uint i)
-//   TextureInfo sceneTexture(uint i)        textureTexels[] (texture_sampling.h)
+//   TextureInfo sceneTexture(uint i)        uint sceneTextureTexel(uint i) (texture_sampling.h)
 //   Emitter sceneEmitter(uint i)            uint sceneEmitterCount()
 //   float sceneEmitterCdf(uint i)           EnvironmentParams sceneEnvironment()
-//   environmentTexels[], environmentCdf[] (environment.h)
+//   vec4 sceneEnvironmentTexel(uint i)      float sceneEnvironmentCdf(uint i) (environment.h)
 //   bool sceneHasMetallicRoughness(), sceneHasTextures(), sceneHasSpheres(),
 //        sceneHasPunctualLights(), sceneHasEnvironment(), sceneHasEmitterCdf(),
 //        sceneHasDoubleSided(), sceneHasNormalMaps(), sceneHasTransmission(),
-//        sceneHasClearcoat(), sceneHasSheen()
+//        sceneHasClearcoat(), sceneHasSheen(), sceneHasInstances()
 #ifndef VKPT_SCENE_VIEW_H
 #define VKPT_SCENE_VIEW_H
 
@@ -38,6 +41,7 @@ struct SceneView {
     std::span<const Triangle> primitives; // triangles and spheres, BVH order
     std::span<const TriangleNormals> normals;
     std::span<const TriangleTangents> tangents; // empty unless FEATURE_NORMAL_MAPS
+    std::span<const Instance> instances;        // empty unless FEATURE_INSTANCES
     std::span<const vec2> uvs;                  // 3 per primitive
     std::span<const Material> materials;
     std::span<const TextureInfo> textures;
@@ -54,9 +58,6 @@ struct SceneView {
 #define VKPT_SCENE_PARAM_ONLY const SceneView& scene
 #define VKPT_SCENE_ARG , scene
 #define VKPT_SCENE_ARG_ONLY scene
-// The extra parameters of texture_sampling.h and environment.h.
-#define VKPT_SCENE_TEXELS_ARG , scene.textureTexels.data()
-#define VKPT_SCENE_ENVIRONMENT_ARG , scene.environmentTexels.data(), scene.environmentCdf.data()
 
 VKPT_FN Triangle scenePrimitive(uint i VKPT_SCENE_PARAM) {
     return scene.primitives[i];
@@ -67,6 +68,9 @@ VKPT_FN TriangleNormals sceneNormals(uint i VKPT_SCENE_PARAM) {
 VKPT_FN TriangleTangents sceneTangents(uint i VKPT_SCENE_PARAM) {
     return scene.tangents[i];
 }
+VKPT_FN Instance sceneInstance(uint i VKPT_SCENE_PARAM) {
+    return scene.instances[i];
+}
 VKPT_FN vec2 sceneUv(uint k VKPT_SCENE_PARAM) {
     return scene.uvs[k];
 }
@@ -75,6 +79,9 @@ VKPT_FN Material sceneMaterial(uint i VKPT_SCENE_PARAM) {
 }
 VKPT_FN TextureInfo sceneTexture(uint i VKPT_SCENE_PARAM) {
     return scene.textures[i];
+}
+VKPT_FN uint sceneTextureTexel(uint i VKPT_SCENE_PARAM) {
+    return scene.textureTexels[i];
 }
 VKPT_FN Emitter sceneEmitter(uint i VKPT_SCENE_PARAM) {
     return scene.emitters[i];
@@ -87,6 +94,12 @@ VKPT_FN float sceneEmitterCdf(uint i VKPT_SCENE_PARAM) {
 }
 VKPT_FN EnvironmentParams sceneEnvironment(VKPT_SCENE_PARAM_ONLY) {
     return scene.environment;
+}
+VKPT_FN vec4 sceneEnvironmentTexel(uint i VKPT_SCENE_PARAM) {
+    return scene.environmentTexels[i];
+}
+VKPT_FN float sceneEnvironmentCdf(uint i VKPT_SCENE_PARAM) {
+    return scene.environmentCdf[i];
 }
 
 VKPT_FN bool sceneHasMetallicRoughness(VKPT_SCENE_PARAM_ONLY) {
@@ -122,6 +135,9 @@ VKPT_FN bool sceneHasClearcoat(VKPT_SCENE_PARAM_ONLY) {
 VKPT_FN bool sceneHasSheen(VKPT_SCENE_PARAM_ONLY) {
     return scene.features[FEATURE_SHEEN];
 }
+VKPT_FN bool sceneHasInstances(VKPT_SCENE_PARAM_ONLY) {
+    return scene.features[FEATURE_INSTANCES];
+}
 
 } // namespace vkpt::gpu
 #else
@@ -129,8 +145,6 @@ VKPT_FN bool sceneHasSheen(VKPT_SCENE_PARAM_ONLY) {
 #define VKPT_SCENE_PARAM_ONLY
 #define VKPT_SCENE_ARG
 #define VKPT_SCENE_ARG_ONLY
-#define VKPT_SCENE_TEXELS_ARG
-#define VKPT_SCENE_ENVIRONMENT_ARG
 #endif
 
 #endif // VKPT_SCENE_VIEW_H

@@ -8,6 +8,7 @@
 
 #include "bsdf.h"
 #include "host_device.h"
+#include "instance.h"
 #include "intersect.h"
 #include "materials.h"
 #include "normal_mapping.h"
@@ -29,18 +30,43 @@ struct SurfacePoint {
     bool doubleSided;        // the material emits from both sides
     float coordinateScale;   // of the primitive, for offsetFromSurface
     uint triangle;           // the primitive, BVH-ordered
+    uint instance;           // the instance whose mesh holds it; NO_INSTANCE in one-level scenes
     ShadingMaterial shading; // the BSDF's parameters, textures applied
     vec3 emission;           // emissive factor × texture, before the side test
     vec3 outgoing;           // unit, back along the incoming ray
 };
 
+// Whether the point lies in an instance's mesh, whose data is in the mesh's own space.
+VKPT_FN bool isInstanced(SurfacePoint s VKPT_SCENE_PARAM) {
+    return VKPT_INSTANCES != 0 && sceneHasInstances(VKPT_SCENE_ARG_ONLY) &&
+           s.instance != NO_INSTANCE;
+}
+
 VKPT_FN void fillTriangle(VKPT_INOUT(SurfacePoint) s, Triangle tri, TriangleHit hit,
                           vec3 direction VKPT_SCENE_PARAM) {
     TriangleNormals normals = sceneNormals(s.triangle VKPT_SCENE_ARG);
+    bool mirrored = false;
+#if VKPT_INSTANCES
+    if (isInstanced(s VKPT_SCENE_ARG)) {
+        // The corners and their normals in world space, then on as for a flattened triangle
+        // (which the loader transformed the same way, in double).
+        Instance x = sceneInstance(s.instance VKPT_SCENE_ARG);
+        tri.v0 = instancePointToWorld(x, tri.v0);
+        tri.v1 = instancePointToWorld(x, tri.v1);
+        tri.v2 = instancePointToWorld(x, tri.v2);
+        normals.n0 = vec4(instanceNormalToWorld(x, vec3(normals.n0)), 0.0f);
+        normals.n1 = vec4(instanceNormalToWorld(x, vec3(normals.n1)), 0.0f);
+        normals.n2 = vec4(instanceNormalToWorld(x, vec3(normals.n2)), 0.0f);
+        mirrored = (x.flags & INSTANCE_MIRRORED) != 0u;
+    }
+#endif
     // Barycentric interpolation keeps the point on the triangle's plane, unlike o + t·d.
     s.position = tri.v0 * (1.0f - hit.u - hit.v) + tri.v1 * hit.u + tri.v2 * hit.v;
     s.coordinateScale = triangleCoordinateScale(tri.v0, tri.v1, tri.v2);
+    // A mirroring placement turns the corners' winding over (the loader swaps two corners of a
+    // flattened one instead), so the front face is the other side of the placed corners.
     vec3 face = unitFaceNormal(tri.v0, tri.v1, tri.v2);
+    if (mirrored) face = -face;
     s.frontFace = dot(face, direction) < 0.0f;
     s.geometricNormal = s.frontFace ? face : -face;
     s.rawShadingNormal = vec3(normals.n0) * (1.0f - hit.u - hit.v) + vec3(normals.n1) * hit.u +
@@ -63,12 +89,26 @@ VKPT_FN void fillSphere(VKPT_INOUT(SurfacePoint) s, Triangle sphere, TriangleHit
     s.shadingNormal = s.geometricNormal;
 }
 
+// The tangent frame at the hit (normal_mapping.h, interpolatedTangent), in world space.
+VKPT_FN vec4 surfaceTangent(SurfacePoint s, TriangleHit hit VKPT_SCENE_PARAM) {
+#if VKPT_INSTANCES
+    if (!isInstanced(s VKPT_SCENE_ARG))
+        return interpolatedTangent(s.triangle, hit.u, hit.v VKPT_SCENE_ARG);
+    Instance x = sceneInstance(s.instance VKPT_SCENE_ARG);
+    TriangleTangents t = sceneTangents(s.triangle VKPT_SCENE_ARG);
+    return instanceTangentToWorld(x, t.t0) * (1.0f - hit.u - hit.v) +
+           instanceTangentToWorld(x, t.t1) * hit.u + instanceTangentToWorld(x, t.t2) * hit.v;
+#else
+    return interpolatedTangent(s.triangle, hit.u, hit.v VKPT_SCENE_ARG);
+#endif
+}
+
 // The normal texture's shading normal: mapped in the interpolated normal's tangent frame, turned
 // to the side the shading normal was turned to, and bent towards s.outgoing (normal_mapping.h).
 VKPT_FN vec3 normalMappedShadingNormal(SurfacePoint s, Material m, TriangleHit hit,
                                        vec2 uv VKPT_SCENE_PARAM) {
     vec3 n = normalize(s.rawShadingNormal);
-    vec4 tangent = interpolatedTangent(s.triangle, hit.u, hit.v VKPT_SCENE_ARG);
+    vec4 tangent = surfaceTangent(s, hit VKPT_SCENE_ARG);
     vec3 mapped = mappedNormal(m.normalTexture, m.normalScale, uv, n, tangent VKPT_SCENE_ARG);
     if (dot(n, s.shadingNormal) < 0.0f) mapped = -mapped;
     return bendTowardsViewer(mapped, s.geometricNormal, s.outgoing);
@@ -116,7 +156,7 @@ VKPT_FN vec3 clearcoatLocalNormal(SurfacePoint s, Material m, TriangleHit hit, v
     vec3 normal = interpolated;
     if (hasTexture(m.clearcoatNormalTexture VKPT_SCENE_ARG)) {
         vec3 n = normalize(s.rawShadingNormal);
-        vec4 tangent = interpolatedTangent(s.triangle, hit.u, hit.v VKPT_SCENE_ARG);
+        vec4 tangent = surfaceTangent(s, hit VKPT_SCENE_ARG);
         normal = mappedNormal(m.clearcoatNormalTexture, m.clearcoatNormalScale, uv, n,
                               tangent VKPT_SCENE_ARG);
         if (dot(n, interpolated) < 0.0f) normal = -normal;
@@ -166,13 +206,15 @@ VKPT_FN void fillMaterial(VKPT_INOUT(SurfacePoint) s, Triangle primitive,
         sceneHasDoubleSided(VKPT_SCENE_ARG_ONLY) && (m.flags & MATERIAL_DOUBLE_SIDED) != 0u;
 }
 
-// Hit `hit` of primitive `index` by a ray from `origin` along `direction` (the query that
-// found it).
-VKPT_FN SurfacePoint makeSurfacePoint(uint index, TriangleHit hit, vec3 origin,
+// Hit `hit` of primitive `index` (of `instance`'s mesh in a two-level scene, else NO_INSTANCE)
+// by a world-space ray from `origin` along `direction` (the query that found it). Spheres lie in
+// the world's own geometry, whose instance (if any) places it unmoved.
+VKPT_FN SurfacePoint makeSurfacePoint(uint index, uint instance, TriangleHit hit, vec3 origin,
                                       vec3 direction VKPT_SCENE_PARAM) {
     Triangle primitive = scenePrimitive(index VKPT_SCENE_ARG);
     SurfacePoint s;
     s.triangle = index;
+    s.instance = instance;
     s.outgoing = -normalize(direction);
     if (sceneHasSpheres(VKPT_SCENE_ARG_ONLY) && isSpherePrimitive(primitive)) {
         fillSphere(s, primitive, hit, origin, direction);

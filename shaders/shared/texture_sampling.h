@@ -1,22 +1,19 @@
 // texture_sampling.h — reading a material's textures: the KHR_texture_transform of the
 // coordinates, the glTF sampler's wrap modes, nearest or bilinear filtering and sRGB decoding.
-// Texels are RGBA8 packed one per uint (R in the low byte) in one buffer, each texture a
+// Texels are RGBA8 packed one per uint (R in the low byte) in one array, each texture a
 // row-major block at texelOffset with row 0 at v = 0 (host_device.h, TextureInfo).
 //
-// The C++ side passes the texel buffer as an extra parameter; GLSL reads the storage buffer
-// the includer declares as `uint textureTexels[]`.
+// Texels are read one at a time through sceneTextureTexel (scene_view.h): a span of the
+// SceneView on the C++ side, the kernels' textureTexels array, which may be split across
+// several buffers, on the GLSL side (lib/materials.glsl).
 #ifndef VKPT_TEXTURE_SAMPLING_H
 #define VKPT_TEXTURE_SAMPLING_H
 
 #include "host_device.h"
+#include "scene_view.h"
 
 #ifdef __cplusplus
 namespace vkpt::gpu {
-#define VKPT_TEXELS_PARAM , const uint* textureTexels
-#define VKPT_TEXELS_ARG , textureTexels
-#else
-#define VKPT_TEXELS_PARAM
-#define VKPT_TEXELS_ARG
 #endif
 
 // uv' = M·(u, v, 1) with M = T·R·S (KHR_texture_transform), of which the slot keeps the two
@@ -77,8 +74,9 @@ VKPT_FN bool textureNearest(TextureInfo info) {
 }
 
 // One texel, decoded: sRGB colour channels to linear, alpha always linear (glTF 2.0, 3.9.2).
-VKPT_FN vec4 fetchTexel(TextureInfo info, int x, int y, bool srgb VKPT_TEXELS_PARAM) {
-    vec4 c = unpackTexel(textureTexels[info.texelOffset + uint(y) * info.width + uint(x)]);
+VKPT_FN vec4 fetchTexel(TextureInfo info, int x, int y, bool srgb VKPT_SCENE_PARAM) {
+    vec4 c = unpackTexel(
+        sceneTextureTexel(info.texelOffset + uint(y) * info.width + uint(x) VKPT_SCENE_ARG));
     return srgb ? vec4(srgbToLinear(vec3(c)), c.w) : c;
 }
 
@@ -86,12 +84,12 @@ VKPT_FN vec4 fetchTexel(TextureInfo info, int x, int y, bool srgb VKPT_TEXELS_PA
 // centres unless the sampler asks for TEXTURE_FILTER_NEAREST. sRGB texels are decoded before
 // they are filtered, as a GPU's sRGB formats do. A NaN or infinite coordinate reads texel
 // (0, 0); a texture without texels reads as white (the factor alone).
-VKPT_FN vec4 sampleTexture(TextureInfo info, vec2 uv, bool srgb VKPT_TEXELS_PARAM) {
+VKPT_FN vec4 sampleTexture(TextureInfo info, vec2 uv, bool srgb VKPT_SCENE_PARAM) {
     int width = int(info.width);
     int height = int(info.height);
     if (width <= 0 || height <= 0) return vec4(1.0f);
     if (isnan(uv.x) || isnan(uv.y) || isinf(uv.x) || isinf(uv.y))
-        return fetchTexel(info, 0, 0, srgb VKPT_TEXELS_ARG);
+        return fetchTexel(info, 0, 0, srgb VKPT_SCENE_ARG);
     uint wrapS = textureWrapS(info);
     uint wrapT = textureWrapT(info);
     float s = reduceTextureCoordinate(uv.x, wrapS) * float(width);
@@ -99,7 +97,7 @@ VKPT_FN vec4 sampleTexture(TextureInfo info, vec2 uv, bool srgb VKPT_TEXELS_PARA
     if (textureNearest(info)) {
         int x = wrapTexelIndex(int(floor(s)), width, wrapS);
         int y = wrapTexelIndex(int(floor(t)), height, wrapT);
-        return fetchTexel(info, x, y, srgb VKPT_TEXELS_ARG);
+        return fetchTexel(info, x, y, srgb VKPT_SCENE_ARG);
     }
     float sLow = floor(s - 0.5f);
     float tLow = floor(t - 0.5f);
@@ -109,10 +107,10 @@ VKPT_FN vec4 sampleTexture(TextureInfo info, vec2 uv, bool srgb VKPT_TEXELS_PARA
     int x1 = wrapTexelIndex(int(sLow) + 1, width, wrapS);
     int y0 = wrapTexelIndex(int(tLow), height, wrapT);
     int y1 = wrapTexelIndex(int(tLow) + 1, height, wrapT);
-    vec4 top = mix(fetchTexel(info, x0, y0, srgb VKPT_TEXELS_ARG),
-                   fetchTexel(info, x1, y0, srgb VKPT_TEXELS_ARG), ws);
-    vec4 bottom = mix(fetchTexel(info, x0, y1, srgb VKPT_TEXELS_ARG),
-                      fetchTexel(info, x1, y1, srgb VKPT_TEXELS_ARG), ws);
+    vec4 top = mix(fetchTexel(info, x0, y0, srgb VKPT_SCENE_ARG),
+                   fetchTexel(info, x1, y0, srgb VKPT_SCENE_ARG), ws);
+    vec4 bottom = mix(fetchTexel(info, x0, y1, srgb VKPT_SCENE_ARG),
+                      fetchTexel(info, x1, y1, srgb VKPT_SCENE_ARG), ws);
     return mix(top, bottom, wt);
 }
 

@@ -13,15 +13,24 @@
 // instead; the parent link and the bit stack are the trail of Áfra and Szirmay-Kalos,
 // "Stackless Multi-BVH Traversal for CPU, MIC and GPU Ray Tracing", CGF 33(1), 2014).
 //
+// Two levels (bvhHasInstances): the top-level tree's leaf primitives are instances. Meeting one,
+// the walk keeps where it stood in the top level (its node, masks and bit stack: registers, as
+// before), moves the ray into the instance's mesh space (instance.h) and walks the mesh's tree
+// from its root; at that root's end it takes the top level up again where it left it. The best
+// crossing's t is the same in every space, so it bounds both levels.
+//
 // The includer supplies, before including this file:
 //   uvec4 bvhNodeTexel(uint texel VKPT_BVH_PARAM)        texel of bvhNodes (5 per node)
 //   Triangle bvhPrimitive(uint index VKPT_BVH_PARAM)     primitive in BVH order
-//   bool bvhHasSpheres(VKPT_BVH_PARAM_ONLY), bool bvhHasAlphaMask(VKPT_BVH_PARAM_ONLY)
+//   Instance bvhInstance(uint index VKPT_BVH_PARAM)      instance, for two-level walks
+//   bool bvhHasSpheres(VKPT_BVH_PARAM_ONLY), bool bvhHasAlphaMask(VKPT_BVH_PARAM_ONLY),
+//   bool bvhHasInstances(VKPT_BVH_PARAM_ONLY)
 // (the C++ side defines them below over a WideBvhView).
 #ifndef VKPT_WIDE_BVH_H
 #define VKPT_WIDE_BVH_H
 
 #include "host_device.h"
+#include "instance.h"
 #include "intersect.h"
 #include "sphere.h"
 
@@ -30,12 +39,14 @@
 
 namespace vkpt::gpu {
 
-// What a walk reads, on the CPU: the nodes and the primitives in BVH order.
+// What a walk reads, on the CPU: the nodes and the primitives in BVH order, and for a two-level
+// tree the instances.
 struct WideBvhView {
     const WideBvhNode* nodes;
     const Triangle* primitives;
     bool spheres;   // some primitive may be a sphere
     bool alphaMask; // alpha-masked primitives need the includer's test (PendingCrossing)
+    const Instance* instances = nullptr; // non-null: node 0 is the top level of a two-level tree
 };
 
 #define VKPT_BVH_PARAM , const WideBvhView& bvh
@@ -58,6 +69,12 @@ VKPT_FN bool bvhHasSpheres(VKPT_BVH_PARAM_ONLY) {
 }
 VKPT_FN bool bvhHasAlphaMask(VKPT_BVH_PARAM_ONLY) {
     return bvh.alphaMask;
+}
+VKPT_FN bool bvhHasInstances(VKPT_BVH_PARAM_ONLY) {
+    return bvh.instances != nullptr;
+}
+VKPT_FN Instance bvhInstance(uint index VKPT_BVH_PARAM) {
+    return bvh.instances[index];
 }
 #else
 #define VKPT_BVH_PARAM
@@ -154,11 +171,31 @@ VKPT_FN uint popMask(VKPT_INOUT(WideBitStack) stack) {
 // The walk.
 
 // A crossing that needs the alpha test before the walk may take it; primitive NO_PRIMITIVE:
-// none.
+// none. The walk stands in its instance (WideWalk::instance).
 struct PendingCrossing {
     TriangleHit hit;
     uint primitive;
 };
+
+// Where the top level of a two-level walk stood when it entered an instance: what climbing and
+// the next leaf need (the node's header and leafCounts are fetched again on the way back).
+struct TopLevelPlace {
+    WideBitStack stack;
+    uint depth;
+    uint node;
+    uint pending;
+    uint leaves;
+    uint next;
+    uint end;
+};
+
+// The instance the walk stands in; NO_INSTANCE at the top level, and always in a build without
+// two-level walks.
+#if VKPT_INSTANCES
+#define WALK_INSTANCE(walk) (walk).instance
+#else
+#define WALK_INSTANCE(walk) NO_INSTANCE
+#endif
 
 // depth of a finished walk: the node loop runs while depth <= WIDE_BVH_MAX_DEPTH, so a walk
 // that a driver's loop limit ends early (continueWideWalk) keeps a real depth and reports
@@ -166,18 +203,27 @@ struct PendingCrossing {
 #define WIDE_WALK_DONE 0xffffffffu
 
 struct WideWalk {
-    vec3 origin;
+    vec3 origin; // in the space of the tree being walked: the world's, or an instance's mesh's
     float tMin;
     vec3 direction;
     uint octant;
     vec3 invDirection;
     bool stopAtFirst;
-    ShearedRay sheared; // the watertight test's shear, once per walk
+    ShearedRay sheared; // the watertight test's shear, once per walk (and per instance)
     // The best crossing so far; its t bounds every test. primitive NO_PRIMITIVE: none yet.
     float t;
     float u;
     float v;
     uint primitive;
+    uint hitInstance; // the instance of the best crossing; NO_INSTANCE in a single-level walk
+#if VKPT_INSTANCES
+    // Two-level walks: the world ray, the instance being walked (NO_INSTANCE at the top level)
+    // and where the top level stood.
+    vec3 worldOrigin;
+    vec3 worldDirection;
+    uint instance;
+    TopLevelPlace top;
+#endif
     // Where the walk stands.
     WideBitStack stack;
     uint depth;      // levels pushed; WIDE_WALK_DONE once finished
@@ -322,21 +368,40 @@ VKPT_FN void visitNode(VKPT_INOUT(WideWalk) walk, uint index VKPT_BVH_PARAM) {
     takeNextLeaf(walk);
 }
 
+// Points the walk's ray (origin, direction and what is derived from them) at a space.
+VKPT_FN void aimWalk(VKPT_INOUT(WideWalk) walk, vec3 origin, vec3 direction) {
+    walk.origin = origin;
+    walk.direction = direction;
+    walk.octant = rayOctant(direction);
+    walk.invDirection = safeInverseDirection(direction);
+    walk.sheared = shearRay(direction);
+}
+
 // A walk of (tMin, tMax), standing at the root's children; continueWideWalk does the rest.
 VKPT_FN WideWalk beginWideWalk(vec3 origin, vec3 direction, float tMin, float tMax,
                                bool stopAtFirst VKPT_BVH_PARAM) {
     WideWalk walk;
-    walk.origin = origin;
+    aimWalk(walk, origin, direction);
     walk.tMin = tMin;
-    walk.direction = direction;
-    walk.octant = rayOctant(direction);
-    walk.invDirection = safeInverseDirection(direction);
     walk.stopAtFirst = stopAtFirst;
-    walk.sheared = shearRay(direction);
     walk.t = tMax;
     walk.u = 0.0f;
     walk.v = 0.0f;
     walk.primitive = NO_PRIMITIVE;
+    walk.hitInstance = NO_INSTANCE;
+#if VKPT_INSTANCES
+    walk.worldOrigin = origin;
+    walk.worldDirection = direction;
+    walk.instance = NO_INSTANCE;
+    walk.top.stack.words = uvec4(0u);
+    walk.top.stack.overflow = uvec4(0u);
+    walk.top.depth = 0u;
+    walk.top.node = 0u;
+    walk.top.pending = 0u;
+    walk.top.leaves = 0u;
+    walk.top.next = 0u;
+    walk.top.end = 0u;
+#endif
     walk.stack.words = uvec4(0u);
     walk.stack.overflow = uvec4(0u);
     walk.depth = 0u;
@@ -357,14 +422,54 @@ VKPT_FN void finishWideWalk(VKPT_INOUT(WideWalk) walk) {
     walk.next = walk.end;
 }
 
-// Takes a crossing as the best so far (the alpha test, if any, has passed).
+// Takes a crossing of the instance the walk stands in as the best so far (the alpha test, if
+// any, has passed).
 VKPT_FN void takeCrossing(VKPT_INOUT(WideWalk) walk, TriangleHit h, uint primitive) {
     walk.t = h.t;
     walk.u = h.u;
     walk.v = h.v;
     walk.primitive = primitive;
+    walk.hitInstance = WALK_INSTANCE(walk);
     if (walk.stopAtFirst) finishWideWalk(walk);
 }
+
+#if VKPT_INSTANCES
+// From a top-level leaf into instance `index`: keeps the top level's place, moves the ray into
+// the mesh's space and visits the mesh's root, whose first leaf becomes the current one.
+VKPT_FN void enterInstance(VKPT_INOUT(WideWalk) walk, uint index VKPT_BVH_PARAM) {
+    Instance x = bvhInstance(index VKPT_BVH_ARG);
+    walk.top.stack = walk.stack;
+    walk.top.depth = walk.depth;
+    walk.top.node = walk.node;
+    walk.top.pending = walk.pending;
+    walk.top.leaves = walk.leaves;
+    walk.top.next = walk.next;
+    walk.top.end = walk.end;
+    walk.instance = index;
+    aimWalk(walk, instanceRayOrigin(x, walk.worldOrigin),
+            instanceRayDirection(x, walk.worldDirection));
+    walk.stack.words = uvec4(0u);
+    walk.stack.overflow = uvec4(0u);
+    walk.depth = 0u;
+    visitNode(walk, x.root VKPT_BVH_ARG);
+}
+
+// Back from an instance whose tree is done to where the top level stood.
+VKPT_FN void leaveInstance(VKPT_INOUT(WideWalk) walk VKPT_BVH_PARAM) {
+    walk.instance = NO_INSTANCE;
+    aimWalk(walk, walk.worldOrigin, walk.worldDirection);
+    walk.stack = walk.top.stack;
+    walk.depth = walk.top.depth;
+    walk.node = walk.top.node;
+    walk.header = bvhNodeTexel(WIDE_BVH_TEXELS * walk.node VKPT_BVH_ARG);
+    walk.leafCounts = bvhNodeTexel(WIDE_BVH_TEXELS * walk.node + 1u VKPT_BVH_ARG).w;
+    walk.pending = walk.top.pending;
+    walk.leaves = walk.top.leaves;
+    walk.next = walk.top.next;
+    walk.end = walk.top.end;
+    walk.entriesCurrent = false; // the entries were the instance's nodes'
+}
+#endif // VKPT_INSTANCES
 
 // The primitive's crossing within (tMin, best t], or within the ray's (tMin, tMax) before the
 // first (crossingPrecedes decides the ties).
@@ -378,7 +483,8 @@ VKPT_FN TriangleHit crossBvhPrimitive(WideWalk walk, Triangle primitive VKPT_BVH
 }
 
 // Tests the current node's remaining leaf primitives; returns a crossing of an alpha-masked
-// primitive for the includer to test (the walk stands just past it), else NO_PRIMITIVE.
+// primitive for the includer to test (the walk stands just past it), else NO_PRIMITIVE. Never
+// at the top level of a two-level walk, whose leaves continueWideWalk enters one by one.
 VKPT_FN PendingCrossing testLeaves(VKPT_INOUT(WideWalk) walk VKPT_BVH_PARAM) {
     PendingCrossing pending;
     pending.primitive = NO_PRIMITIVE;
@@ -389,7 +495,9 @@ VKPT_FN PendingCrossing testLeaves(VKPT_INOUT(WideWalk) walk VKPT_BVH_PARAM) {
         ++walk.primitiveTests;
         Triangle primitive = bvhPrimitive(index VKPT_BVH_ARG);
         TriangleHit h = crossBvhPrimitive(walk, primitive VKPT_BVH_ARG);
-        if (!h.hit || !crossingPrecedes(h.t, index, walk.t, walk.primitive)) continue;
+        if (!h.hit || !instancedCrossingPrecedes(h.t, WALK_INSTANCE(walk), index, walk.t,
+                                                 walk.hitInstance, walk.primitive))
+            continue;
         // Marked at load time (PRIMITIVE_ALPHA_MASKED): no material read per crossing.
         if (bvhHasAlphaMask(VKPT_BVH_ARG_ONLY) && isAlphaMaskedPrimitive(primitive)) {
             pending.hit = h;
@@ -428,13 +536,33 @@ VKPT_FN PendingCrossing continueWideWalk(VKPT_INOUT(WideWalk) walk VKPT_BVH_PARA
     PendingCrossing pending;
     pending.primitive = NO_PRIMITIVE;
     while (walk.depth <= WIDE_BVH_MAX_DEPTH) {
+        // A top-level leaf holds instances: the next one is entered here, in the node loop, so
+        // that the leaf loop below stays the single-level one (lavapipe would run the entry's
+        // code, masked, at every primitive test; docs/gpu.md).
+#if VKPT_INSTANCES
+        if (bvhHasInstances(VKPT_BVH_ARG_ONLY) && walk.instance == NO_INSTANCE &&
+            walk.next < walk.end) {
+            uint index = walk.next;
+            ++walk.next;
+            if (walk.next == walk.end) takeNextLeaf(walk);
+            enterInstance(walk, index VKPT_BVH_ARG);
+        }
+#endif
         pending = testLeaves(walk VKPT_BVH_ARG);
         if (pending.primitive != NO_PRIMITIVE || walk.depth == WIDE_WALK_DONE) break;
         if (walk.next != walk.end) break; // the leaf loop was cut short
         climbToPendingAncestor(walk VKPT_BVH_ARG);
         if (walk.pending == 0u) {
-            if (WIDE_HEADER_PARENT(walk.header) == BVH_END) finishWideWalk(walk);
-            break; // at the root, done; elsewhere, the climb was cut short
+            // At a root the tree is done; elsewhere the climb was cut short.
+            if (WIDE_HEADER_PARENT(walk.header) != BVH_END) break;
+#if VKPT_INSTANCES
+            if (bvhHasInstances(VKPT_BVH_ARG_ONLY) && walk.instance != NO_INSTANCE) {
+                leaveInstance(walk VKPT_BVH_ARG); // an instance's root: on with the top level
+                continue;
+            }
+#endif
+            finishWideWalk(walk);
+            break;
         }
         uint slot = uint(findLSB(walk.pending)) ^ walk.octant;
         walk.pending &= walk.pending - 1u;

@@ -9,6 +9,7 @@
 
 #include "../support/room_scene.h"
 #include "app/command_line.h"
+#include "app/run_program.h"
 #include "common/errors.h"
 
 namespace {
@@ -45,13 +46,5 @@ int writeScene(int argc, char** argv) {
 } // namespace
 
 int main(int argc, char** argv) {
-    try {
-        return writeScene(argc, argv);
-    } catch (const vkpt::InputError& error) {
-        std::fprintf(stderr, "%s: error: %s\n", kProgram, error.what());
-        return 1;
-    } catch (const std::exception& error) {
-        std::fprintf(stderr, "%s: error: %s\n", kProgram, error.what());
-        return 3;
-    }
+    return vkpt::runProgram(kProgram, [argc, argv] { return writeScene(argc, argv); });
 }

@@ -1,7 +1,8 @@
 // gltf_loader_fuzz.cpp — libFuzzer entry point over the whole glTF loader: .gltf/.glb parsing,
-// the JSON pre-pass, validation of every index and range, and the Draco, meshopt, WebP, PNG and
-// JPEG decoders. An input either loads or ends in one InputError; anything else (a crash, a
-// sanitizer report, another exception, a leak, a hang) is a finding.
+// the JSON pre-pass, validation of every index and range, instancing (EXT_mesh_gpu_instancing,
+// meshes kept once), and the Draco, meshopt, WebP, PNG and JPEG decoders. An input either loads or
+// ends in one InputError; anything else (a crash, a sanitizer report, another exception, a leak, a
+// hang) is a finding.
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -41,6 +42,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     writeInput(path, data, size);
     vkpt::LoadOptions options;
     options.warnUnsupportedExtensions = false;
+    // Small inputs would always be flattened (Instancing::Auto); odd-sized ones keep their meshes
+    // once and place them by instances, so that both paths of the loader are fuzzed, each input
+    // always the same way.
+    options.instancing = size % 2 == 1 ? vkpt::Instancing::On : vkpt::Instancing::Auto;
     try {
         const vkpt::Scene scene = vkpt::loadGltfScene(path, options);
         (void)scene;

@@ -9,9 +9,13 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <ostream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "../support/room_scene.h"
+#include "feature_scenes.h"
 #include "lib/wavefront.h"
 #include "render/scene_arrays.h"
 #include "scene/gltf_loader.h"
@@ -59,6 +63,14 @@ std::uint32_t mostBuffers(const WavefrontResult& result) {
     return most;
 }
 
+// How many buffers the array `name` took (0: the scene has none).
+std::uint32_t buffersOf(const WavefrontResult& result, const std::string& name) {
+    const auto array =
+        std::find_if(result.sceneBuffers.begin(), result.sceneBuffers.end(),
+                     [&name](const SceneBufferBytes& bytes) { return bytes.name == name; });
+    return array == result.sceneBuffers.end() ? 0u : array->buffers;
+}
+
 // The benchmarks' room with a textured sphere of about 2,000 triangles, written and loaded as
 // vkpt would: its texture coordinates (24 bytes a triangle) are half as large as its
 // triangles, so one limit splits both the texel arrays and this storage array.
@@ -73,46 +85,77 @@ LoadedTestScene texturedRoom() {
     return loaded;
 }
 
-LoadedTestScene loadScene(const std::string& name) {
-    return name == "textured room" ? texturedRoom() : loadFeatureTestScene(name);
+LoadedTestScene cornellBox() {
+    return loadFeatureTestScene("cornell-box.gltf");
 }
 
-class SplitArrays : public GpuTest, public ::testing::WithParamInterface<std::string> {};
+// The feature scenes' textures (feature_scenes.h) with the floor's and a sphere's texture
+// (image 0) at 64 × 64 and no two texels alike, so that a texel read from the wrong chunk
+// changes the image: its 16 KiB of texels are then the largest array, cut into three chunks.
+LoadedTestScene largeTexture() {
+    Scene scene = feature_scenes::textureScene();
+    SceneImage& image = scene.images.at(0);
+    image.width = 64;
+    image.height = 64;
+    image.texels.clear();
+    for (std::uint32_t y = 0; y < image.height; ++y)
+        for (std::uint32_t x = 0; x < image.width; ++x)
+            image.texels.push_back((4 * x) | (4 * y) << 8 | ((7 * x + 13 * y) % 256) << 16 |
+                                   255u << 24);
+    return feature_scenes::prepareTestScene(std::move(scene));
+}
+
+// The feature scenes' environment map (32 × 16, a sun and a sky that changes row by row), lit
+// by it alone: its texels (8 KiB) go into four chunks and its CDF (2 KiB and 64 bytes) into
+// two, the last holding the marginal CDF.
+LoadedTestScene environmentMap() {
+    return feature_scenes::prepareTestScene(feature_scenes::environmentScene(true));
+}
+
+struct SplitCase {
+    std::string name;
+    LoadedTestScene (*load)();
+    std::vector<std::string> splitArrays; // each must take two buffers or more
+};
+
+void PrintTo(const SplitCase& scene, std::ostream* out) {
+    *out << scene.name;
+}
+
+class SplitArrays : public GpuTest, public ::testing::WithParamInterface<SplitCase> {};
 
 TEST_P(SplitArrays, RenderTheSameImageAsWholeArrays) {
-    const LoadedTestScene loaded = loadScene(GetParam());
+    const LoadedTestScene loaded = GetParam().load();
     RenderSettings settings = testSettings(24, 4);
     settings.seed = 21;
     settings.lightSamples = 2;
     const WavefrontResult whole = render(context(), loaded, settings);
     ASSERT_EQ(mostBuffers(whole), 1u);
     const std::uint64_t limit = splittingLimit(loaded.prepared);
-    std::printf("%s: split at %llu bytes per binding\n", GetParam().c_str(),
+    std::printf("%s: split at %llu bytes per binding\n", GetParam().name.c_str(),
                 (unsigned long long)limit);
     const ForcedBindingLimit forced(limit);
     const WavefrontResult split = render(context(), loaded, settings);
     EXPECT_GT(mostBuffers(split), 2u) << "the largest array should take three or four buffers";
+    for (const std::string& name : GetParam().splitArrays)
+        EXPECT_GE(buffersOf(split, name), 2u) << name << " should be split too";
     ASSERT_EQ(split.output.image.pixels.size(), whole.output.image.pixels.size());
     EXPECT_TRUE(split.output.image.pixels == whole.output.image.pixels)
-        << writeComparisonImages("split_" + std::to_string(limit), split.output, whole.output);
+        << writeComparisonImages("split_" + GetParam().name, split.output, whole.output);
     EXPECT_EQ(split.output.sampleCounts, whole.output.sampleCounts);
-    if (GetParam() == "textured room") {
-        const auto uvs =
-            std::find_if(split.sceneBuffers.begin(), split.sceneBuffers.end(),
-                         [](const SceneBufferBytes& array) { return array.name == "triangleUvs"; });
-        ASSERT_NE(uvs, split.sceneBuffers.end());
-        EXPECT_GE(uvs->buffers, 2u) << "the storage array should be split too";
-    }
 }
 
 // The Cornell box splits texel arrays (triangles, normals, materials); the textured room also
-// its texture coordinates, a storage array.
-INSTANTIATE_TEST_SUITE_P(Scenes, SplitArrays,
-                         ::testing::Values("cornell-box.gltf", "textured room"),
-                         [](const ::testing::TestParamInfo<std::string>& scene) {
-                             return scene.param == "cornell-box.gltf" ? std::string("CornellBox")
-                                                                      : std::string("TexturedRoom");
-                         });
+// its texture coordinates, a storage array; the last two the arrays that the shared texture and
+// environment code reads (shared/texture_sampling.h, shared/environment.h).
+INSTANTIATE_TEST_SUITE_P(
+    Scenes, SplitArrays,
+    ::testing::Values(
+        SplitCase{"CornellBox", cornellBox, {"triangles"}},
+        SplitCase{"TexturedRoom", texturedRoom, {"triangleUvs"}},
+        SplitCase{"LargeTexture", largeTexture, {"textureTexels"}},
+        SplitCase{"EnvironmentMap", environmentMap, {"environmentTexels", "environmentCdf"}}),
+    [](const ::testing::TestParamInfo<SplitCase>& scene) { return scene.param.name; });
 
 TEST(SceneArrayChunks, WholeWhenItFits) {
     const ChunkPlan plan = planChunks(1000, 16, 16000);

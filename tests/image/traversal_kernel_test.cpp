@@ -1,21 +1,23 @@
 // traversal_kernel_test.cpp — trace_closest and trace_shadow, run on uploaded ray lists, return
-// what the reference's ordered stack walk returns (closestHitStack, anyHitStack) on 10^4 rays
-// per scene: the Cornell box, the deep-BVH scene (whose long walks lavapipe's loop limit would
-// cut short), scenes with spheres and alpha-masked cut-outs (the reference's AlphaMaskFilter)
-// and a shared glTF scene. A last test builds a BVH whose walks must exceed that limit and
-// checks that the kernels report it instead of answering wrongly in silence.
+// what the reference's ordered stack walk returns (its StackIntersectors: one level or two) on
+// 10^4 rays per scene: the Cornell box, the deep-BVH scene (whose long walks lavapipe's loop
+// limit would cut short), scenes with spheres and alpha-masked cut-outs (the reference's
+// AlphaMaskFilter), two-level scenes (meshes placed by instances) and a shared glTF scene. A last
+// test builds a BVH whose walks must exceed that limit and checks that the kernels report it
+// instead of answering wrongly in silence.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <sstream>
 
+#include "../support/instancing.h"
 #include "../support/ray_queries.h"
 #include "bvh/bvh_traverse.h"
 #include "bvh/synthetic_scenes.h"
 #include "bvh/wide_traverse.h"
 #include "feature_scenes.h"
-#include "reference/alpha_mask_filter.h"
+#include "reference/stack_intersector.h"
 #include "shared/camera.h"
 #include "shared/intersect.h"
 #include "shared/sphere.h"
@@ -31,13 +33,18 @@ using feature_scenes::prepareTestScene;
 
 constexpr int kRays = 10000;
 
+// The root box of the scene's tree, or of its top level.
+Aabb sceneBounds(const PreparedScene& scene) {
+    return (scene.features.instances ? scene.instanceTree : scene.tree).nodes[0].bounds;
+}
+
 // Rays of three kinds: from the scene's camera through its field of view (the rays a render
 // starts with; through the deep part of the deep-BVH scene), from inside the bounds in any
 // direction, and from outside towards a point inside.
 class RayMaker {
 public:
     RayMaker(const LoadedTestScene& scene, std::uint32_t seed)
-        : rng_(seed), bounds_(scene.prepared.tree.nodes[0].bounds),
+        : rng_(seed), bounds_(sceneBounds(scene.prepared)),
           camera_(makeGpuCamera(selectCamera(scene.scene, std::nullopt, 1.0f), 64, 64)) {}
 
     DeviceRay next() {
@@ -84,34 +91,55 @@ std::string describe(const DeviceRay& ray) {
 // Equal answers: both miss, or both hit at the same t (relative 1e-6: a device may fuse
 // multiply-adds) on the same triangle with the same barycentrics, or on two triangles that
 // really tie there (a shared edge, where the two walks' orders pick differently).
+// The instance's ray (the world ray itself in a scene of one level) meets primitive `index` at
+// about t.
+bool crossesNear(const PreparedScene& scene, const DeviceRay& ray, std::uint32_t instance,
+                 std::uint32_t index, float t, float tolerance) {
+    glm::vec3 origin = ray.origin, direction = ray.direction;
+    if (instance != NO_INSTANCE) {
+        origin = gpu::instanceRayOrigin(scene.instances[instance], ray.origin);
+        direction = gpu::instanceRayDirection(scene.instances[instance], ray.direction);
+    }
+    const gpu::Triangle& tri = scene.triangles[index];
+    gpu::TriangleHit h =
+        gpu::isSpherePrimitive(tri)
+            ? gpu::intersectSphere(origin, direction, tri.v0, tri.v1.x, 0.0f, VKPT_FAR)
+            : gpu::intersectTriangle(origin, direction, tri.v0, tri.v1, tri.v2, 0.0f, VKPT_FAR);
+    return h.hit && std::abs(h.t - t) <= tolerance * std::max(1.0f, std::abs(t));
+}
+
 bool sameClosestHit(const PreparedScene& scene, const DeviceRay& ray, const gpu::HitRecord& g,
-                    const ClosestHit& c) {
+                    std::uint32_t gInstance, const ClosestHit& c) {
     bool gpuHit = g.triangle != NO_HIT;
     if (gpuHit != c.hit) return false;
     if (!c.hit) return true;
     auto close = [](float a, float b, float tolerance) {
         return std::abs(a - b) <= tolerance * std::max(1.0f, std::abs(b));
     };
-    if (!close(g.t, c.t, 1e-6f)) return false;
-    if (g.triangle == c.triangle) return close(g.u, c.u, 1e-5f) && close(g.v, c.v, 1e-5f);
-    const gpu::Triangle& tri = scene.triangles[g.triangle];
-    gpu::TriangleHit h =
-        gpu::isSpherePrimitive(tri)
-            ? gpu::intersectSphere(ray.origin, ray.direction, tri.v0, tri.v1.x, 0.0f, VKPT_FAR)
-            : gpu::intersectTriangle(ray.origin, ray.direction, tri.v0, tri.v1, tri.v2, 0.0f,
-                                     VKPT_FAR);
-    return h.hit && close(h.t, c.t, 1e-6f);
+    // An instance's ray starts at the world origin moved into the mesh's space, rounded (with
+    // fused multiply-adds on the device) to a few 1e-7 of the origin's coordinates: for a small
+    // placed triangle met at a glancing angle, far from the origin, that moves t and the
+    // barycentrics by up to about 1e-5 and a few 1e-4 (the test prints the largest it meets).
+    const bool instanced = gInstance != NO_INSTANCE;
+    const float tTolerance = instanced ? 1e-4f : 1e-6f;
+    const float barycentricTolerance = instanced ? 1e-3f : 1e-5f;
+    if (!close(g.t, c.t, tTolerance)) return false;
+    if (g.triangle == c.triangle && gInstance == c.instance)
+        return close(g.u, c.u, barycentricTolerance) && close(g.v, c.v, barycentricTolerance);
+    return crossesNear(scene, ray, gInstance, g.triangle, c.t, tTolerance);
 }
 
-// The reference's filter for the scene: alpha MASK cut-outs let rays through (none without).
-class ReferenceFilter {
-public:
-    explicit ReferenceFilter(const PreparedScene& scene) : alphaMask_(scene), scene_(scene) {}
-    const HitFilter* get() const { return scene_.features.alphaMask ? &alphaMask_ : nullptr; }
+// The largest differences between the device's and the stack walk's hits on one placed
+// triangle, for the test's line.
+struct HitDifferences {
+    float t = 0.0f; // relative
+    float barycentric = 0.0f;
 
-private:
-    AlphaMaskFilter alphaMask_;
-    const PreparedScene& scene_;
+    void add(const gpu::HitRecord& g, const ClosestHit& c) {
+        if (!c.hit || g.triangle != c.triangle) return;
+        t = std::max(t, std::abs(g.t - c.t) / std::max(1.0f, std::abs(c.t)));
+        barycentric = std::max({barycentric, std::abs(g.u - c.u), std::abs(g.v - c.v)});
+    }
 };
 
 struct WalkFigures {
@@ -124,7 +152,8 @@ WalkFigures wideWalkFigures(const PreparedScene& scene, const std::vector<Device
     std::uint64_t total = 0;
     for (const DeviceRay& ray : rays) {
         TraversalCounters counters;
-        closestHitWide(scene.nodes, scene.triangles, {ray.origin, ray.direction}, &counters);
+        closestHitWide(scene.nodes, scene.triangles, scene.instances, {ray.origin, ray.direction},
+                       &counters);
         total += counters.nodesVisited;
         f.maxNodes = std::max(f.maxNodes, counters.nodesVisited);
     }
@@ -140,26 +169,30 @@ protected:
         for (int i = 0; i < kRays; ++i)
             rays.push_back(maker.next());
         DeviceRayQueries queries(context(), scene.prepared);
-        std::vector<gpu::HitRecord> hits = queries.closest(rays);
-        ReferenceFilter filter(scene.prepared);
-        const StackBvh stackBvh = makeStackBvh(scene.prepared.tree, scene.prepared.triangles);
+        std::vector<std::uint32_t> instances;
+        std::vector<gpu::HitRecord> hits = queries.closest(rays, &instances);
+        StackIntersectors intersectors(scene.prepared); // with the alpha filter, one or two levels
+        std::unique_ptr<SceneIntersector> stack = intersectors.makeIntersector();
         int disagreements = 0, hitCount = 0;
+        HitDifferences differences;
         for (std::size_t i = 0; i < rays.size(); ++i) {
-            ClosestHit cpu = closestHitStack(
-                stackBvh, {rays[i].origin, rays[i].direction, 0.0f, VKPT_FAR, filter.get()});
+            ClosestHit cpu = stack->closestHit(rays[i].origin, rays[i].direction);
             hitCount += cpu.hit ? 1 : 0;
-            if (sameClosestHit(scene.prepared, rays[i], hits[i], cpu)) continue;
+            if (instances[i] == cpu.instance) differences.add(hits[i], cpu);
+            if (sameClosestHit(scene.prepared, rays[i], hits[i], instances[i], cpu)) continue;
             if (++disagreements <= 5)
                 ADD_FAILURE() << name << ": ray " << i << " " << describe(rays[i]) << ": device "
-                              << hits[i].triangle << " at t " << hits[i].t << ", stack "
-                              << (cpu.hit ? int(cpu.triangle) : -1) << " at t " << cpu.t;
+                              << hits[i].triangle << " (instance " << instances[i] << ") at t "
+                              << hits[i].t << ", stack " << (cpu.hit ? int(cpu.triangle) : -1)
+                              << " (instance " << cpu.instance << ") at t " << cpu.t;
         }
         WalkFigures figures = wideWalkFigures(scene.prepared, rays);
-        std::printf("%s: %zu triangles, %d of %d rays hit, %d disagreements; wide walk on the "
-                    "CPU %.1f nodes per ray (max %llu); device %.1f nodes per ray\n",
+        std::printf("%s: %zu triangles, %d of %d rays hit, %d disagreements (largest relative t "
+                    "difference %.2g, barycentric %.2g); wide walk on the CPU %.1f nodes per ray "
+                    "(max %llu); device %.1f nodes per ray\n",
                     name.c_str(), scene.prepared.triangles.size(), hitCount, kRays, disagreements,
-                    figures.meanNodes, (unsigned long long)figures.maxNodes,
-                    double(queries.nodesVisited()) / kRays);
+                    double(differences.t), double(differences.barycentric), figures.meanNodes,
+                    (unsigned long long)figures.maxNodes, double(queries.nodesVisited()) / kRays);
         EXPECT_EQ(disagreements, 0);
         EXPECT_GT(hitCount, kRays / 10) << "too few hits to test anything";
         EXPECT_EQ(queries.truncatedTraversals(), 0u);
@@ -172,12 +205,11 @@ protected:
             rays.push_back(maker.nextSegment());
         DeviceRayQueries queries(context(), scene.prepared);
         std::vector<bool> occluded = queries.occluded(rays);
-        ReferenceFilter filter(scene.prepared);
-        const StackBvh stackBvh = makeStackBvh(scene.prepared.tree, scene.prepared.triangles);
+        StackIntersectors intersectors(scene.prepared);
+        std::unique_ptr<SceneIntersector> stack = intersectors.makeIntersector();
         int disagreements = 0, blocked = 0;
         for (std::size_t i = 0; i < rays.size(); ++i) {
-            bool cpu = anyHitStack(
-                stackBvh, {rays[i].origin, rays[i].direction, 0.0f, rays[i].tMax, filter.get()});
+            bool cpu = stack->occluded(rays[i].origin, rays[i].direction, rays[i].tMax);
             blocked += cpu ? 1 : 0;
             if (occluded[i] == cpu) continue;
             if (++disagreements <= 5)
@@ -270,6 +302,34 @@ TEST_F(DeviceTraversal, WalksResumeAfterCutOutsInsideALeaf) {
         << "the BVH no longer puts screens together; the test would not resume inside a leaf";
     expectClosestMatchesStack(scene, "stacked cut-outs");
     expectAnyHitMatchesStack(scene, "stacked cut-outs");
+}
+
+// Two levels: meshes placed by turned, scaled and mirrored instances (some placed twice at one
+// place: ties go to the lower instance on both sides), beside the scene's own triangles.
+TEST_F(DeviceTraversal, TwoLevelWalksMatchTheStackWalk) {
+    LoadedTestScene scene{
+        test::randomInstancedScene({synthetic::closedCube(3), synthetic::displacedSphere(8, 16),
+                                    synthetic::randomSoup(300, 9, 3.0f, 0.6f)},
+                                   40, 41),
+        {}};
+    scene.prepared = prepareScene(scene.scene);
+    ASSERT_TRUE(scene.prepared.features.instances);
+    expectClosestMatchesStack(scene, "instances");
+    expectAnyHitMatchesStack(scene, "instances");
+}
+
+// The feature scenes with spheres and alpha cut-outs as one mesh placed by an instance (the
+// spheres stay in the scene's own level).
+TEST_F(DeviceTraversal, TwoLevelSpheresAndAlphaCutOutsMatchTheStackWalk) {
+    for (const NamedScene& named : featureScenes()) {
+        if (named.name != "spheres" && named.name != "alpha_mask") continue;
+        glm::dmat4 placement = glm::rotate(glm::dmat4(1.0), 0.4, glm::dvec3(0.0, 1.0, 0.0));
+        placement = glm::scale(placement, glm::dvec3(-1.0, 1.0, 1.0));
+        LoadedTestScene scene = prepareTestScene(test::instanceWholeScene(named.make(), placement));
+        ASSERT_TRUE(scene.prepared.features.instances);
+        expectClosestMatchesStack(scene, named.name + " instanced");
+        expectAnyHitMatchesStack(scene, named.name + " instanced");
+    }
 }
 
 TEST_F(DeviceTraversal, ClosestAndAnyHitsMatchTheStackWalkInASharedScene) {

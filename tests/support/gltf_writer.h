@@ -76,8 +76,8 @@ public:
         return int(model_.materials.size() - 1);
     }
 
-    // A node with the mesh under the scene root.
-    void addMesh(const MeshData& data) {
+    // A mesh of one primitive, placed by no node yet; its index.
+    int addMeshData(const MeshData& data) {
         tinygltf::Primitive primitive;
         primitive.mode = TINYGLTF_MODE_TRIANGLES;
         primitive.material = data.material;
@@ -88,13 +88,50 @@ public:
         tinygltf::Mesh mesh;
         mesh.primitives.push_back(primitive);
         model_.meshes.push_back(mesh);
+        return int(model_.meshes.size() - 1);
+    }
+
+    // A node with the mesh under the scene root.
+    void addMesh(const MeshData& data) {
         tinygltf::Node node;
-        node.mesh = int(model_.meshes.size() - 1);
+        node.mesh = addMeshData(data);
         addRootNode(node);
     }
 
-    // A perspective camera at `position` looking down −z (glTF's camera convention).
-    void addCamera(glm::vec3 position, double yfovRadians) {
+    // A node placing mesh `mesh` by translation × rotation × scale (rotation x, y, z, w).
+    void addMeshNode(int mesh, glm::vec3 translation = glm::vec3(0.0f),
+                     glm::vec4 rotation = glm::vec4(0, 0, 0, 1),
+                     glm::vec3 scale = glm::vec3(1.0f)) {
+        tinygltf::Node node;
+        node.mesh = mesh;
+        node.translation = {translation.x, translation.y, translation.z};
+        node.rotation = {rotation.x, rotation.y, rotation.z, rotation.w};
+        node.scale = {scale.x, scale.y, scale.z};
+        addRootNode(node);
+    }
+
+    // A node placing mesh `mesh` once per element of EXT_mesh_gpu_instancing's TRANSLATION,
+    // ROTATION (x, y, z, w) and SCALE, which must be of one length.
+    void addInstancedMeshNode(int mesh, const std::vector<glm::vec3>& translations,
+                              const std::vector<glm::vec4>& rotations,
+                              const std::vector<glm::vec3>& scales) {
+        tinygltf::Value::Object attributes;
+        attributes["TRANSLATION"] = tinygltf::Value(addVec3Accessor(translations));
+        attributes["ROTATION"] = tinygltf::Value(addVec4Accessor(rotations));
+        attributes["SCALE"] = tinygltf::Value(addVec3Accessor(scales));
+        tinygltf::Value::Object extension;
+        extension["attributes"] = tinygltf::Value(attributes);
+        tinygltf::Node node;
+        node.mesh = mesh;
+        node.extensions["EXT_mesh_gpu_instancing"] = tinygltf::Value(extension);
+        addExtensionUsed("EXT_mesh_gpu_instancing");
+        addRootNode(node);
+    }
+
+    // A perspective camera at `position` looking down −z (glTF's camera convention), turned by
+    // `rotation` (x, y, z, w).
+    void addCamera(glm::vec3 position, double yfovRadians,
+                   glm::vec4 rotation = glm::vec4(0, 0, 0, 1)) {
         tinygltf::Camera camera;
         camera.type = "perspective";
         camera.perspective.yfov = yfovRadians;
@@ -103,6 +140,8 @@ public:
         tinygltf::Node node;
         node.camera = int(model_.cameras.size() - 1);
         node.translation = {position.x, position.y, position.z};
+        if (rotation != glm::vec4(0, 0, 0, 1))
+            node.rotation = {rotation.x, rotation.y, rotation.z, rotation.w};
         addRootNode(node);
     }
 
@@ -166,6 +205,16 @@ private:
         accessor.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
         accessor.count = values.size();
         accessor.type = TINYGLTF_TYPE_VEC2;
+        model_.accessors.push_back(accessor);
+        return int(model_.accessors.size() - 1);
+    }
+
+    int addVec4Accessor(const std::vector<glm::vec4>& values) {
+        tinygltf::Accessor accessor;
+        accessor.bufferView = addView(values.data(), values.size() * sizeof(glm::vec4), 0);
+        accessor.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
+        accessor.count = values.size();
+        accessor.type = TINYGLTF_TYPE_VEC4;
         model_.accessors.push_back(accessor);
         return int(model_.accessors.size() - 1);
     }

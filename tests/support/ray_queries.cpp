@@ -17,7 +17,8 @@ namespace vkpt {
 
 struct DeviceRayQueries::State {
     State(GpuContext& c, const PreparedScene& scene, std::uint32_t batch)
-        : context(c), batchSize(batch), deviceScene(uploadScene(c, scene)), buffers(c, batch, 1, 1),
+        : context(c), batchSize(batch), deviceScene(uploadScene(c, scene)),
+          buffers(c, batch, 1, 1, scene.features.instances),
           closestKernel(makeWavefrontKernel(c, WavefrontKernel::TraceClosest, scene.features)),
           shadowKernel(makeWavefrontKernel(c, WavefrontKernel::TraceShadow, scene.features)),
           closestSet(bindWavefrontKernel(closestKernel, WavefrontKernel::TraceClosest, table())),
@@ -85,9 +86,11 @@ DeviceRayQueries::DeviceRayQueries(GpuContext& context, const PreparedScene& sce
 
 DeviceRayQueries::~DeviceRayQueries() = default;
 
-std::vector<gpu::HitRecord> DeviceRayQueries::closest(std::span<const DeviceRay> rays) {
+std::vector<gpu::HitRecord> DeviceRayQueries::closest(std::span<const DeviceRay> rays,
+                                                      std::vector<std::uint32_t>* instances) {
     State& s = *state_;
     std::vector<gpu::HitRecord> hits;
+    if (instances) instances->clear();
     for (std::size_t first = 0; first < rays.size(); first += s.batchSize) {
         const auto count =
             static_cast<std::uint32_t>(std::min<std::size_t>(s.batchSize, rays.size() - first));
@@ -102,6 +105,14 @@ std::vector<gpu::HitRecord> DeviceRayQueries::closest(std::span<const DeviceRay>
         std::vector<gpu::HitRecord> batch =
             download<gpu::HitRecord>(s.context, s.buffers.hits, count);
         hits.insert(hits.end(), batch.begin(), batch.end());
+        if (!instances) continue;
+        if (!s.buffers.hitInstances) {
+            instances->insert(instances->end(), count, NO_INSTANCE);
+            continue;
+        }
+        std::vector<std::uint32_t> found =
+            download<std::uint32_t>(s.context, *s.buffers.hitInstances, count);
+        instances->insert(instances->end(), found.begin(), found.end());
     }
     return hits;
 }

@@ -30,8 +30,10 @@ public:
     DeviceRayQueries(const DeviceRayQueries&) = delete;
     DeviceRayQueries& operator=(const DeviceRayQueries&) = delete;
 
-    // trace_closest: t in (0, VKPT_FAR); triangle NO_HIT on a miss.
-    std::vector<gpu::HitRecord> closest(std::span<const DeviceRay> rays);
+    // trace_closest: t in (0, VKPT_FAR); triangle NO_HIT on a miss. With `instances`, each hit's
+    // instance too (NO_INSTANCE in a scene of one level).
+    std::vector<gpu::HitRecord> closest(std::span<const DeviceRay> rays,
+                                        std::vector<std::uint32_t>* instances = nullptr);
     // trace_shadow on segment records: true where something lies at t in (0, tMax).
     std::vector<bool> occluded(std::span<const DeviceRay> rays);
 

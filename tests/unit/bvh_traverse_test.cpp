@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/ray_description.h"
+
 #include "bvh/bvh_traverse.h"
 #include "bvh/bvh_wide.h"
 #include "bvh/synthetic_scenes.h"
@@ -137,14 +139,6 @@ private:
     float size_;
 };
 
-std::string describe(const RayQuery& ray) {
-    std::ostringstream s;
-    s << std::setprecision(9) << "ray o=(" << ray.origin.x << ", " << ray.origin.y << ", "
-      << ray.origin.z << ") d=(" << ray.direction.x << ", " << ray.direction.y << ", "
-      << ray.direction.z << ") t in (" << ray.tMin << ", " << ray.tMax << ")";
-    return s.str();
-}
-
 // Equal hits: both miss, or both hit at exactly the same t, on the same primitive with the same
 // barycentrics or on two that really tie there. Walks prefer the lowest index among the
 // crossings they find at one t (intersect.h), but each may pass over a box that holds another
@@ -198,23 +192,24 @@ bool checkRay(const BuiltScene& s, const RayQuery& ray, bool bruteForce, WalkFig
     f.maxWideIterations =
         std::max(f.maxWideIterations, wideCount.nodesVisited + wideCount.triangleTests);
     f.hits += stack.hit ? 1 : 0;
-    EXPECT_TRUE(sameHit(s, ray, stack, wide)) << "stack vs wide, " << describe(ray);
+    EXPECT_TRUE(sameHit(s, ray, stack, wide)) << "stack vs wide, " << test::describeRay(ray);
     EXPECT_TRUE(
         sameHit(s, ray, stack, renumbered(s, closestHitWide(s.tall.nodes, s.tall.triangles, ray))))
-        << "stack vs wide collapsed tallest first, " << describe(ray);
+        << "stack vs wide collapsed tallest first, " << test::describeRay(ray);
     if (bruteForce) {
         ClosestHit brute = closestHitBruteForce(s.triangles, ray);
-        EXPECT_TRUE(sameHit(s, ray, brute, stack)) << "brute force vs stack, " << describe(ray);
+        EXPECT_TRUE(sameHit(s, ray, brute, stack))
+            << "brute force vs stack, " << test::describeRay(ray);
     }
-    EXPECT_EQ(anyHitStack(s.stackBvh, ray), stack.hit) << describe(ray);
-    EXPECT_EQ(anyHitWide(s.nodes, s.triangles, ray), stack.hit) << describe(ray);
-    EXPECT_EQ(anyHitWide(s.tall.nodes, s.tall.triangles, ray), stack.hit) << describe(ray);
+    EXPECT_EQ(anyHitStack(s.stackBvh, ray), stack.hit) << test::describeRay(ray);
+    EXPECT_EQ(anyHitWide(s.nodes, s.triangles, ray), stack.hit) << test::describeRay(ray);
+    EXPECT_EQ(anyHitWide(s.tall.nodes, s.tall.triangles, ray), stack.hit) << test::describeRay(ray);
     if (stack.hit) {
         // Nothing lies strictly nearer than the closest hit (tMax is exclusive).
         RayQuery nearer = ray;
         nearer.tMax = stack.t;
-        EXPECT_FALSE(anyHitStack(s.stackBvh, nearer)) << describe(ray);
-        EXPECT_FALSE(anyHitWide(s.nodes, s.triangles, nearer)) << describe(ray);
+        EXPECT_FALSE(anyHitStack(s.stackBvh, nearer)) << test::describeRay(ray);
+        EXPECT_FALSE(anyHitWide(s.nodes, s.triangles, nearer)) << test::describeRay(ray);
     }
     return !::testing::Test::HasFailure();
 }

@@ -48,19 +48,18 @@ struct TestEnvironment {
     }
 
     gpu::EnvironmentSample sampleAt(glm::vec2 u) const {
-        return gpu::sampleEnvironment(params, u, texels(), cdf());
+        return gpu::sampleEnvironment(params, u, view());
     }
-    float pdf(glm::vec3 direction) const {
-        return gpu::environmentPdf(params, direction, texels(), cdf());
-    }
+    float pdf(glm::vec3 direction) const { return gpu::environmentPdf(params, direction, view()); }
     glm::vec3 radiance(glm::vec3 direction) const {
-        return gpu::environmentRadiance(params, direction, texels(), cdf());
+        return gpu::environmentRadiance(params, direction, view());
     }
-    const glm::vec4* texels() const {
-        return distribution.texels.empty() ? nullptr : distribution.texels.data();
-    }
-    const float* cdf() const {
-        return distribution.cdf.empty() ? nullptr : distribution.cdf.data();
+    // The shared code reads the map's tables through a SceneView; nothing else in it is read.
+    gpu::SceneView view() const {
+        gpu::SceneView v{};
+        v.environmentTexels = distribution.texels;
+        v.environmentCdf = distribution.cdf;
+        return v;
     }
 };
 

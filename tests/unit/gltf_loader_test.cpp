@@ -212,7 +212,7 @@ TEST(GltfLoader, ListsUnsupportedExtensionsOnceInOneLine) {
     loadGltfScene(path);
     EXPECT_EQ(testing::internal::GetCapturedStderr(),
               path +
-                  ": ignoring unsupported extensions: EXT_mesh_gpu_instancing, NV_materials_mdl\n");
+                  ": ignoring unsupported extensions: EXT_lights_image_based, NV_materials_mdl\n");
 }
 
 TEST(GltfLoader, OptionSilencesTheUnsupportedExtensionNote) {
@@ -272,7 +272,16 @@ const InvalidCase kInvalidCases[] = {
      "mesh 0, primitive 0: POSITION: accessor 0 is sparse, which vkpt does not support"},
     {"NoTriangles", "no_triangles.gltf", "the scene has no triangles"},
     {"UnsupportedRequiredExtension", "required_extension.gltf",
-     "required extensions KHR_texture_basisu, EXT_mesh_gpu_instancing are not supported"},
+     "required extensions KHR_texture_basisu, EXT_lights_image_based are not supported"},
+    {"InstancingAttributeCountsDiffer", "instancing_count_mismatch.gltf",
+     "node 0: EXT_mesh_gpu_instancing: SCALE has 2 elements, TRANSLATION 3"},
+    {"InstancingWithoutAttributes", "instancing_without_attributes.gltf",
+     "node 0: EXT_mesh_gpu_instancing: no attributes (TRANSLATION, ROTATION or SCALE)"},
+    {"InstancingZeroRotation", "instancing_zero_rotation.gltf",
+     "node 0: EXT_mesh_gpu_instancing: instance 1 has a zero or non-finite ROTATION"},
+    {"InstancingRotationUnsigned", "instancing_rotation_unsigned.gltf",
+     "node 0: EXT_mesh_gpu_instancing ROTATION: accessor 4 is VEC4 of UNSIGNED_BYTE, expected "
+     "VEC4 of FLOAT, BYTE or SHORT"},
     {"NodeCycle", "node_cycle.gltf", "node 0: the node hierarchy has a cycle"},
     {"MissingNode", "missing_node.gltf", "scene 0: node 7 does not exist (the file has 2 nodes)"},
     {"MissingMaterial", "missing_material.gltf",

@@ -77,7 +77,7 @@ struct TinyScene {
 SurfacePoint hitFrom(const TinyScene& scene, vec3 origin, vec3 target) {
     vec3 direction = target - origin;
     TriangleHit hit{1.0f, 0.25f, 0.25f, true};
-    return makeSurfacePoint(0u, hit, origin, direction, scene.view());
+    return makeSurfacePoint(0u, NO_INSTANCE, hit, origin, direction, scene.view());
 }
 
 TEST(SharedSurface, FrontHitFacesTheRayAndEmits) {
@@ -126,13 +126,13 @@ TEST(SharedSurface, SphereHitIsPutBackOnTheSphere) {
     scene.features[FEATURE_SPHERES] = true;
     TriangleHit hit{3.0f, 0.0f, 0.0f, true};
     SurfacePoint outside =
-        makeSurfacePoint(0u, hit, vec3(0.0f), vec3(0.0f, 0.0f, -1.0f), scene.view());
+        makeSurfacePoint(0u, NO_INSTANCE, hit, vec3(0.0f), vec3(0.0f, 0.0f, -1.0f), scene.view());
     EXPECT_TRUE(outside.frontFace);
     EXPECT_EQ(outside.position, vec3(0.0f, 0.0f, -3.0f));
     EXPECT_EQ(outside.geometricNormal, vec3(0.0f, 0.0f, 1.0f));
     SurfacePoint inside =
-        makeSurfacePoint(0u, TriangleHit{2.0f, 0.0f, 0.0f, true}, vec3(0.0f, 0.0f, -5.0f),
-                         vec3(0.0f, 0.0f, 1.0f), scene.view());
+        makeSurfacePoint(0u, NO_INSTANCE, TriangleHit{2.0f, 0.0f, 0.0f, true},
+                         vec3(0.0f, 0.0f, -5.0f), vec3(0.0f, 0.0f, 1.0f), scene.view());
     EXPECT_FALSE(inside.frontFace);
     EXPECT_EQ(inside.geometricNormal, vec3(0.0f, 0.0f, -1.0f));
     EXPECT_EQ(inside.rawShadingNormal, vec3(0.0f, 0.0f, 1.0f));
@@ -155,7 +155,7 @@ TEST(SharedSurface, TexturesScaleFactorsAndCutOutByAlpha) {
     scene.features[FEATURE_TEXTURES] = true;
     EXPECT_TRUE(isCutOut(0u, left, origin, direction, scene.view()));
     EXPECT_FALSE(isCutOut(0u, right, origin, direction, scene.view()));
-    SurfacePoint s = makeSurfacePoint(0u, left, origin, direction, scene.view());
+    SurfacePoint s = makeSurfacePoint(0u, NO_INSTANCE, left, origin, direction, scene.view());
     EXPECT_EQ(s.shading.baseColor, vec3(0.5f, 0.0f, 0.0f));
 }
 
@@ -185,8 +185,8 @@ TEST(SharedLights, LightSampleMatchesLightPdfAndConnectsBothEnds) {
                                 vec3(1.0f, -1.0f, 0.0f), 1u});
     scene.normals.push_back(scene.normals[0]);
     SurfacePoint receiver =
-        makeSurfacePoint(1u, TriangleHit{0.5f, 0.5f, 0.0f, true}, vec3(-1.0f, 0.0f, -0.5f),
-                         vec3(0.0f, 0.0f, 1.0f), scene.view());
+        makeSurfacePoint(1u, NO_INSTANCE, TriangleHit{0.5f, 0.5f, 0.0f, true},
+                         vec3(-1.0f, 0.0f, -0.5f), vec3(0.0f, 0.0f, 1.0f), scene.view());
     ASSERT_EQ(receiver.position, vec3(-1.0f, 0.0f, 0.0f));
     ASSERT_EQ(receiver.geometricNormal, vec3(0.0f, 0.0f, -1.0f));
     const vec4 u(0.5f, 0.3f, 0.6f, 0.0f);
@@ -196,7 +196,7 @@ TEST(SharedLights, LightSampleMatchesLightPdfAndConnectsBothEnds) {
     EXPECT_EQ(light.radiance, vec3(2.0f));
     EXPECT_EQ(light.towardsReceiver, vec3(0.0f, 0.0f, 1.0f));
     vec3 toLight = light.position - receiver.position;
-    SurfacePoint reached = makeSurfacePoint(0u, TriangleHit{1.0f, 0.0f, 0.0f, true},
+    SurfacePoint reached = makeSurfacePoint(0u, NO_INSTANCE, TriangleHit{1.0f, 0.0f, 0.0f, true},
                                             receiver.position, toLight, scene.view());
     reached.position = light.position;
     EXPECT_NEAR(lightPdf(reached, receiver.position, scene.view()), light.pdfSolidAngle,

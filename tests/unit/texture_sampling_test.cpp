@@ -27,6 +27,13 @@ gpu::TextureInfo textureInfo(std::uint32_t offset, std::uint32_t width, std::uin
     return {offset, width, height, wrapS | (wrapT << 2u) | (nearest ? TEXTURE_FILTER_NEAREST : 0u)};
 }
 
+// The shared code reads texels through a SceneView; these tests need nothing else in it.
+gpu::SceneView texelView(const std::vector<std::uint32_t>& texels) {
+    gpu::SceneView view{};
+    view.textureTexels = texels;
+    return view;
+}
+
 void expectColour(vec4 actual, vec4 expected, float tolerance = 1e-6f) {
     for (int c = 0; c < 4; ++c)
         EXPECT_NEAR(actual[c], expected[c], tolerance) << "channel " << c;
@@ -88,7 +95,7 @@ protected:
 
     float red(vec2 uv, std::uint32_t wrap, bool nearest) {
         return gpu::sampleTexture(textureInfo(0, 2, 2, wrap, wrap, nearest), uv, false,
-                                  texels.data())
+                                  texelView(texels))
                    .x *
                255.0f;
     }
@@ -153,13 +160,13 @@ TEST_F(TwoByTwo, NanOrInfiniteCoordinatesReadTexelZero) {
 TEST(TextureSampling, SrgbTexelsAreDecodedBeforeFiltering) {
     const std::vector<std::uint32_t> texels{packTexel(0, 128, 0, 0), packTexel(255, 128, 0, 255)};
     gpu::TextureInfo info = textureInfo(0, 2, 1, TEXTURE_WRAP_CLAMP, TEXTURE_WRAP_CLAMP, false);
-    vec4 middle = gpu::sampleTexture(info, vec2(0.5f, 0.5f), true, texels.data());
+    vec4 middle = gpu::sampleTexture(info, vec2(0.5f, 0.5f), true, texelView(texels));
     EXPECT_NEAR(middle.x, 0.5f, 1e-6f);
     EXPECT_NEAR(middle.y, gpu::srgbChannelToLinear(128.0f / 255.0f), 1e-6f);
     EXPECT_NEAR(middle.w, 0.5f, 1e-6f);
-    vec4 linear = gpu::sampleTexture(info, vec2(0.25f, 0.5f), false, texels.data());
+    vec4 linear = gpu::sampleTexture(info, vec2(0.25f, 0.5f), false, texelView(texels));
     EXPECT_NEAR(linear.y, 128.0f / 255.0f, 1e-6f);
-    vec4 alphaOnly = gpu::sampleTexture(info, vec2(0.25f, 0.5f), true, texels.data());
+    vec4 alphaOnly = gpu::sampleTexture(info, vec2(0.25f, 0.5f), true, texelView(texels));
     EXPECT_EQ(alphaOnly.w, 0.0f);
 }
 
@@ -169,12 +176,13 @@ TEST(TextureSampling, ReadsItsOwnBlockOfTheSharedBuffer) {
     for (unsigned i = 0; i < 6; ++i)
         texels.push_back(packTexel(i * 10, 0, 0, 255)); // 3 × 2
     gpu::TextureInfo info = textureInfo(5, 3, 2, TEXTURE_WRAP_REPEAT, TEXTURE_WRAP_REPEAT, true);
-    EXPECT_NEAR(gpu::sampleTexture(info, vec2(0.9f, 0.2f), false, texels.data()).x * 255.0f, 20.0f,
-                1e-4f);
-    EXPECT_NEAR(gpu::sampleTexture(info, vec2(0.5f, 0.7f), false, texels.data()).x * 255.0f, 40.0f,
-                1e-4f);
-    EXPECT_EQ(gpu::sampleTexture(textureInfo(0, 0, 0, 0, 0, false), vec2(0.5f), true, nullptr),
-              vec4(1.0f));
+    EXPECT_NEAR(gpu::sampleTexture(info, vec2(0.9f, 0.2f), false, texelView(texels)).x * 255.0f,
+                20.0f, 1e-4f);
+    EXPECT_NEAR(gpu::sampleTexture(info, vec2(0.5f, 0.7f), false, texelView(texels)).x * 255.0f,
+                40.0f, 1e-4f);
+    EXPECT_EQ(
+        gpu::sampleTexture(textureInfo(0, 0, 0, 0, 0, false), vec2(0.5f), true, gpu::SceneView{}),
+        vec4(1.0f));
 }
 
 // KHR_texture_transform: M = T·R·S with, in GLSL's column-major mat3 constructor,
