@@ -218,6 +218,7 @@ bool loadBenchScene(const std::string& path, BenchScene& scene) {
     try {
         LoadOptions options;
         options.warnUnsupportedExtensions = false;
+        options.instancing = Instancing::Off; // one tree over every placed triangle
         Scene loaded = loadGltfScene(path, options);
         scene.name = std::filesystem::path(path).filename().string();
         scene.camera = loaded.cameras.empty() ? makeFramingCamera(computeBounds(loaded), 1.0f)

@@ -142,6 +142,10 @@ EmbreeIntersectors::EmbreeIntersectors(const PreparedScene& scene, std::uint32_t
         throw InputError(
             std::to_string(spheres) +
             " spheres (KHR_implicit_shapes): the Embree baseline traces triangles only");
+    if (scene.features.instances)
+        throw InputError(std::to_string(scene.instances.size()) +
+                         " instances: the Embree baseline traces one level of world-space "
+                         "triangles (render with --instancing off)");
     state_->createDevice(threads);
     auto start = std::chrono::steady_clock::now();
     state_->build(scene);
