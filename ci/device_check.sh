@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # device_check.sh — on a machine with a GPU: the Vulkan test labels with validation on, then the
-# benchmarks at sizes that fill a GPU (1080p, the 1M-triangle room, a million paths in flight),
+# benchmarks at sizes that fill a GPU (1080p, the 1M-triangle room, a million paths in flight,
+# the instanced field flattened and instanced at 8.5 million and instanced at 103 million placed
+# triangles),
 # with every figure written to a folder. Uses build/device-bundle.tar.xz when it is there
 # (ci/device_bundle.sh packs it on the development machine, for GPU machines without Debian's
 # packages), else the release build, building it when missing.
@@ -75,9 +77,9 @@ say "tests: ${#tests[@]} executables, $failed failed"
 
 # ---- benchmarks at GPU sizes ---------------------------------------------------------------
 if [ "${DEVICE_CHECK_QUICK:-0}" = 1 ]; then
-    width=256 height=144 spp=4 room=20000 runs=1
+    width=256 height=144 spp=4 room=20000 runs=1 field=16:16 big_field=24:16
 else
-    width=1920 height=1080 spp=64 room=1000000 runs=3
+    width=1920 height=1080 spp=64 room=1000000 runs=3 field=64:32 big_field=112:64
 fi
 threads=$(nproc)
 room_scene="$out/room-$room.gltf"
@@ -91,6 +93,24 @@ for scene in scenes/cornell-box.gltf "$room_scene"; do
     "$bin/vkpt" "${device_args[@]}" --spp "$spp" --res "$width" "$height" --stats \
         --stats-json "$out/vkpt-$name.json" -o "$out/vkpt-$name.pfm" "$scene" 2>&1 |
         grep -E 'Mrays|rays:|samples:|device:|kernel|pipelines' | tee -a "$summary"
+done
+
+# Instancing (docs/scene-model.md, "Instancing"): the field of meshes placed many times,
+# flattened against instanced at 8.5 million placed triangles, and instanced at 103 million.
+for size in "$field" "$big_field"; do
+    grid="${size%%:*}" rings="${size##*:}"
+    field_scene="$out/field-$grid-$rings.gltf"
+    "$bin/write_instanced_scene" --grid "$grid" --rings "$rings" "$field_scene" \
+        >>"$out/bench.log" 2>&1 || say "write_instanced_scene failed (bench.log)"
+    modes="off on"
+    [ "$size" = "$big_field" ] && modes="on"
+    for mode in $modes; do
+        say "vkpt field $grid:$rings --instancing $mode ${width}x${height}, $spp spp:"
+        "$bin/vkpt" "${device_args[@]}" --instancing "$mode" --spp "$spp" \
+            --res "$width" "$height" --stats --stats-json "$out/vkpt-field-$grid-$mode.json" \
+            -o "$out/vkpt-field-$grid-$mode.pfm" "$field_scene" 2>&1 |
+            grep -E 'triangles|Mrays|device:|kernel|pipelines' | tee -a "$summary"
+    done
 done
 
 say "gpu_bench (vkpt against vkpt-ref on this machine's CPU):"
