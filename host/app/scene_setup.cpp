@@ -23,7 +23,7 @@ SceneEnvironment loadEnvironment(const RenderSettings& settings) {
     return environment;
 }
 
-// " (1,048,576 stored once: 12 meshes placed by 2,000 instances)" for a two-level scene.
+// " (16438 stored: 2 meshes placed by 12544 instances)" for a two-level scene.
 std::string instancingNote(const Scene& scene) {
     if (scene.instances.empty()) return "";
     return " (" + std::to_string(scene.storedTriangleCount()) +
