@@ -4,9 +4,9 @@
 set -euo pipefail
 
 packages=(
-    build-essential cmake pkg-config
+    build-essential cmake pkg-config ccache
     libvulkan-dev libvulkan-volk-dev mesa-vulkan-drivers vulkan-validationlayers
-    glslang-tools glslang-dev
+    glslang-tools glslang-dev spirv-tools
     libglm-dev libstb-dev libtinygltf-dev
     # Compressed glTF: Draco meshes, meshopt buffer views, WebP textures; the JSON pre-pass.
     libdraco-dev libmeshoptimizer-dev libwebp-dev nlohmann-json3-dev
