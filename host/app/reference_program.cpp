@@ -15,6 +15,7 @@
 #include "app/render_report.h"
 #include "app/run_program.h"
 #include "app/scene_setup.h"
+#include "common/phase_log.h"
 #include "image/image_io.h"
 #include "reference/reference_renderer.h"
 
@@ -55,6 +56,8 @@ ReferenceOptions referenceOptions(RenderPart& part, const IntersectorFactory& in
     options.intersectors = &intersectors;
     options.plan = part.plan();
     options.resume = part.resumeRecords();
+    options.aovs = part.needsAovs();
+    options.resumeFeatures = part.resumeFeatures();
     options.interrupt = &stopRequested();
     options.checkpointSeconds = part.checkpointSeconds();
     if (options.checkpointSeconds > 0.0) options.checkpoint = part.checkpointWriter();
@@ -73,14 +76,20 @@ int run(const ReferenceProgram& program, const ProgramOptions& invocation) {
     const std::optional<Image> reference = loadReferenceFor(convergence, settings);
     SceneSetup setup = setUpScene(settings, program.name);
     part.attachScene(setup);
+    ScopedPhase layoutPhase("ray queries");
     std::unique_ptr<IntersectorFactory> intersectors =
         program.makeIntersectors(setup.prepared, settings);
+    layoutPhase.end();
     RenderReport report = sceneReport(program.name, settings, setup);
+    ScopedPhase renderPhase("render");
     const ReferenceResult result =
         renderReferenceParts(setup.prepared, setup.camera, settings, report.stats,
                              referenceOptions(part, *intersectors));
+    renderPhase.end();
     const RenderOutput& output = result.output;
-    part.writeResults(output, result.records, result.interrupted);
+    ScopedPhase writePhase("write");
+    part.writeResults(output, result.records, result.features, result.interrupted);
+    writePhase.end();
     report.device = deviceDescription(settings);
     report.convergence = finalError(convergence, reference ? &*reference : nullptr, output,
                                     report.stats, settings.samplesPerPixel);

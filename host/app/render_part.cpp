@@ -9,8 +9,6 @@
 #include "image/image_file.h"
 #include "image/image_io.h"
 #include "prepare/scene_hash.h"
-#include "reference/first_hit_features.h"
-#include "reference/stack_intersector.h"
 #include "state/atomic_write.h"
 #include "state/state_file.h"
 #include "state/state_merge.h"
@@ -82,16 +80,19 @@ void RenderPart::checkResumable(const RenderState& resumed) {
                          " (resume with the --task and --spp the part was started with)");
 }
 
-void RenderPart::computeFeatures() {
-    VKPT_ASSERT(setup_ != nullptr, "attachScene comes first");
-    if (features_.empty())
-        features_ =
-            renderFirstHitFeatures(setup_->prepared, StackIntersectors(setup_->prepared),
-                                   setup_->camera, settings_.seed, plan_.crop, settings_.threads);
+bool RenderPart::needsAovs() const {
+    return isExr(settings_.outputPath) || farm_.checkpointSeconds > 0.0 ||
+           resumeFeatures() != nullptr;
 }
 
-RenderState RenderPart::stateOf(const std::vector<PixelRecord>& records) {
-    computeFeatures();
+const std::vector<FeatureRecord>* RenderPart::resumeFeatures() const {
+    return resumed_ && !resumed_->features.empty() ? &resumed_->features : nullptr;
+}
+
+RenderState RenderPart::stateOf(const std::vector<PixelRecord>& records,
+                                const std::vector<FeatureRecord>& features) const {
+    VKPT_ASSERT(features.empty() || features.size() == records.size(),
+                "features cover the records' pixels");
     RenderState state;
     state.identity = identity_;
     state.origin.program = program_;
@@ -102,7 +103,7 @@ RenderState RenderPart::stateOf(const std::vector<PixelRecord>& records) {
     state.window = plan_.crop;
     state.regions = {{plan_.crop, rangesTaken(records, plan_, settings_.adaptive.enabled)}};
     state.pixels = records;
-    state.features = features_;
+    state.features = features;
     return state;
 }
 
@@ -113,16 +114,18 @@ void RenderPart::writeState(const RenderState& state, const std::string& path, c
                  describeRanges(ranges).c_str());
 }
 
-std::function<void(const std::vector<PixelRecord>&)> RenderPart::checkpointWriter() {
-    return [this](const std::vector<PixelRecord>& records) {
-        writeState(stateOf(records), statePathFor(settings_.outputPath), "checkpoint");
+std::function<void(const std::vector<PixelRecord>&, const std::vector<FeatureRecord>&)>
+RenderPart::checkpointWriter() {
+    return [this](const std::vector<PixelRecord>& records,
+                  const std::vector<FeatureRecord>& features) {
+        writeState(stateOf(records, features), statePathFor(settings_.outputPath), "checkpoint");
     };
 }
 
 void RenderPart::writeResults(const RenderOutput& output, const std::vector<PixelRecord>& records,
-                              bool stopped) {
+                              const std::vector<FeatureRecord>& features, bool stopped) {
     const std::string& path = settings_.outputPath;
-    const RenderState state = stateOf(records);
+    const RenderState state = stateOf(records, features);
     try {
         if (isExr(path))
             writeStateFile(state, path);

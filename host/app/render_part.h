@@ -23,26 +23,31 @@ public:
     // the file: another scene, settings, seed, size, crop, or samples that are not the start
     // of this render's share).
     void attachScene(const SceneSetup& setup);
-    // Computes now the first-hit features every state write records (from the host's copy of
-    // the scene, on the CPU), so that the copy may be freed before the render (vkpt).
-    void computeFeatures();
-
     const SamplePlan& plan() const { return plan_; }
     const std::vector<PixelRecord>* resumeRecords() const {
         return resumed_ ? &resumed_->pixels : nullptr;
     }
+    // Whether the executor records AOVs: the state files this part writes by plan hold them
+    // (an .exr output, checkpoints), or the resumed state has them to continue. A state saved
+    // only because a render without them was stopped holds no AOV layers.
+    bool needsAovs() const;
+    // The resumed state's features (plan().crop, row-major), or null.
+    const std::vector<FeatureRecord>* resumeFeatures() const;
     double checkpointSeconds() const { return farm_.checkpointSeconds; }
     // Writes the state file (atomically) and says so on stderr.
-    std::function<void(const std::vector<PixelRecord>&)> checkpointWriter();
+    std::function<void(const std::vector<PixelRecord>&, const std::vector<FeatureRecord>&)>
+    checkpointWriter();
 
     // The image (or, for .exr, the whole state), its heat map, and the state file when the
-    // output is not .exr but checkpoints were asked for or the render was stopped. A failed
-    // write saves the state to rescuePathFor() first, then throws InputError naming both.
+    // output is not .exr but checkpoints were asked for or the render was stopped. `features`:
+    // the executor's AOVs of the same pixels, or empty. A failed write saves the state to
+    // rescuePathFor() first, then throws InputError naming both.
     void writeResults(const RenderOutput& output, const std::vector<PixelRecord>& records,
-                      bool stopped);
+                      const std::vector<FeatureRecord>& features, bool stopped);
 
 private:
-    RenderState stateOf(const std::vector<PixelRecord>& records);
+    RenderState stateOf(const std::vector<PixelRecord>& records,
+                        const std::vector<FeatureRecord>& features) const;
     void checkResumable(const RenderState& resumed);
     void writeState(const RenderState& state, const std::string& path, const char* what);
 
@@ -53,7 +58,6 @@ private:
     const SceneSetup* setup_ = nullptr;
     StateIdentity identity_;
     std::optional<RenderState> resumed_;
-    std::vector<FeatureRecord> features_; // computed at the first write, or before
 };
 
 } // namespace vkpt

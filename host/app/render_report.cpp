@@ -42,6 +42,21 @@ void writeSettings(JsonWriter& json, const RenderSettings& s) {
     json.endObject();
 }
 
+// "process": the whole process's seconds to the report; "phases": each phase in order, with
+// its nesting depth (a phase of depth d + 1 is part of the nearest earlier one of depth d).
+void writePhases(JsonWriter& json, const RenderReport& r) {
+    json.key("process").beginObject();
+    json.field("seconds", r.processSeconds).field("cpuSeconds", r.processCpuSeconds);
+    json.endObject();
+    json.key("phases").beginArray();
+    for (const PhaseTime& phase : r.phases) {
+        json.beginObject().field("name", phase.name).field("depth", phase.depth);
+        json.field("seconds", phase.wallSeconds).field("cpuSeconds", phase.cpuSeconds);
+        json.endObject();
+    }
+    json.endArray();
+}
+
 void writeStats(JsonWriter& json, const RenderReport& r) {
     const RenderStats& st = r.stats;
     json.key("render").beginObject();
@@ -104,6 +119,14 @@ void writeDeviceRun(JsonWriter& json, const DeviceRunReport& d) {
     json.field("setupSeconds", d.setupSeconds);
     json.field("truncatedTraversals", d.truncatedTraversals).field("interrupted", d.interrupted);
     json.field("pipelineCreationSeconds", d.pipelineCreationSeconds);
+    json.key("pipelines").beginArray();
+    for (const PipelineCreation& p : d.pipelineCreations)
+        json.beginObject()
+            .field("name", p.kernel)
+            .field("spirvBytes", p.spirvBytes)
+            .field("seconds", p.seconds)
+            .endObject();
+    json.endArray();
     json.field("sceneBufferBytes", d.sceneBufferBytes);
     json.key("sceneBuffers").beginArray();
     for (const SceneBufferBytes& b : d.sceneBuffers)
@@ -131,6 +154,11 @@ void printDeviceRun(const RenderReport& r, const DeviceRunReport& d) {
     for (const KernelTimeTotal& k : d.kernelTimes)
         std::printf("  kernel %-20s %9.3f ms in %llu dispatches\n", k.kernel.c_str(),
                     k.seconds() * 1e3, (unsigned long long)k.dispatches);
+    // With --stats (kernel times asked for), the pipelines' creation too.
+    if (!d.kernelTimes.empty())
+        for (const PipelineCreation& p : d.pipelineCreations)
+            std::printf("  pipeline %-18s %9.3f ms to create from %.1f KiB of SPIR-V\n",
+                        p.kernel.c_str(), p.seconds * 1e3, double(p.spirvBytes) / 1024.0);
     if (d.interrupted) std::printf("  interrupted: the image holds the passes finished so far\n");
 }
 
@@ -177,6 +205,9 @@ void printRenderSummary(const RenderReport& r) {
     std::printf("\n");
     if (r.deviceRun) printDeviceRun(r, *r.deviceRun);
     if (r.convergence) printConvergenceSummary(*r.convergence);
+    if (!r.phases.empty())
+        std::printf("  time: %.2f s in all, %.2f s of CPU: %s\n", r.processSeconds,
+                    r.processCpuSeconds, describePhases(r.phases).c_str());
 }
 
 void writeStatsJson(const RenderReport& r, const std::string& path) {
@@ -190,12 +221,16 @@ void writeStatsJson(const RenderReport& r, const std::string& path) {
     writeStats(json, r);
     if (r.deviceRun) writeDeviceRun(json, *r.deviceRun);
     if (r.convergence) writeConvergenceJson(json, *r.convergence);
+    writePhases(json, r);
     json.endObject();
     out << "\n";
     if (!out) throw InputError(path + ": write failed");
 }
 
-void writeRenderReport(const RenderReport& report) {
+void writeRenderReport(RenderReport report) {
+    report.phases = processPhases().phases();
+    report.processSeconds = processPhases().secondsSinceStart();
+    report.processCpuSeconds = processCpuSeconds();
     printRenderSummary(report);
     if (!report.settings->statsJsonPath.empty())
         writeStatsJson(report, report.settings->statsJsonPath);

@@ -9,6 +9,7 @@
 #include "app/scene_setup.h"
 #include "bvh/bvh_build.h"
 #include "common/device_stats.h"
+#include "common/phase_log.h"
 #include "common/render_settings.h"
 #include "common/render_stats.h"
 #include "convergence/convergence.h"
@@ -22,11 +23,12 @@ struct DeviceRunReport {
     std::uint32_t pathSlots = 0;
     double setupSeconds = 0.0;             // upload, buffers and pipelines, before the first pass
     std::uint64_t truncatedTraversals = 0; // BVH walks a driver loop limit cut short
-    std::vector<KernelTimeTotal> kernelTimes;   // empty unless --stats
-    double pipelineCreationSeconds = 0.0;       // Σ over kernels of the driver's pipeline compile
-    std::uint64_t sceneBufferBytes = 0;         // Σ sceneBuffers
-    std::vector<SceneBufferBytes> sceneBuffers; // vkpt uploads only the arrays the scene has
-    bool interrupted = false;                   // Ctrl-C: the image holds the passes done
+    std::vector<KernelTimeTotal> kernelTimes; // empty unless --stats
+    double pipelineCreationSeconds = 0.0; // wall time of the driver's pipeline compiles (parallel)
+    std::vector<PipelineCreation> pipelineCreations; // per kernel
+    std::uint64_t sceneBufferBytes = 0;              // Σ sceneBuffers
+    std::vector<SceneBufferBytes> sceneBuffers;      // vkpt uploads only the arrays the scene has
+    bool interrupted = false;                        // Ctrl-C: the image holds the passes done
 };
 
 struct RenderReport {
@@ -46,6 +48,11 @@ struct RenderReport {
     std::uint64_t deviceMemoryBytes = 0;          // peak device memory held; 0 on the CPU
     std::optional<DeviceRunReport> deviceRun;     // vkpt only
     std::optional<ConvergenceReport> convergence; // --reference, --target-error, --time-limit
+    // Where the process's time went (common/phase_log.h), up to the report, and the process's
+    // wall and CPU seconds by then: filled by writeRenderReport from processPhases().
+    std::vector<PhaseTime> phases;
+    double processSeconds = 0.0;
+    double processCpuSeconds = 0.0;
 };
 
 // What both programs know once the scene is set up: program, settings, BVH, scene counts,
@@ -55,7 +62,8 @@ RenderReport sceneReport(const std::string& program, const RenderSettings& setti
 
 void printRenderSummary(const RenderReport& report);
 void writeStatsJson(const RenderReport& report, const std::string& path);
-// The summary on stdout, and the statistics JSON when --stats-json asked for it.
-void writeRenderReport(const RenderReport& report);
+// The summary on stdout, and the statistics JSON when --stats-json asked for it, with the
+// process's phases so far.
+void writeRenderReport(RenderReport report);
 
 } // namespace vkpt

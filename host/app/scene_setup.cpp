@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <string>
 
+#include "common/phase_log.h"
 #include "prepare/environment_map.h"
 #include "scene/camera.h"
 #include "scene/gltf_loader.h"
@@ -38,16 +39,20 @@ std::string instancingNote(const Scene& scene) {
 SceneSetup setUpScene(const RenderSettings& settings, const std::string& program) {
     SceneSetup setup;
     auto start = std::chrono::steady_clock::now();
+    ScopedPhase loadPhase("load");
     LoadOptions loadOptions;
     loadOptions.instancing = settings.instancing;
     Scene scene = loadGltfScene(settings.scenePath, loadOptions);
     scene.environment = loadEnvironment(settings);
+    loadPhase.end();
     setup.loadSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     float aspect = float(settings.width) / float(settings.height);
     SceneCamera camera = selectCamera(scene, settings.cameraIndex, aspect);
     setup.camera = makeGpuCamera(camera, settings.width, settings.height);
+    ScopedPhase preparePhase("prepare");
     setup.prepared = prepareScene(scene, {{}, settings.general});
+    preparePhase.end();
     setup.placedTriangles = scene.placedTriangleCount();
     setup.instances = scene.instances.size();
     setup.meshes = scene.meshes.size();

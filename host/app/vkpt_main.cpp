@@ -17,6 +17,7 @@
 #include "app/run_program.h"
 #include "app/scene_setup.h"
 #include "common/errors.h"
+#include "common/phase_log.h"
 #include "gpu/context.h"
 #include "gpu/device_list.h"
 #include "gpu/vk_check.h"
@@ -86,6 +87,7 @@ DeviceRunReport deviceRunReport(const WavefrontResult& result, double setupSecon
     d.interrupted = result.interrupted;
     d.kernelTimes = result.kernelTimes;
     d.pipelineCreationSeconds = result.pipelineCreationSeconds;
+    d.pipelineCreations = result.pipelineCreations;
     d.sceneBufferBytes = result.sceneBufferBytes;
     d.sceneBuffers = result.sceneBuffers;
     return d;
@@ -106,6 +108,8 @@ WavefrontOptions wavefrontOptions(const Invocation& invocation, ConvergenceTrack
     options.interrupt = &stopRequested();
     options.plan = part.plan();
     options.resume = part.resumeRecords();
+    options.aovs = part.needsAovs();
+    options.resumeFeatures = part.resumeFeatures();
     options.checkpointSeconds = part.checkpointSeconds();
     if (options.checkpointSeconds > 0.0) options.checkpoint = part.checkpointWriter();
     const ConvergenceSettings& convergence = invocation.convergence;
@@ -154,13 +158,16 @@ int render(const Invocation& invocation) {
     checkOutputPaths(settings);
     RenderPart part(kProgram, settings, invocation.farm);
     // The device next: without one, the user hears that (one line) before a long load.
+    ScopedPhase devicePhase("device");
     GpuContext context(invocation.gpu);
+    devicePhase.end();
     const std::optional<Image> reference = loadReferenceFor(invocation.convergence, settings);
     SceneSetup setup = setUpScene(settings, kProgram);
     part.attachScene(setup);
     // Everything that reads the host's copy of the scene runs before the render frees the device
     // arrays' copies as they are uploaded (and the tree, just before): a large scene is then held
-    // once, not twice, while it renders (docs/benchmarks.md, host memory).
+    // once, not twice, while it renders (docs/benchmarks.md, host memory). The AOVs come from the
+    // kernels' own camera samples, so nothing here traces rays on the CPU.
     RenderReport sceneFigures = sceneReport(kProgram, settings, setup);
     const auto start = std::chrono::steady_clock::now();
     installStopHandlers();
@@ -170,8 +177,7 @@ int render(const Invocation& invocation) {
     RenderSettings renderSettings = settings;
     renderSettings.quiet = settings.quiet || printsPassLines(invocation);
     WavefrontOptions options = wavefrontOptions(invocation, tracker, part);
-    options.beforeSceneUpload = [&part, &setup] {
-        part.computeFeatures();
+    options.beforeSceneUpload = [&setup] {
         setup.prepared.tree = {};
         setup.prepared.meshes = {};
         setup.prepared.instanceTree = {};
@@ -179,7 +185,9 @@ int render(const Invocation& invocation) {
     WavefrontResult result =
         renderWavefrontReleasing(context, setup.prepared, setup.camera, renderSettings, options);
     const std::chrono::duration<double> total = std::chrono::steady_clock::now() - start;
-    part.writeResults(result.output, result.records, result.interrupted);
+    ScopedPhase writePhase("write");
+    part.writeResults(result.output, result.records, result.features, result.interrupted);
+    writePhase.end();
     RenderReport report =
         makeReport(std::move(sceneFigures), context, result, total.count() - result.stats.seconds);
     report.convergence = convergenceReport(invocation, tracker, result.stop);

@@ -17,6 +17,14 @@ struct KernelTimeTotal {
     double seconds() const { return double(nanoseconds) * 1e-9; }
 };
 
+// What creating one kernel's pipeline cost (vkCreateShaderModule + vkCreateComputePipelines):
+// the SPIR-V the driver had to take in, and the time it took.
+struct PipelineCreation {
+    std::string kernel;           // "shade_hits", ...
+    std::uint64_t spirvBytes = 0; // of the build the render chose (docs/gpu.md, "Pipelines")
+    double seconds = 0.0;
+};
+
 // The device memory one of a scene's arrays holds, so that a specialised render and a
 // --general one can be compared.
 struct SceneBufferBytes {

@@ -56,7 +56,8 @@ glm::vec3 directByLights(IntegratorContext& context, const SampleKey& key,
 
 } // namespace
 
-glm::vec3 integrateDirect(IntegratorContext& context, const SampleKey& key, const CameraRay& ray) {
+glm::vec3 integrateDirect(IntegratorContext& context, const SampleKey& key, const CameraRay& ray,
+                          gpu::SampleFeatures* firstHit) {
     const auto filter = std::uint32_t(context.settings.pathFilter);
     ClosestHit hit = context.tracer.closest(ray.origin, ray.direction, RayKind::Camera);
     if (!hit.hit) {
@@ -64,6 +65,7 @@ glm::vec3 integrateDirect(IntegratorContext& context, const SampleKey& key, cons
         return gpu::environmentRadianceAlong(glm::normalize(ray.direction), context.tracer.view());
     }
     gpu::SurfacePoint surface = context.tracer.surfaceAt(hit, ray.origin, ray.direction);
+    recordFirstHit(context, surface, hit.t, ray, firstHit);
     glm::vec3 radiance(0.0f);
     if (gpu::pathFilterKeeps(filter, 0)) radiance += gpu::emittedRadiance(surface);
     if (context.settings.maxDepth == 0 || context.settings.lightSamples == 0 ||

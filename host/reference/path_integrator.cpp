@@ -76,7 +76,15 @@ glm::vec3 environmentSeen(const gpu::SceneView& view, const glm::vec3& direction
 
 } // namespace
 
-glm::vec3 integratePath(IntegratorContext& context, const SampleKey& key, const CameraRay& ray) {
+void recordFirstHit(const IntegratorContext& context, const gpu::SurfacePoint& surface, float t,
+                    const CameraRay& ray, gpu::SampleFeatures* firstHit) {
+    if (firstHit)
+        *firstHit = gpu::surfaceFeatures(surface.shading.baseColor, surface.shadingNormal, t,
+                                         ray.direction, context.camera.forward);
+}
+
+glm::vec3 integratePath(IntegratorContext& context, const SampleKey& key, const CameraRay& ray,
+                        gpu::SampleFeatures* firstHit) {
     const RenderSettings& settings = context.settings;
     const PreparedScene& scene = context.tracer.scene();
     const gpu::SceneView& view = context.tracer.view();
@@ -103,6 +111,7 @@ glm::vec3 integratePath(IntegratorContext& context, const SampleKey& key, const 
             throughput *=
                 gpu::beerLambertTransmittance(medium, gpu::segmentLength(direction, hit.t));
         gpu::SurfacePoint surface = context.tracer.surfaceAt(hit, origin, direction);
+        if (bounce == 0) recordFirstHit(context, surface, hit.t, ray, firstHit);
         glm::vec3 emitted = gpu::emittedRadiance(surface);
         if (emitted != glm::vec3(0.0f) && gpu::pathFilterKeeps(filter, bounce)) {
             float weight = 1.0f;
@@ -136,21 +145,24 @@ glm::vec3 integratePath(IntegratorContext& context, const SampleKey& key, const 
     return radiance;
 }
 
-glm::vec3 integrateNormals(IntegratorContext& context, const CameraRay& ray) {
+glm::vec3 integrateNormals(IntegratorContext& context, const CameraRay& ray,
+                           gpu::SampleFeatures* firstHit) {
     ClosestHit hit = context.tracer.closest(ray.origin, ray.direction, RayKind::Camera);
     if (!hit.hit) return glm::vec3(0.0f);
     gpu::SurfacePoint surface = context.tracer.surfaceAt(hit, ray.origin, ray.direction);
+    recordFirstHit(context, surface, hit.t, ray, firstHit);
     return 0.5f * surface.rawShadingNormal + 0.5f;
 }
 
-glm::vec3 integrate(IntegratorContext& context, const SampleKey& key, const CameraRay& ray) {
+glm::vec3 integrate(IntegratorContext& context, const SampleKey& key, const CameraRay& ray,
+                    gpu::SampleFeatures* firstHit) {
     switch (context.settings.integrator) {
     case Integrator::Path:
-        return integratePath(context, key, ray);
+        return integratePath(context, key, ray, firstHit);
     case Integrator::Direct:
-        return integrateDirect(context, key, ray);
+        return integrateDirect(context, key, ray, firstHit);
     case Integrator::Normals:
-        return integrateNormals(context, ray);
+        return integrateNormals(context, ray, firstHit);
     }
     return glm::vec3(0.0f);
 }

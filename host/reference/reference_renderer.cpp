@@ -23,6 +23,7 @@
 #include "shared/rng.h"
 #include "shared/sample_guard.h"
 #include "shared/sampling.h"
+#include "state/pixel_features.h"
 
 namespace vkpt {
 
@@ -44,6 +45,7 @@ struct TileGrid {
 // One pixel of the crop: its running estimate and where it stands.
 struct PixelWork {
     PixelAccumulator accumulator;
+    gpu::PixelFeatures features = gpu::noPixelFeatures(); // with AOVs
     std::uint32_t taken = 0; // samples traced, from the plan's first sample index on
     bool converged = false;
 };
@@ -54,6 +56,7 @@ struct RenderJob {
     const RenderSettings& settings;
     const IntersectorFactory& intersectors;
     const SamplePlan& plan;
+    bool aovs;
     std::vector<PixelWork>& pixels; // plan.crop, row-major
     ProgressBar& progress;
     float darkFloor;
@@ -84,7 +87,9 @@ void renderPixel(RenderJob& job, IntegratorContext& context, std::uint32_t x, st
         glm::vec2 film(float(x) + jitter.x, float(y) + jitter.y);
         CameraRay ray{gpu::cameraRayOrigin(job.camera, film),
                       gpu::cameraRayDirection(job.camera, film)};
-        glm::vec3 radiance = integrate(context, key, ray);
+        gpu::SampleFeatures features = gpu::missFeatures();
+        glm::vec3 radiance = integrate(context, key, ray, job.aovs ? &features : nullptr);
+        if (job.aovs) gpu::addSampleFeatures(work.features, features);
         if (gpu::isFiniteSample(radiance)) {
             radiance = gpu::clampSample(radiance, settings.clamp);
             accumulator.add(radiance, gpu::luminance(radiance));
@@ -124,7 +129,7 @@ double threadCpuSeconds() {
 void renderWorker(RenderJob& job) {
     const double cpuStart = threadCpuSeconds();
     SceneTracer tracer(job.scene, job.intersectors);
-    IntegratorContext context{job.settings, tracer};
+    IntegratorContext context{job.settings, tracer, job.camera};
     ThreadCounters counters;
     for (std::uint32_t tile = job.nextTile++; tile < job.tiles.count(); tile = job.nextTile++)
         renderTile(job, context, tile, counters);
@@ -185,13 +190,29 @@ std::vector<PixelRecord> recordsOf(const std::vector<PixelWork>& pixels) {
     return records;
 }
 
+// The crop's features, row-major; none without AOVs.
+std::vector<FeatureRecord> featuresOf(const std::vector<PixelWork>& pixels, bool aovs) {
+    std::vector<FeatureRecord> features;
+    if (!aovs) return features;
+    features.reserve(pixels.size());
+    for (const PixelWork& w : pixels)
+        features.push_back(featureRecordOf(w.features));
+    return features;
+}
+
 std::vector<PixelWork> initialWork(const SamplePlan& plan, const ReferenceOptions& options) {
-    if (!options.resume) return std::vector<PixelWork>(plan.crop.area());
-    VKPT_ASSERT(options.resume->size() == plan.crop.area(), "resume records cover the crop");
-    std::vector<PixelWork> pixels;
-    pixels.reserve(options.resume->size());
-    for (const PixelRecord& r : *options.resume)
-        pixels.push_back(workFromRecord(r));
+    std::vector<PixelWork> pixels(plan.crop.area());
+    if (options.resume) {
+        VKPT_ASSERT(options.resume->size() == plan.crop.area(), "resume records cover the crop");
+        for (std::size_t i = 0; i < pixels.size(); ++i)
+            pixels[i] = workFromRecord((*options.resume)[i]);
+    }
+    if (options.aovs && options.resumeFeatures) {
+        VKPT_ASSERT(options.resumeFeatures->size() == plan.crop.area(),
+                    "resumed features cover the crop");
+        for (std::size_t i = 0; i < pixels.size(); ++i)
+            pixels[i].features = pixelFeaturesOf((*options.resumeFeatures)[i]);
+    }
     return pixels;
 }
 
@@ -260,7 +281,7 @@ private:
         if (std::chrono::duration<double>(now - lastCheckpoint_).count() <
             options_.checkpointSeconds)
             return;
-        options_.checkpoint(recordsOf(job_.pixels));
+        options_.checkpoint(recordsOf(job_.pixels), featuresOf(job_.pixels, job_.aovs));
         lastCheckpoint_ = Clock::now();
     }
 
@@ -303,15 +324,17 @@ ReferenceResult renderReferenceParts(const PreparedScene& scene, const gpu::Came
         makeProgressBar("vkpt-ref", stats.uniformBudget, settings.quiet);
     TileGrid tiles{(plan.crop.width() + kTileSize - 1) / kTileSize,
                    (plan.crop.height() + kTileSize - 1) / kTileSize};
-    RenderJob job{scene, camera, settings,  intersectors,
-                  plan,  pixels, *progress, adaptiveDarkFloor(settings.exposure),
-                  tiles, 0,      {},        {},
-                  stats};
+    RenderJob job{scene,        camera,    settings,
+                  intersectors, plan,      options.aovs,
+                  pixels,       *progress, adaptiveDarkFloor(settings.exposure),
+                  tiles,        0,         {},
+                  {},           stats};
     RoundLoop rounds(job, options);
     ReferenceResult result;
     result.interrupted = rounds.run();
     progress->finish();
     result.records = recordsOf(pixels);
+    result.features = featuresOf(pixels, options.aovs);
     result.output = outputOf(camera, plan.crop, result.records);
     stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return result;

@@ -25,17 +25,25 @@ struct ReferenceOptions {
     // Records of plan.crop (row-major) to continue from (--resume): each pixel goes on from
     // its samplesTaken; converged pixels stay as they are.
     const std::vector<PixelRecord>* resume = nullptr;
+    // Record the AOVs (shared/sample_features.h) from each camera sample's first hit, in the
+    // integrators' own loop, for an output or a saved state that holds them.
+    bool aovs = false;
+    // With aovs and resume: the resumed pixels' features (plan.crop, row-major); null: none.
+    const std::vector<FeatureRecord>* resumeFeatures = nullptr;
     // Set (e.g. by a SIGINT or SIGTERM handler) to stop at the end of the current round.
     const std::atomic<bool>* interrupt = nullptr;
-    // Called with the records of plan.crop at the first round end after every
-    // checkpointSeconds; rounds are cut short so that one ends in time.
+    // Called with the records of plan.crop (and their features with aovs, else none) at the
+    // first round end after every checkpointSeconds; rounds are cut short so that one ends in
+    // time.
     double checkpointSeconds = 0.0;
-    std::function<void(const std::vector<PixelRecord>&)> checkpoint;
+    std::function<void(const std::vector<PixelRecord>&, const std::vector<FeatureRecord>&)>
+        checkpoint;
 };
 
 struct ReferenceResult {
-    RenderOutput output;              // the whole frame; 0 outside the crop
-    std::vector<PixelRecord> records; // plan.crop, row-major
+    RenderOutput output;                 // the whole frame; 0 outside the crop
+    std::vector<PixelRecord> records;    // plan.crop, row-major
+    std::vector<FeatureRecord> features; // the same pixels' AOVs with options.aovs, else empty
     bool interrupted = false;
 };
 

@@ -6,13 +6,13 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <ctime>
 #include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 
 #include "common/errors.h"
+#include "common/phase_log.h"
 #include "common/progress.h"
 #include "gpu/context.h"
 #include "gpu/submit.h"
@@ -25,6 +25,7 @@
 #include "render/wavefront_kernels.h"
 #include "render/work_buffers.h"
 #include "shared/adaptive.h"
+#include "state/pixel_features.h"
 
 namespace vkpt {
 
@@ -34,13 +35,6 @@ using Clock = std::chrono::steady_clock;
 
 double secondsBetween(Clock::time_point begin, Clock::time_point end) {
     return std::chrono::duration<double>(end - begin).count();
-}
-
-// CPU time of the whole process, every thread of it (a CPU device's workers too).
-double processCpuSeconds() {
-    timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
 // Bounces recorded into one command buffer. Default depths (16) need one submission per
@@ -115,6 +109,7 @@ std::uint32_t slotCountFor(const GpuContext& context, const RenderSettings& sett
     request.lightSamples = settings.lightSamples;
     request.pathsWanted = std::uint64_t(plan.crop.area()) * plan.range.size();
     request.requestedSlots = options.slotCount;
+    request.aovs = options.aovs;
     return chooseSlotCount(context, request);
 }
 
@@ -143,7 +138,14 @@ std::unique_ptr<GpuTimer> makeTimer(const GpuContext& context, const WavefrontOp
 DeviceScene uploadAfterHook(const std::function<DeviceScene()>& upload,
                             const WavefrontOptions& options) {
     if (options.beforeSceneUpload) options.beforeSceneUpload();
+    ScopedPhase phase("upload");
     return upload();
+}
+
+// A member's construction as a phase of the process.
+template <typename Make> auto timedPhase(const char* name, Make&& make) {
+    ScopedPhase phase(name);
+    return make();
 }
 
 class WavefrontRenderer {
@@ -154,13 +156,23 @@ public:
     WavefrontRenderer(GpuContext& context, const std::function<DeviceScene()>& upload,
                       const PreparedScene& scene, const gpu::Camera& camera,
                       const RenderSettings& settings, const WavefrontOptions& options)
-        : context_(context), settings_(settings), camera_(camera), options_(options),
-          plan_(samplePlanFor(camera, settings, options)), budget_(plan_.range.size()),
-          pixelCount_(camera.width * camera.height),
-          buffers_(context, slotCountFor(context, settings, plan_, options), settings.lightSamples,
-                   pixelCount_, scene.features.instances),
+        : setupPhase_("device set-up"), context_(context), settings_(settings), camera_(camera),
+          options_(options), plan_(samplePlanFor(camera, settings, options)),
+          budget_(plan_.range.size()), pixelCount_(camera.width * camera.height),
+          buffers_(timedPhase("work buffers",
+                              [&] {
+                                  return WorkBuffers(
+                                      context, slotCountFor(context, settings, plan_, options),
+                                      settings.lightSamples, pixelCount_,
+                                      {scene.features.instances, options.aovs});
+                              })),
           scene_(uploadAfterHook(upload, options)), table_(makeBufferTable(scene_, buffers_)),
-          pipelines_(context, table_, kernelFeaturesFor(scene, options)),
+          pipelines_(timedPhase("pipelines",
+                                [&] {
+                                    return WavefrontPipelines(context, table_,
+                                                              kernelFeaturesFor(scene, options),
+                                                              options.aovs, options.kernelBuilds);
+                                })),
           timer_(makeTimer(context, options)),
           recorder_(pipelines_, buffers_, timer_.get(),
                     settings.integrator != Integrator::Normals && settings.lightSamples > 0),
@@ -171,9 +183,11 @@ public:
 private:
     void initialise();
     void uploadResumedStates();
+    void uploadFeatures();
     void uploadActiveList();
     bool checkpointIfDue();
     std::vector<gpu::PixelState> downloadPixelStates();
+    std::vector<FeatureRecord> downloadFeatures();
     ScheduleInputs schedule() const;
     gpu::PassParams chunkParams(std::uint32_t samplesPerPass, std::uint32_t start,
                                 std::uint32_t pixels) const;
@@ -186,6 +200,7 @@ private:
     void submit(const std::string& label, const std::function<void()>& record);
     WavefrontResult finish(double seconds);
 
+    ScopedPhase setupPhase_; // from the first member to the first pass
     GpuContext& context_;
     const RenderSettings& settings_;
     gpu::Camera camera_;
@@ -226,6 +241,7 @@ void WavefrontRenderer::initialise() {
     fillBuffer(context_, buffers_.queueCounters, 0);
     activePixels_ = pixelCount_;
     if (options_.resume) uploadResumedStates();
+    if (options_.aovs) uploadFeatures();
     if (options_.resume || !(plan_.crop == fullFrame(camera_.width, camera_.height)))
         uploadActiveList();
 }
@@ -241,6 +257,20 @@ void WavefrontRenderer::uploadResumedStates() {
             resumedSamples_ += records[i].samplesTaken;
         }
     upload(context_, buffers_.pixelStates, std::span<const gpu::PixelState>(pixels));
+}
+
+// Every pixel starts with no feature samples (its depth +inf, which a fill of zeros is not), a
+// resumed one with its features so far.
+void WavefrontRenderer::uploadFeatures() {
+    std::vector<gpu::PixelFeatures> pixels(pixelCount_, gpu::noPixelFeatures());
+    if (const std::vector<FeatureRecord>* resumed = options_.resumeFeatures) {
+        VKPT_ASSERT(resumed->size() == plan_.crop.area(), "resumed features cover the crop");
+        std::size_t i = 0;
+        for (std::uint32_t y = plan_.crop.y0; y < plan_.crop.y1; ++y)
+            for (std::uint32_t x = plan_.crop.x0; x < plan_.crop.x1; ++x, ++i)
+                pixels[std::size_t(y) * camera_.width + x] = pixelFeaturesOf((*resumed)[i]);
+    }
+    upload(context_, *buffers_.pixelFeatures, std::span<const gpu::PixelFeatures>(pixels));
 }
 
 // A crop or a resumed render starts from a list of the pixels that go on, instead of "every
@@ -361,12 +391,26 @@ std::vector<gpu::PixelState> WavefrontRenderer::downloadPixelStates() {
     return download<gpu::PixelState>(context_, buffers_.pixelStates, pixelCount_);
 }
 
-// A checkpoint downloads the pixel states (consistent at a pass end) and hands the crop's
-// records to the caller, who writes them.
+// The crop's features, row-major; none without AOVs.
+std::vector<FeatureRecord> WavefrontRenderer::downloadFeatures() {
+    if (!options_.aovs) return {};
+    const std::vector<gpu::PixelFeatures> pixels =
+        download<gpu::PixelFeatures>(context_, *buffers_.pixelFeatures, pixelCount_);
+    std::vector<FeatureRecord> features;
+    features.reserve(plan_.crop.area());
+    for (std::uint32_t y = plan_.crop.y0; y < plan_.crop.y1; ++y)
+        for (std::uint32_t x = plan_.crop.x0; x < plan_.crop.x1; ++x)
+            features.push_back(featureRecordOf(pixels[std::size_t(y) * camera_.width + x]));
+    return features;
+}
+
+// A checkpoint downloads the pixel states and features (consistent at a pass end) and hands the
+// crop's records to the caller, who writes them.
 bool WavefrontRenderer::checkpointIfDue() {
     if (!options_.checkpoint || !(options_.checkpointSeconds > 0.0)) return false;
     if (secondsBetween(lastCheckpoint_, Clock::now()) < options_.checkpointSeconds) return false;
-    options_.checkpoint(cropRecords(downloadPixelStates(), camera_.width, plan_.crop));
+    options_.checkpoint(cropRecords(downloadPixelStates(), camera_.width, plan_.crop),
+                        downloadFeatures());
     lastCheckpoint_ = Clock::now();
     return true;
 }
@@ -376,6 +420,7 @@ WavefrontResult WavefrontRenderer::finish(double seconds) {
     WavefrontResult result;
     result.output = makeRenderOutput(pixels, camera_.width, camera_.height);
     result.records = cropRecords(pixels, camera_.width, plan_.crop);
+    result.features = downloadFeatures();
     DeviceCounters counters = readCounters(buffers_.countersReadback);
     addCounterStats(counters, result.stats);
     result.stats.seconds = seconds;
@@ -387,6 +432,7 @@ WavefrontResult WavefrontRenderer::finish(double seconds) {
     result.slotCount = buffers_.slotCount;
     result.interrupted = interrupted_;
     result.pipelineCreationSeconds = pipelines_.creationSeconds();
+    result.pipelineCreations = pipelines_.creations();
     result.sceneBuffers = scene_.bufferBytes();
     result.sceneBufferBytes = scene_.totalBytes();
     return result;
@@ -437,6 +483,8 @@ RenderStop WavefrontRenderer::runPasses() {
 
 WavefrontResult WavefrontRenderer::run() {
     initialise();
+    setupPhase_.end();
+    ScopedPhase renderPhase("render");
     start_ = Clock::now();
     lastCheckpoint_ = start_;
     startCpu_ = processCpuSeconds();

@@ -16,6 +16,7 @@
 #include "common/render_stats.h"
 #include "image/render_output.h"
 #include "prepare/prepared_scene.h"
+#include "render/wavefront_kernels.h"
 #include "scene/scene_features.h"
 #include "state/sample_plan.h"
 
@@ -52,20 +53,29 @@ struct WavefrontOptions {
     // all have taken the same number of samples (InputError otherwise), as every state a pass
     // or a reference round ends on has.
     const std::vector<PixelRecord>* resume = nullptr;
-    // Called with the records of plan.crop at the first pass end after every
-    // checkpointSeconds; passes are cut short so that one ends in time.
+    // Which kernel builds the pipelines take (render/wavefront_kernels.h): the one for the
+    // scene's feature set where there is one, or the full build (images equal bit for bit).
+    KernelBuilds kernelBuilds = KernelBuilds::ForFeatureSet;
+    // Record the AOVs (shared/sample_features.h) from the camera samples' own hits, for an
+    // output or a saved state that holds them; a render without them pays nothing for them.
+    bool aovs = false;
+    // With aovs and resume: the resumed pixels' features (plan.crop, row-major); null: none.
+    const std::vector<FeatureRecord>* resumeFeatures = nullptr;
+    // Called with the records of plan.crop (and their features with aovs, else none) at the
+    // first pass end after every checkpointSeconds; passes are cut short so that one ends in
+    // time.
     double checkpointSeconds = 0.0;
-    std::function<void(const std::vector<PixelRecord>&)> checkpoint;
+    std::function<void(const std::vector<PixelRecord>&, const std::vector<FeatureRecord>&)>
+        checkpoint;
     // Called once the working buffers exist, before the scene is uploaded: the last moment to
-    // read the host's copy of the scene that renderWavefrontReleasing frees, and one at which
-    // the device has already accepted the render's size (vkpt computes its state's first-hit
-    // features here, which takes long at sizes the device would refuse).
+    // read the host's copy of the scene that renderWavefrontReleasing frees.
     std::function<void()> beforeSceneUpload;
 };
 
 struct WavefrontResult {
-    RenderOutput output;              // the whole frame; 0 outside the crop
-    std::vector<PixelRecord> records; // the plan's crop, row-major
+    RenderOutput output;                 // the whole frame; 0 outside the crop
+    std::vector<PixelRecord> records;    // the plan's crop, row-major
+    std::vector<FeatureRecord> features; // the same pixels' AOVs with options.aovs, else empty
     RenderStats stats;
     std::vector<KernelTimeTotal> kernelTimes; // empty unless timeKernels
     std::uint64_t truncatedTraversals = 0;    // walks a driver loop limit cut short; must be 0
@@ -73,12 +83,14 @@ struct WavefrontResult {
     std::uint32_t slotCount = 0;
     bool interrupted = false;
     RenderStop stop = RenderStop::Budget;
-    // Σ over the kernels of vkCreateShaderModule + vkCreateComputePipelines, before the first
-    // pass: what specialisation costs or saves (lavapipe compiles its LLVM code at the first
-    // dispatch, so there it measures the SPIR-V → NIR stage only).
+    // Wall time of creating every kernel's pipeline (vkCreateShaderModule +
+    // vkCreateComputePipelines, on several threads), before the first pass: what specialisation
+    // costs or saves (lavapipe compiles its LLVM code at the first dispatch, so there it
+    // measures the SPIR-V → NIR stage only); each kernel's own time is in pipelineCreations.
     double pipelineCreationSeconds = 0.0;
-    std::vector<SceneBufferBytes> sceneBuffers; // the scene's buffers, as uploaded
-    std::uint64_t sceneBufferBytes = 0;         // Σ sceneBuffers
+    std::vector<PipelineCreation> pipelineCreations; // per kernel
+    std::vector<SceneBufferBytes> sceneBuffers;      // the scene's buffers, as uploaded
+    std::uint64_t sceneBufferBytes = 0;              // Σ sceneBuffers
 };
 
 // Deterministic: the image depends on the seed, not on scheduling, slot count or chunking.

@@ -1,13 +1,20 @@
 // wavefront_kernels.cpp — the kernel table: names, bindings, pipelines and descriptor sets.
 #include "render/wavefront_kernels.h"
 
+#include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <exception>
+#include <optional>
 #include <string>
+#include <thread>
 
 #include "common/errors.h"
 #include "lib/kernel_bindings.h"
 #include "lib/wavefront.h"
 #include "render/scene_arrays.h"
+#include "vkpt_diffuse_kernels.h"
+#include "vkpt_instanced_diffuse_kernels.h"
 #include "vkpt_instanced_kernels.h"
 #include "vkpt_kernels.h"
 
@@ -97,32 +104,65 @@ std::vector<SpecializationConstant> chunkConstants(const BufferTable& table) {
     return constants;
 }
 
+SpecializationConstant aovConstant(bool aovs) {
+    return specializeBool(SPEC_AOVS, aovs);
+}
+
 bool isSpecialised(WavefrontKernel kernel) {
     return info(kernel).specialised;
 }
 
-// The kernel's SPIR-V: its two-level build where the scene has instances and instancing changes
-// the kernel, else the one-level build.
-std::span<const std::uint32_t> kernelSpirv(WavefrontKernel kernel, const SceneFeatures& features) {
+namespace {
+
+// The layered BSDF's features: a scene with none of them shades with the Lambertian BSDF alone.
+bool needsLayeredBsdf(const SceneFeatures& features) {
+    const std::array<bool, FEATURE_COUNT> on = features.kernelFeatures();
+    return on[FEATURE_METALLIC_ROUGHNESS] || on[FEATURE_TRANSMISSION] || on[FEATURE_CLEARCOAT] ||
+           on[FEATURE_SHEEN];
+}
+
+// The kernel's build in one embedded library, if that library has one.
+template <typename Library>
+std::optional<std::span<const std::uint32_t>> findIn(const Library& kernels,
+                                                     std::string_view name) {
+    for (const auto& embedded : kernels)
+        if (embedded.name == name) return embedded.spirv;
+    return std::nullopt;
+}
+
+} // namespace
+
+// A two-level scene takes the builds with the instancing code where instancing changes the
+// kernel; a Lambertian scene the diffuse build of shade_hits, for its layout.
+std::span<const std::uint32_t> kernelSpirv(WavefrontKernel kernel, const SceneFeatures& features,
+                                           KernelBuilds builds) {
     const std::string_view name = kernelName(kernel);
+    if (builds == KernelBuilds::ForFeatureSet && !needsLayeredBsdf(features)) {
+        const auto diffuse = features.instances
+                                 ? findIn(instanced_diffuse_kernels::embeddedKernels(), name)
+                                 : findIn(diffuse_kernels::embeddedKernels(), name);
+        if (diffuse) return *diffuse;
+    }
     if (features.instances)
-        for (const instanced_kernels::EmbeddedKernel& embedded :
-             instanced_kernels::embeddedKernels())
-            if (embedded.name == name) return embedded.spirv;
+        if (const auto instanced = findIn(instanced_kernels::embeddedKernels(), name))
+            return *instanced;
     return kernels::findKernel(name).spirv;
 }
 
 Kernel makeWavefrontKernel(const GpuContext& context, WavefrontKernel kernel,
                            const SceneFeatures& features,
-                           const std::vector<SpecializationConstant>& chunks) {
+                           const std::vector<SpecializationConstant>& renderConstants,
+                           KernelBuilds builds) {
     KernelDesc desc;
     desc.name = std::string(kernelName(kernel));
-    desc.spirv = kernelSpirv(kernel, features);
+    desc.spirv = kernelSpirv(kernel, features, builds);
     desc.bindings = info(kernel).bindings;
     desc.pushConstantSize = sizeof(gpu::PassParams);
     if (isSpecialised(kernel)) desc.specializationConstants = featureConstants(features);
-    desc.specializationConstants.insert(desc.specializationConstants.end(), chunks.begin(),
-                                        chunks.end());
+    // A constant the kernel does not declare is ignored by the driver (Vulkan spec,
+    // VkSpecializationMapEntry), so every kernel gets the same render constants.
+    desc.specializationConstants.insert(desc.specializationConstants.end(), renderConstants.begin(),
+                                        renderConstants.end());
     return Kernel(context, std::move(desc));
 }
 
@@ -138,23 +178,82 @@ DescriptorSet bindWavefrontKernel(const Kernel& kernel, WavefrontKernel id,
     return DescriptorSet(kernel, bindings);
 }
 
+namespace {
+
+// Creates every kernel's pipeline on up to `threads` threads, the largest modules first, so
+// that the longest compile (shade_hits) starts at once and the others fill the other cores:
+// the wait is about the longest compile instead of the sum. vkCreateComputePipelines may be
+// called from several threads at once without a pipeline cache (Vulkan's threading rules).
+std::vector<Kernel> createKernelsInParallel(const GpuContext& context,
+                                            const SceneFeatures& features,
+                                            const std::vector<SpecializationConstant>& constants,
+                                            KernelBuilds builds, unsigned threads) {
+    std::array<std::size_t, kWavefrontKernelCount> order{};
+    for (std::size_t i = 0; i < order.size(); ++i)
+        order[i] = i;
+    const auto bytes = [&](std::size_t i) {
+        return kernelSpirv(static_cast<WavefrontKernel>(i), features, builds).size();
+    };
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return bytes(a) > bytes(b); });
+    std::vector<std::optional<Kernel>> made(kWavefrontKernelCount);
+    std::vector<std::exception_ptr> errors(kWavefrontKernelCount);
+    std::atomic<std::size_t> next{0};
+    const auto work = [&] {
+        for (std::size_t k = next++; k < order.size(); k = next++) {
+            const std::size_t i = order[k];
+            try {
+                made[i].emplace(makeWavefrontKernel(context, static_cast<WavefrontKernel>(i),
+                                                    features, constants, builds));
+            } catch (...) {
+                errors[i] = std::current_exception();
+            }
+        }
+    };
+    std::vector<std::thread> workers;
+    for (unsigned t = 1; t < std::min<std::size_t>(threads, order.size()); ++t)
+        workers.emplace_back(work);
+    work();
+    for (std::thread& worker : workers)
+        worker.join();
+    std::vector<Kernel> kernels;
+    kernels.reserve(kWavefrontKernelCount);
+    for (std::size_t i = 0; i < kWavefrontKernelCount; ++i) {
+        if (errors[i]) std::rethrow_exception(errors[i]);
+        kernels.push_back(std::move(*made[i]));
+    }
+    return kernels;
+}
+
+} // namespace
+
 WavefrontPipelines::WavefrontPipelines(const GpuContext& context, const BufferTable& table,
-                                       const SceneFeatures& features) {
-    kernels_.reserve(kWavefrontKernelCount);
+                                       const SceneFeatures& features, bool aovs,
+                                       KernelBuilds builds) {
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<SpecializationConstant> constants = chunkConstants(table);
+    constants.push_back(aovConstant(aovs));
+    kernels_ = createKernelsInParallel(context, features, constants, builds,
+                                       std::max(1u, std::thread::hardware_concurrency()));
+    wallSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     sets_.reserve(kWavefrontKernelCount);
-    const std::vector<SpecializationConstant> chunks = chunkConstants(table);
     for (std::size_t i = 0; i < kWavefrontKernelCount; ++i) {
         const auto id = static_cast<WavefrontKernel>(i);
-        kernels_.push_back(makeWavefrontKernel(context, id, features, chunks));
-        sets_.push_back(bindWavefrontKernel(kernels_.back(), id, table));
+        spirvBytes_.push_back(kernelSpirv(id, features, builds).size_bytes());
+        sets_.push_back(bindWavefrontKernel(kernels_[i], id, table));
     }
 }
 
+std::vector<PipelineCreation> WavefrontPipelines::creations() const {
+    std::vector<PipelineCreation> result;
+    for (std::size_t i = 0; i < kernels_.size(); ++i)
+        result.push_back({std::string(kernelName(static_cast<WavefrontKernel>(i))), spirvBytes_[i],
+                          std::chrono::duration<double>(kernels_[i].creationTime()).count()});
+    return result;
+}
+
 double WavefrontPipelines::creationSeconds() const {
-    std::chrono::nanoseconds total{0};
-    for (const Kernel& kernel : kernels_)
-        total += kernel.creationTime();
-    return std::chrono::duration<double>(total).count();
+    return wallSeconds_;
 }
 
 } // namespace vkpt

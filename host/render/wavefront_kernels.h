@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "common/device_stats.h"
 #include "gpu/descriptor_set.h"
 #include "gpu/kernel.h"
 #include "scene/scene_features.h"
@@ -36,7 +37,7 @@ std::string_view kernelName(WavefrontKernel kernel);
 // its list in lib/kernel_bindings.h.
 std::span<const KernelBinding> kernelBindings(WavefrontKernel kernel);
 
-inline constexpr std::uint32_t kWavefrontBindingCount = 28; // BINDING_COUNT of lib/wavefront.h
+inline constexpr std::uint32_t kWavefrontBindingCount = 30; // BINDING_COUNT of lib/wavefront.h
 
 // Which buffer each binding number refers to, or which chunks for a scene array split across
 // several (lib/scene_arrays.glsl); a kernel's descriptor set takes its bindings from here.
@@ -59,12 +60,27 @@ std::vector<SpecializationConstant> chunkConstants(const BufferTable& table);
 // Whether the kernel's code depends on the scene's features (it includes lib/features.glsl).
 bool isSpecialised(WavefrontKernel kernel);
 
+// The SPEC_AOVS constant (lib/aovs.glsl): whether the render records AOVs.
+SpecializationConstant aovConstant(bool aovs);
+
+// Which of a kernel's builds a pipeline takes: one made for the scene's feature set where there
+// is one (shade_hits without the layered BSDF for Lambertian scenes; shaders/CMakeLists.txt),
+// or the build with every feature's code, specialised like the other (for comparison).
+enum class KernelBuilds { ForFeatureSet, Full };
+
+// The SPIR-V the kernel's pipeline is made from: the build for the scene's layout (one or two
+// levels) and, with KernelBuilds::ForFeatureSet, its feature set.
+std::span<const std::uint32_t> kernelSpirv(WavefrontKernel kernel, const SceneFeatures& features,
+                                           KernelBuilds builds = KernelBuilds::ForFeatureSet);
+
 // The pipeline of one kernel, with the PassParams push constants, specialised for `features`
-// (what the scene uses, or generalFeatures for the --general pipelines) and for how the scene's
-// arrays are split (chunkConstants; empty: none is).
+// (what the scene uses, or generalFeatures for the --general pipelines) and for the render:
+// how the scene's arrays are split (chunkConstants), whether it records AOVs (aovConstant);
+// empty: no array is split and no AOVs.
 Kernel makeWavefrontKernel(const GpuContext& context, WavefrontKernel kernel,
                            const SceneFeatures& features,
-                           const std::vector<SpecializationConstant>& chunks = {});
+                           const std::vector<SpecializationConstant>& renderConstants = {},
+                           KernelBuilds builds = KernelBuilds::ForFeatureSet);
 
 // A descriptor set for `kernel` with each of its bindings pointing into `table`.
 DescriptorSet bindWavefrontKernel(const Kernel& kernel, WavefrontKernel id,
@@ -74,17 +90,22 @@ DescriptorSet bindWavefrontKernel(const Kernel& kernel, WavefrontKernel id,
 class WavefrontPipelines {
 public:
     WavefrontPipelines(const GpuContext& context, const BufferTable& table,
-                       const SceneFeatures& features);
+                       const SceneFeatures& features, bool aovs, KernelBuilds builds);
 
     const Kernel& kernel(WavefrontKernel id) const { return kernels_[index(id)]; }
     const DescriptorSet& set(WavefrontKernel id) const { return sets_[index(id)]; }
-    // Σ Kernel::creationTime(): what the driver spent compiling these pipelines.
+    // Wall seconds from the first pipeline's creation to the last's: what the render waited for
+    // (they are created in parallel, so less than Σ Kernel::creationTime()).
     double creationSeconds() const;
+    // Each kernel's SPIR-V size and creation time, in dispatch order.
+    std::vector<PipelineCreation> creations() const;
 
 private:
     static std::size_t index(WavefrontKernel id) { return static_cast<std::size_t>(id); }
 
     std::vector<Kernel> kernels_;
+    std::vector<std::uint64_t> spirvBytes_;
+    double wallSeconds_ = 0.0;
     std::vector<DescriptorSet> sets_;
 };
 

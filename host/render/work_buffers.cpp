@@ -28,9 +28,10 @@ std::uint64_t largestBytesPerSlot(std::uint32_t lightSamples) {
                                     recordsPerSlot(lightSamples) * sizeof(gpu::ShadowRay)});
 }
 
-std::uint64_t totalBytesPerSlot(std::uint32_t lightSamples) {
+std::uint64_t totalBytesPerSlot(std::uint32_t lightSamples, bool aovs) {
     return sizeof(gpu::PathState) + 2 * sizeof(gpu::RayRecord) + sizeof(gpu::HitRecord) +
-           sizeof(std::uint32_t) + recordsPerSlot(lightSamples) * sizeof(gpu::ShadowRay);
+           sizeof(std::uint32_t) + recordsPerSlot(lightSamples) * sizeof(gpu::ShadowRay) +
+           (aovs ? sizeof(gpu::SampleFeatures) : 0);
 }
 
 Buffer makeWorkBuffer(GpuContext& context, const char* name, std::uint64_t bytes,
@@ -49,15 +50,15 @@ std::uint32_t chooseSlotCount(const GpuContext& context, const SlotRequest& requ
         std::min(limits.maxStorageBufferRange, limits.maxMemoryAllocationSize);
     slots = std::min(slots, bufferCap / largestBytesPerSlot(request.lightSamples));
     if (limits.deviceLocalHeapSize > 0)
-        slots = std::min(slots,
-                         limits.deviceLocalHeapSize / 4 / totalBytesPerSlot(request.lightSamples));
+        slots = std::min(slots, limits.deviceLocalHeapSize / 4 /
+                                    totalBytesPerSlot(request.lightSamples, request.aovs));
     if (request.pathsWanted > 0) slots = std::min(slots, request.pathsWanted + WORKGROUP_SIZE - 1);
     slots = std::max<std::uint64_t>(slots / WORKGROUP_SIZE, 1) * WORKGROUP_SIZE;
     return static_cast<std::uint32_t>(slots);
 }
 
 WorkBuffers::WorkBuffers(GpuContext& context, std::uint32_t slots, std::uint32_t lightSamples,
-                         std::uint32_t pixelCount, bool withInstances)
+                         std::uint32_t pixelCount, WorkExtras extras)
     : slotCount(slots), frameParams(makeWorkBuffer(context, "frameParams", sizeof(gpu::FrameParams),
                                                    VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT)),
       pathStates(
@@ -77,9 +78,15 @@ WorkBuffers::WorkBuffers(GpuContext& context, std::uint32_t slots, std::uint32_t
                                   VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT)),
       countersReadback(context, {"queueCounters.readback", COUNTER_WORDS * sizeof(std::uint32_t),
                                  VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryLocation::Readback}) {
-    if (withInstances)
+    if (extras.instances)
         hitInstances.emplace(
             makeWorkBuffer(context, "hitInstances", std::uint64_t(slots) * sizeof(std::uint32_t)));
+    if (extras.aovs) {
+        sampleFeatures.emplace(makeWorkBuffer(context, "sampleFeatures",
+                                              std::uint64_t(slots) * sizeof(gpu::SampleFeatures)));
+        pixelFeatures.emplace(makeWorkBuffer(
+            context, "pixelFeatures", std::uint64_t(pixelCount) * sizeof(gpu::PixelFeatures)));
+    }
 }
 
 void WorkBuffers::bind(BufferTable& table) const {
@@ -96,6 +103,10 @@ void WorkBuffers::bind(BufferTable& table) const {
     table.set(BINDING_SHADOW_RAYS, shadowRays);
     table.set(BINDING_SHADOW_RAY_TEXELS, shadowRays);
     table.set(BINDING_PIXEL_STATES, pixelStates);
+    // Likewise a render without AOVs binds buffers of its own there that its kernels, specialised
+    // without them (lib/aovs.glsl), never touch.
+    table.set(BINDING_SAMPLE_FEATURES, sampleFeatures ? *sampleFeatures : pathStates);
+    table.set(BINDING_PIXEL_FEATURES, pixelFeatures ? *pixelFeatures : pixelStates);
     table.set(BINDING_ACTIVE_PIXELS, activePixels);
     table.set(BINDING_QUEUE_COUNTERS, queueCounters);
     table.set(BINDING_DISPATCH_ARGS, dispatchArgs);

@@ -76,6 +76,22 @@ PixelRecord combineRecords(const PixelRecord& a, const PixelRecord& b) {
     return c;
 }
 
+FeatureRecord combineFeatures(const FeatureRecord& a, const FeatureRecord& b) {
+    FeatureRecord c;
+    c.samples = a.samples + b.samples;
+    c.depth = std::min(a.depth, b.depth);
+    if (a.samples == 0 || b.samples == 0) {
+        const FeatureRecord& only = a.samples ? a : b;
+        c.albedo = only.albedo;
+        c.normal = only.normal;
+        return c;
+    }
+    const double wb = double(b.samples) / double(c.samples);
+    c.albedo = glm::vec3(glm::dvec3(a.albedo) + (glm::dvec3(b.albedo) - glm::dvec3(a.albedo)) * wb);
+    c.normal = glm::vec3(glm::dvec3(a.normal) + (glm::dvec3(b.normal) - glm::dvec3(a.normal)) * wb);
+    return c;
+}
+
 RenderOutput renderOutputOf(const RenderState& state) {
     const std::uint32_t width = state.identity.width, height = state.identity.height;
     VKPT_ASSERT(state.pixels.size() == state.window.area(), "one record per window pixel");

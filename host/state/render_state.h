@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -71,12 +72,18 @@ struct PixelRecord {
 // Chan et al.'s pairwise combination of two disjoint sample sets; a converged flag survives.
 PixelRecord combineRecords(const PixelRecord& a, const PixelRecord& b);
 
-// What a denoiser and a compositor need besides the colour (the AOVs of the EXR file).
+// What a denoiser and a compositor need besides the colour (the AOVs of the EXR file), over the
+// camera samples that recorded them (shared/sample_features.h).
 struct FeatureRecord {
-    glm::vec3 albedo{0.0f};
-    glm::vec3 normal{0.0f}; // world-space shading normal, facing the camera; 0 on a miss
-    float depth = 0.0f;     // camera-space depth of the nearest hit; +inf on a miss
+    glm::vec3 albedo{0.0f}; // mean over the samples, a miss counting as 0
+    glm::vec3 normal{0.0f}; // mean world-space shading normal, facing the camera; 0 on a miss
+    float depth = std::numeric_limits<float>::infinity(); // camera-space z of the nearest hit
+    std::uint32_t samples = 0; // camera samples averaged: a pixel's share of a merge
 };
+
+// Two disjoint sets of samples' features: means weighted by their counts (in double), the
+// nearer depth.
+FeatureRecord combineFeatures(const FeatureRecord& a, const FeatureRecord& b);
 
 // What must be equal for two states to be parts of one render.
 struct StateIdentity {

@@ -27,6 +27,7 @@ inline constexpr const char* kLuminanceMean = "vkpt.luminanceMean";
 inline constexpr const char* kLuminanceMeanLo = "vkpt.luminanceMeanLo";
 inline constexpr const char* kLuminanceM2 = "vkpt.luminanceM2";
 inline constexpr const char* kLuminanceM2Lo = "vkpt.luminanceM2Lo";
+inline constexpr const char* kFeatureSamples = "vkpt.featureSamples"; // with the AOV channels
 
 // String attributes of the header.
 inline constexpr const char* kFormatAttribute = "vkpt.format";

@@ -108,14 +108,14 @@ void readInto(const Imf::Header& header, Imf::FrameBuffer& frame, const char* na
 
 struct ReadChannels {
     std::vector<float> mean[3], meanLo[3], lumMean, lumMeanLo, m2, m2Lo;
-    std::vector<std::uint32_t> count, taken, converged;
+    std::vector<std::uint32_t> count, taken, converged, featureSamples;
     std::vector<float> albedo[3], normal[3], depth;
     bool hasFeatures = false;
 
     explicit ReadChannels(std::size_t n) {
         for (auto* v : {&lumMean, &lumMeanLo, &m2, &m2Lo, &depth})
             v->resize(n);
-        for (auto* v : {&count, &taken, &converged})
+        for (auto* v : {&count, &taken, &converged, &featureSamples})
             v->resize(n);
         for (int k = 0; k < 3; ++k)
             for (auto* v : {&mean[k], &meanLo[k], &albedo[k], &normal[k]})
@@ -146,6 +146,7 @@ void insertSlices(const Imf::Header& header, ReadChannels& r, Imf::FrameBuffer& 
                  r.normal[k], path);
     }
     readInto(header, frame, kDepth, Imf::FLOAT, r.depth, path);
+    readInto(header, frame, kFeatureSamples, Imf::UINT, r.featureSamples, path);
 }
 
 void fillRecords(const ReadChannels& r, RenderState& state) {
@@ -170,6 +171,7 @@ void fillRecords(const ReadChannels& r, RenderState& state) {
             f.normal[k] = r.normal[k][i];
         }
         f.depth = r.depth[i];
+        f.samples = r.featureSamples[i];
     }
 }
 

@@ -86,6 +86,7 @@ void addFeatureChannels(const RenderState& state, Channels& c) {
         normal[k] = &c.addFloat(std::string(kNormalPrefix) + kXyz[k], n);
     }
     auto& depth = c.addFloat(kDepth, n);
+    auto& samples = c.addUint(kFeatureSamples, n);
     for (std::size_t i = 0; i < n; ++i) {
         const FeatureRecord& f = state.features[i];
         for (int k = 0; k < 3; ++k) {
@@ -93,6 +94,7 @@ void addFeatureChannels(const RenderState& state, Channels& c) {
             (*normal[k])[i] = f.normal[k];
         }
         depth[i] = f.depth;
+        samples[i] = f.samples;
     }
 }
 

@@ -75,7 +75,7 @@ std::vector<Region> joinedRegions(const std::vector<StatePart>& parts) {
     return regions;
 }
 
-void foldPart(RenderState& merged, const RenderState& part, std::vector<bool>& hasFeatures) {
+void foldPart(RenderState& merged, const RenderState& part) {
     const PixelRect& w = part.window;
     for (std::uint32_t y = w.y0; y < w.y1; ++y)
         for (std::uint32_t x = w.x0; x < w.x1; ++x) {
@@ -84,19 +84,10 @@ void foldPart(RenderState& merged, const RenderState& part, std::vector<bool>& h
             const std::size_t i =
                 std::size_t(y - merged.window.y0) * merged.window.width() + (x - merged.window.x0);
             const std::size_t j = std::size_t(y - w.y0) * w.width() + (x - w.x0);
-            // Every part computes the same features for a pixel (a function of the pixel
-            // alone, docs/distributed.md); the first part that has them gives them.
-            if (!part.features.empty() && !hasFeatures[i]) {
-                merged.features[i] = part.features[j];
-                hasFeatures[i] = true;
-            }
+            // Each part's features cover its own samples, as its moments do.
+            if (!part.features.empty())
+                merged.features[i] = combineFeatures(merged.features[i], part.features[j]);
         }
-}
-
-FeatureRecord noSurface() {
-    FeatureRecord f;
-    f.depth = std::numeric_limits<float>::infinity();
-    return f;
 }
 
 } // namespace
@@ -123,10 +114,13 @@ RenderState mergeStates(std::vector<StatePart> parts) {
         merged.window = boundingRect(merged.window, part.state.window);
     merged.regions = joinedRegions(parts);
     merged.pixels.assign(merged.window.area(), PixelRecord{});
-    merged.features.assign(merged.window.area(), noSurface());
-    std::vector<bool> hasFeatures(merged.window.area(), false);
+    // AOV layers when any part has them; a part without them adds no feature samples.
+    const bool anyFeatures = std::any_of(parts.begin(), parts.end(), [](const StatePart& part) {
+        return !part.state.features.empty();
+    });
+    if (anyFeatures) merged.features.assign(merged.window.area(), FeatureRecord{});
     for (const StatePart& part : parts)
-        foldPart(merged, part.state, hasFeatures);
+        foldPart(merged, part.state);
     return merged;
 }
 

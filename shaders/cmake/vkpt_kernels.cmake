@@ -5,7 +5,8 @@
 #       NAMESPACE <c++ namespace>      e.g. vkpt::kernels; must differ between libraries
 #       SOURCES <file.comp>...         kernel name = file name without .comp (snake_case)
 #       [INCLUDE_DIRS <dir>...]        searched after the including file's folder and shaders/
-#       [DEFINES <NAME[=VALUE]>...])   -D options for every kernel of the library
+#       [DEFINES <NAME[=VALUE]>...]    -D options for every kernel of the library
+#       [OPTIMIZE])                    run spirv-opt -O over each kernel's SPIR-V
 #
 # Produces the static library <target> and its header "<target>.h", which declares
 # <namespace>::embeddedKernels() and <namespace>::findKernel(name). Every kernel is compiled with
@@ -13,9 +14,14 @@
 # glslang writes a depfile listing every #include, so editing shared/host_device.h recompiles
 # exactly the kernels that include it. Specialisation constants need nothing here: kernels
 # declare layout(constant_id = N) and the host supplies values when it creates the pipeline.
+# OPTIMIZE is for builds whose DEFINES turn features into constants: glslang leaves the code
+# those constants cut off in the module, and spirv-opt's inlining and dead-branch elimination
+# remove it, so that a driver never translates it (docs/gpu.md, "Pipelines").
 
 find_program(VKPT_GLSLANG_VALIDATOR glslangValidator REQUIRED
              DOC "glslangValidator from glslang-tools, compiles GLSL kernels to SPIR-V")
+find_program(VKPT_SPIRV_OPT spirv-opt REQUIRED
+             DOC "spirv-opt from spirv-tools, optimises the kernels built for a feature set")
 
 # The include root of every kernel: "shared/rng.h", "lib/buffers.glsl".
 get_filename_component(shader_root ${CMAKE_CURRENT_LIST_DIR}/.. ABSOLUTE)
@@ -36,7 +42,8 @@ function(_vkpt_kernel_symbol name out_var)
 endfunction()
 
 # One custom command per kernel: .comp → .spv (with depfile) → .spv.cpp (the word array).
-function(_vkpt_compile_kernel source out_dir namespace glslang_flags out_cpp out_name out_symbol)
+function(_vkpt_compile_kernel source out_dir namespace glslang_flags optimize out_cpp out_name
+         out_symbol)
     cmake_path(ABSOLUTE_PATH source BASE_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}
                OUTPUT_VARIABLE source)
     cmake_path(GET source STEM name)
@@ -48,10 +55,15 @@ function(_vkpt_compile_kernel source out_dir namespace glslang_flags out_cpp out
     set(cpp ${out_dir}/${name}.spv.cpp)
     cmake_path(RELATIVE_PATH source BASE_DIRECTORY ${PROJECT_SOURCE_DIR}
                OUTPUT_VARIABLE source_label)
+    set(optimize_command)
+    if(optimize)
+        set(optimize_command COMMAND ${VKPT_SPIRV_OPT} -O ${spv} -o ${spv})
+    endif()
     add_custom_command(
         OUTPUT ${spv}
         COMMAND ${VKPT_GLSLANG_VALIDATOR} -V --quiet ${glslang_flags}
                 --depfile ${spv}.d -o ${spv} ${source}
+        ${optimize_command}
         MAIN_DEPENDENCY ${source}
         DEPENDS ${VKPT_GLSLANG_VALIDATOR}
         DEPFILE ${spv}.d
@@ -71,7 +83,7 @@ function(_vkpt_compile_kernel source out_dir namespace glslang_flags out_cpp out
 endfunction()
 
 function(vkpt_add_kernels target)
-    cmake_parse_arguments(ARG "" "NAMESPACE" "SOURCES;INCLUDE_DIRS;DEFINES" ${ARGN})
+    cmake_parse_arguments(ARG "OPTIMIZE" "NAMESPACE" "SOURCES;INCLUDE_DIRS;DEFINES" ${ARGN})
     if(NOT ARG_NAMESPACE OR NOT ARG_SOURCES)
         message(FATAL_ERROR "vkpt_add_kernels(${target}): NAMESPACE and SOURCES are required")
     endif()
@@ -89,7 +101,8 @@ function(vkpt_add_kernels target)
     set(names)
     set(symbols)
     foreach(source IN LISTS ARG_SOURCES)
-        _vkpt_compile_kernel(${source} ${out_dir} ${ARG_NAMESPACE} "${flags}" cpp name symbol)
+        _vkpt_compile_kernel(${source} ${out_dir} ${ARG_NAMESPACE} "${flags}" ${ARG_OPTIMIZE} cpp
+                             name symbol)
         if(name IN_LIST names)
             message(FATAL_ERROR "vkpt_add_kernels(${target}): two kernels named '${name}'")
         endif()

@@ -2,9 +2,11 @@
 // the pixel's k samples in sample order to its running estimate (non-finite ones discarded and
 // counted, the rest clamped when --clamp asks, shared/sample_guard.h), applies the adaptive
 // stopping rule after every sample that completes a batch (exactly where the reference does),
-// and appends the pixels that go on to the next pass's active list.
+// and appends the pixels that go on to the next pass's active list. When the render records
+// AOVs, each sample's features join the pixel's in the same order and up to the same sample.
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#include "lib/aovs.glsl"
 #include "lib/frame.glsl"
 
 layout(local_size_x = WORKGROUP_SIZE) in;
@@ -54,8 +56,11 @@ bool accumulatePixel(uint activeIndex, out uint pixelIndex, out uint nonFinite) 
     uint first = activeIndex * k;
     pixelIndex = fetchPathState(first).pixel;
     PixelState pixel = pixelStates[pixelIndex];
+    PixelFeatures features;
+    if (renderAovs) features = pixelFeatures[pixelIndex];
     nonFinite = 0u;
     for (uint j = 0u; j < k; ++j) {
+        if (renderAovs) addSampleFeatures(features, sampleFeatures[first + j]);
         PathState path = fetchPathState(first + j);
         if (isFiniteSample(path.radiance)) {
             addSample(pixel, clampSample(path.radiance, frame.sampleClamp));
@@ -71,6 +76,7 @@ bool accumulatePixel(uint activeIndex, out uint pixelIndex, out uint nonFinite) 
         }
     }
     pixelStates[pixelIndex] = pixel;
+    if (renderAovs) pixelFeatures[pixelIndex] = features;
     return pixel.converged == 0u;
 }
 

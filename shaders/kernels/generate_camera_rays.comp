@@ -2,6 +2,7 @@
 // (active pixel of the chunk) · k + (sample j of the pass), into half 0 of the ray queue.
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#include "lib/aovs.glsl"
 #include "lib/features.glsl"
 #include "lib/frame.glsl"
 #include "shared/camera.h"
@@ -39,6 +40,8 @@ void main() {
     pathStates[slot].previousBsdfPdf = 0.0;
     // Paths start outside every volume (shared/volume.h).
     if (featureTransmission) pathStates[slot].mediumCoefficient = vec3(0.0);
+    // A sample whose camera ray misses keeps these; shade_hits overwrites them at a hit.
+    if (renderAovs) sampleFeatures[slot] = missFeatures();
     rays[slot] = RayRecord(cameraRayOrigin(frame.camera, film), slot, direction, 0u);
     if (slot == 0u) queueCounters[COUNTER_RAYS] = slots;
 }

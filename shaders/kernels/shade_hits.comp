@@ -4,6 +4,7 @@
 // that append the next bounce's ray; on a miss, the environment with its MIS weight.
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#include "lib/aovs.glsl"
 #include "lib/frame.glsl"
 
 layout(local_size_x = WORKGROUP_SIZE) in;
@@ -231,6 +232,11 @@ Shading shadeRay(uint i) {
 #endif
         vertex.surface = makeSurfacePoint(hit.triangle, instance, triangleHitOf(hit), record.origin,
                                           record.direction);
+        // The camera sample's AOVs, from the hit its colour starts from.
+        if (renderAovs && passParams.bounce == 0u)
+            sampleFeatures[record.slot] =
+                surfaceFeatures(vertex.surface.shading.baseColor, vertex.surface.shadingNormal,
+                                hit.t, record.direction, frame.camera.forward);
         PathState before = fetchPathState(record.slot);
         PathState state = before;
         // The segment to this hit crossed the path's medium (Beer–Lambert, shared/volume.h).

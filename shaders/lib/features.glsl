@@ -8,8 +8,28 @@
 
 #include "shared/host_device.h"
 
+#ifndef VKPT_DIFFUSE_ONLY
+#define VKPT_DIFFUSE_ONLY 0
+#endif
+
+#if VKPT_DIFFUSE_ONLY
+// The build for scenes whose materials are all Lambertian (shaders/CMakeLists.txt): the layered
+// BSDF's features are constants of the build, which its optimiser folds away, so a driver never
+// parses code such a scene cannot reach.
+const bool featureMetallicRoughness = false;
+const bool featureTransmission = false;
+const bool featureClearcoat = false;
+const bool featureSheen = false;
+#else
 // glTF GGX materials (diffuse-only scenes keep the Lambertian BSDF alone).
 layout(constant_id = FEATURE_METALLIC_ROUGHNESS) const bool featureMetallicRoughness = true;
+// KHR_materials_transmission, _ior, _volume: glass lobes, volumes, an ior other than 1.5.
+layout(constant_id = FEATURE_TRANSMISSION) const bool featureTransmission = true;
+// Some material has a KHR_materials_clearcoat layer.
+layout(constant_id = FEATURE_CLEARCOAT) const bool featureClearcoat = true;
+// Some material has a KHR_materials_sheen layer.
+layout(constant_id = FEATURE_SHEEN) const bool featureSheen = true;
+#endif
 // Base colour, metallic-roughness or emissive textures, and the TEXCOORD_0 they are read at.
 layout(constant_id = FEATURE_TEXTURES) const bool featureTextures = true;
 // alphaMode MASK: traversals skip the cut-out parts of such materials.
@@ -28,12 +48,6 @@ layout(constant_id = FEATURE_EMITTER_CDF) const bool featureEmitterCdf = true;
 layout(constant_id = FEATURE_DOUBLE_SIDED) const bool featureDoubleSided = true;
 // Some material has a normal texture: shading reads triangleTangents and bends the normal.
 layout(constant_id = FEATURE_NORMAL_MAPS) const bool featureNormalMaps = true;
-// KHR_materials_transmission, _ior, _volume: glass lobes, volumes, an ior other than 1.5.
-layout(constant_id = FEATURE_TRANSMISSION) const bool featureTransmission = true;
-// Some material has a KHR_materials_clearcoat layer.
-layout(constant_id = FEATURE_CLEARCOAT) const bool featureClearcoat = true;
-// Some material has a KHR_materials_sheen layer.
-layout(constant_id = FEATURE_SHEEN) const bool featureSheen = true;
 // A two-level BVH: the top level's leaves are instances of meshes (shared/instance.h). A layout
 // the scene has or has not, not a feature the general kernels add: the kernels it changes are
 // built once for each (VKPT_INSTANCES, shared/host_device.h), so it is a constant of the build.

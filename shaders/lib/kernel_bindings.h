@@ -24,6 +24,7 @@
     BUFFER(BINDING_ACTIVE_PIXELS, READ, uint, activePixels)                                        \
     BUFFER(BINDING_PATH_STATES, WRITE, PathState, pathStates)                                      \
     BUFFER(BINDING_RAYS, WRITE, RayRecord, rays)                                                   \
+    BUFFER(BINDING_SAMPLE_FEATURES, WRITE, SampleFeatures, sampleFeatures)                         \
     BUFFER(BINDING_QUEUE_COUNTERS, READ_WRITE, uint, queueCounters)
 
 #define PREPARE_DISPATCHES_BINDINGS(UNIFORM, TEXELS, BUFFER)                                       \
@@ -67,6 +68,7 @@
     BUFFER(BINDING_PATH_STATES, WRITE, PathState, pathStates)                                      \
     BUFFER(BINDING_RAYS, WRITE, RayRecord, rays)                                                   \
     BUFFER(BINDING_SHADOW_RAYS, WRITE, ShadowRay, shadowRays)                                      \
+    BUFFER(BINDING_SAMPLE_FEATURES, WRITE, SampleFeatures, sampleFeatures)                         \
     BUFFER(BINDING_QUEUE_COUNTERS, READ_WRITE, uint, queueCounters)
 
 #define TRACE_SHADOW_BINDINGS(UNIFORM, TEXELS, BUFFER)                                             \
@@ -96,6 +98,8 @@
     UNIFORM(BINDING_FRAME_PARAMS)                                                                  \
     TEXELS(BINDING_PATH_STATE_TEXELS)                                                              \
     BUFFER(BINDING_PIXEL_STATES, READ_WRITE, PixelState, pixelStates)                              \
+    BUFFER(BINDING_SAMPLE_FEATURES, READ, SampleFeatures, sampleFeatures)                          \
+    BUFFER(BINDING_PIXEL_FEATURES, READ_WRITE, PixelFeatures, pixelFeatures)                       \
     BUFFER(BINDING_ACTIVE_PIXELS, WRITE, uint, activePixels)                                       \
     BUFFER(BINDING_QUEUE_COUNTERS, READ_WRITE, uint, queueCounters)
 

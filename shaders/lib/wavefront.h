@@ -7,6 +7,7 @@
 #define VKPT_WAVEFRONT_H
 
 #include "shared/host_device.h"
+#include "shared/sample_features.h"
 
 #ifdef __cplusplus
 namespace vkpt::gpu {
@@ -50,7 +51,14 @@ namespace vkpt::gpu {
 #define BINDING_ALBEDO_TABLES 25     // float, the layered BSDF's tables (shared/albedo_lookup.h)
 #define BINDING_INSTANCES 26         // Instance, uniform texel buffer (two-level scenes)
 #define BINDING_HIT_INSTANCES 27     // uint per hit: the instance hit (two-level scenes)
-#define BINDING_COUNT 28
+// The AOVs (shared/sample_features.h), only in renders whose output or state records them.
+#define BINDING_SAMPLE_FEATURES 28 // SampleFeatures per slot: its camera sample's first hit
+#define BINDING_PIXEL_FEATURES 29  // PixelFeatures per pixel
+#define BINDING_COUNT 30
+
+// Specialisation constant: the render records AOVs (lib/aovs.glsl). A setting of the render,
+// not a feature of the scene, with an id between the scene features' and the chunk constants'.
+#define SPEC_AOVS 14
 
 // A scene array larger than one binding may hold (maxStorageBufferRange, maxTexelBufferElements,
 // maxMemoryAllocationSize) is split into up to SCENE_ARRAY_MAX_CHUNKS buffers of 2^k elements

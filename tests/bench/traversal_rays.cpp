@@ -63,7 +63,7 @@ std::vector<RaySet> recordRenderRays(const PreparedScene& scene, const gpu::Came
                              {"any-hit, incoherent", true, {}}};
     RecordingFactory factory(scene, sets);
     SceneTracer tracer(scene, factory);
-    IntegratorContext context{settings, tracer};
+    IntegratorContext context{settings, tracer, camera};
     // SceneTracer owns the intersector; the factory made exactly this one.
     auto& recorder = static_cast<RecordingIntersector&>(tracer.intersector());
     for (std::uint32_t y = 0; y < camera.height; ++y)

@@ -6,11 +6,13 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "common/errors.h"
 #include "feature_scenes.h"
+#include "lib/wavefront.h"
 #include "wavefront_test_support.h"
 
 namespace vkpt::test {
@@ -162,6 +164,53 @@ TEST_F(SceneUpload, GeneralKernelsNeedOnlyTheArraysTheSceneHas) {
         SameSeedAgreement a = compareSameSeed(all, own);
         EXPECT_EQ(a.within, a.pixels) << named.name << ": " << a.summary();
     }
+}
+
+// Whether a SPIR-V module declares a variable at descriptor binding `binding` (an OpDecorate
+// with the Binding decoration): spirv-opt removes the variables the code no longer reads.
+bool declaresBinding(std::span<const std::uint32_t> spirv, std::uint32_t binding) {
+    constexpr std::uint32_t kOpDecorate = 71, kDecorationBinding = 33, kHeaderWords = 5;
+    for (std::size_t i = kHeaderWords; i < spirv.size();) {
+        const std::uint32_t words = spirv[i] >> 16, opcode = spirv[i] & 0xffffu;
+        if (words == 0) break;
+        if (opcode == kOpDecorate && words >= 4 && spirv[i + 2] == kDecorationBinding &&
+            spirv[i + 3] == binding)
+            return true;
+        i += words;
+    }
+    return false;
+}
+
+// The feature-set builds (shade_hits for Lambertian scenes, shaders/CMakeLists.txt) hold only
+// what such a scene can reach — no layered BSDF, so not even its albedo tables' buffer — and
+// render the full build's image bit for bit.
+TEST_F(SceneUpload, LambertianScenesTakeTheDiffuseBuildAndRenderTheSameBits) {
+    LoadedTestScene box = loadTestScene("cornell-box.gltf");
+    const SceneFeatures& features = box.prepared.features;
+    ASSERT_FALSE(features.metallicRoughnessMaterials);
+    const auto diffuse = kernelSpirv(WavefrontKernel::ShadeHits, features);
+    const auto full = kernelSpirv(WavefrontKernel::ShadeHits, features, KernelBuilds::Full);
+    EXPECT_FALSE(declaresBinding(diffuse, BINDING_ALBEDO_TABLES));
+    EXPECT_TRUE(declaresBinding(full, BINDING_ALBEDO_TABLES));
+    SceneFeatures instanced = features;
+    instanced.instances = true;
+    EXPECT_FALSE(
+        declaresBinding(kernelSpirv(WavefrontKernel::ShadeHits, instanced), BINDING_ALBEDO_TABLES));
+    SceneFeatures layered = features;
+    layered.metallicRoughnessMaterials = true;
+    EXPECT_TRUE(
+        declaresBinding(kernelSpirv(WavefrontKernel::ShadeHits, layered), BINDING_ALBEDO_TABLES));
+
+    RenderSettings settings = testSettings(16, 4);
+    settings.seed = 9;
+    WavefrontOptions fullBuild;
+    fullBuild.kernelBuilds = KernelBuilds::Full;
+    const WavefrontResult lean = render(context(), box, settings);
+    const WavefrontResult whole = render(context(), box, settings, fullBuild);
+    std::printf("pipelines: %.3f s with the diffuse shade_hits, %.3f s with the full one\n",
+                lean.pipelineCreationSeconds, whole.pipelineCreationSeconds);
+    EXPECT_EQ(lean.output.image.pixels, whole.output.image.pixels);
+    EXPECT_EQ(lean.stats.rays.total(), whole.stats.rays.total());
 }
 
 // Kernels built without a feature the scene uses would drop it silently: refused instead.

@@ -18,7 +18,7 @@ namespace vkpt {
 struct DeviceRayQueries::State {
     State(GpuContext& c, const PreparedScene& scene, std::uint32_t batch)
         : context(c), batchSize(batch), deviceScene(uploadScene(c, scene)),
-          buffers(c, batch, 1, 1, scene.features.instances),
+          buffers(c, batch, 1, 1, {.instances = scene.features.instances}),
           closestKernel(makeWavefrontKernel(c, WavefrontKernel::TraceClosest, scene.features)),
           shadowKernel(makeWavefrontKernel(c, WavefrontKernel::TraceShadow, scene.features)),
           closestSet(bindWavefrontKernel(closestKernel, WavefrontKernel::TraceClosest, table())),

@@ -3,6 +3,7 @@
 // for bit (and by a plain OpenEXR reader), and every file and merge that must be refused.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -77,6 +78,31 @@ TEST(PixelRecords, ChanCombinationEqualsOneRunningSum) {
     }
 }
 
+FeatureRecord featuresOf(glm::vec3 albedo, glm::vec3 normal, float depth, std::uint32_t samples) {
+    FeatureRecord f;
+    f.albedo = albedo;
+    f.normal = normal;
+    f.depth = depth;
+    f.samples = samples;
+    return f;
+}
+
+TEST(FeatureRecords, CombineByTheirSampleCountsAndKeepTheNearestDepth) {
+    const FeatureRecord a = featuresOf(glm::vec3(1.0f), glm::vec3(0.0f, 0.0f, 1.0f), 3.0f, 1);
+    const FeatureRecord b = featuresOf(glm::vec3(0.0f), glm::vec3(1.0f, 0.0f, 0.0f), 2.0f, 3);
+    const FeatureRecord c = combineFeatures(a, b);
+    EXPECT_EQ(c.samples, 4u);
+    EXPECT_EQ(c.albedo, glm::vec3(0.25f));
+    EXPECT_EQ(c.normal, glm::vec3(0.75f, 0.0f, 0.25f));
+    EXPECT_EQ(c.depth, 2.0f);
+    // A part without feature samples (no AOVs, or every sample missed) changes nothing but depth.
+    const FeatureRecord none;
+    EXPECT_EQ(combineFeatures(none, a).albedo, a.albedo);
+    EXPECT_EQ(combineFeatures(b, none).normal, b.normal);
+    EXPECT_EQ(combineFeatures(b, none).samples, 3u);
+    EXPECT_TRUE(std::isinf(combineFeatures(none, none).depth));
+}
+
 RenderState sampleState(std::uint32_t seed = 3) {
     RenderState s;
     s.identity = {"0123456789abcdef", "integrator=path", seed, 40, 30};
@@ -98,6 +124,7 @@ RenderState sampleState(std::uint32_t seed = 3) {
         f.albedo = glm::vec3(float(u(random)));
         f.normal = glm::vec3(0.0f, 1.0f, 0.0f);
         f.depth = i % 3 ? float(u(random)) : std::numeric_limits<float>::infinity();
+        f.samples = 4;
         s.features.push_back(f);
     }
     return s;
@@ -145,7 +172,9 @@ TEST_F(StateFile, RoundTripsTheMomentsTheFeaturesAndTheMetadata) {
         EXPECT_EQ(a.samplesTaken, b.samplesTaken);
         EXPECT_EQ(a.converged, b.converged);
         EXPECT_EQ(read.features[i].albedo, written.features[i].albedo);
+        EXPECT_EQ(read.features[i].normal, written.features[i].normal);
         EXPECT_EQ(read.features[i].depth, written.features[i].depth);
+        EXPECT_EQ(read.features[i].samples, written.features[i].samples);
     }
 }
 
@@ -260,6 +289,27 @@ TEST(StateMerge, RefusesSamplesTakenTwice) {
     right.state.pixels.resize(right.state.window.area());
     right.state.features.resize(right.state.window.area());
     EXPECT_EQ(mergeRefusal({left, right}), "merged");
+}
+
+// Each part's AOVs cover its own samples: the merge weighs them as it weighs the moments, and a
+// part saved without AOV layers adds no feature samples.
+TEST(StateMerge, FeaturesAverageOverThePartsThatHaveThem) {
+    StatePart a = taskPart("a.exr", {0, 4}), b = taskPart("b.exr", {4, 8}),
+              c = taskPart("c.exr", {8, 12});
+    for (FeatureRecord& f : b.state.features)
+        f.albedo = glm::vec3(0.5f) - f.albedo;
+    c.state.features.clear();
+    const RenderState merged = mergeStates({a, b, c});
+    ASSERT_EQ(merged.features.size(), a.state.features.size());
+    for (std::size_t i = 0; i < merged.features.size(); ++i) {
+        EXPECT_EQ(merged.features[i].samples, 8u);
+        EXPECT_NEAR(merged.features[i].albedo.x, 0.25f, 1e-6f);
+        EXPECT_EQ(merged.features[i].depth,
+                  std::min(a.state.features[i].depth, b.state.features[i].depth));
+    }
+    StatePart d = taskPart("d.exr", {0, 4});
+    d.state.features.clear();
+    EXPECT_TRUE(mergeStates({c, d}).features.empty());
 }
 
 TEST(StateMerge, TheOrderOfThePartsDoesNotMatter) {
