@@ -54,6 +54,11 @@ void addDeviceOptions(CommandLine& commandLine, Invocation& invocation) {
     commandLine.add({"stats", {}, "", "print per-kernel GPU times (timestamp queries)", [&](auto) {
                          invocation.kernelStats = true;
                      }});
+    commandLine.add({"no-cache",
+                     {},
+                     "",
+                     "do not read or write the pipeline cache file (or VKPT_NO_PIPELINE_CACHE=1)",
+                     [&](auto) { invocation.gpu.persistentPipelineCache = false; }});
     commandLine.add(
         {"path-slots", {}, "N", "paths in flight per pass (default: from the device)", [&](auto v) {
              invocation.pathSlots = parseUnsigned("path-slots", v[0], 64);
@@ -62,6 +67,8 @@ void addDeviceOptions(CommandLine& commandLine, Invocation& invocation) {
 
 Invocation parseArguments(int argc, char** argv) {
     Invocation invocation;
+    // Drivers that honour a pipeline cache compile each kernel once, not once per render.
+    invocation.gpu.persistentPipelineCache = true;
     const ProgramCommandLine commandLine{
         kProgram, ConvergenceOptionSet::All,
         [&invocation](CommandLine& own) { addDeviceOptions(own, invocation); },

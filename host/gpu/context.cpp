@@ -84,7 +84,15 @@ GpuContext::GpuContext(const GpuOptions& options)
         setDebugName(device_, deviceInfo_.name);
         setDebugName(queue_, "computeQueue");
         createCommandPool();
+        std::string cachePath;
+        if (options.persistentPipelineCache)
+            cachePath = options.pipelineCachePath.empty()
+                            ? defaultPipelineCachePath(deviceInfo_.handle)
+                            : options.pipelineCachePath;
+        pipelineCache_ =
+            std::make_unique<PipelineCache>(device_, deviceInfo_.handle, std::move(cachePath));
     } catch (...) {
+        if (commandPool_) vkDestroyCommandPool(device_, commandPool_, nullptr);
         vkDestroyDevice(device_, nullptr);
         throw;
     }
@@ -93,6 +101,7 @@ GpuContext::GpuContext(const GpuOptions& options)
 GpuContext::~GpuContext() {
     // Nothing may still run when its pool and device go; vkpt waits on fences, so this is cheap.
     vkDeviceWaitIdle(device_);
+    pipelineCache_.reset();
     vkDestroyCommandPool(device_, commandPool_, nullptr);
     vkDestroyDevice(device_, nullptr);
 }

@@ -6,12 +6,14 @@
 #include "gpu/device_list.h"
 #include "gpu/instance.h"
 #include "gpu/memory.h"
+#include "gpu/pipeline_cache.h"
 
 #include <volk.h>
 
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <string_view>
 
 namespace vkpt {
@@ -20,6 +22,10 @@ struct GpuOptions {
     // Enables VK_LAYER_KHRONOS_validation; the environment variable VKPT_VALIDATION=1 does too.
     bool validation = false;
     DeviceSelection device;
+    // The pipeline cache file (gpu/pipeline_cache.h): empty for none (tests); vkpt passes
+    // defaultPipelineCachePath unless --no-cache.
+    bool persistentPipelineCache = false;
+    std::string pipelineCachePath; // with persistentPipelineCache; empty: the default path
 };
 
 // The properties vkpt checks before it asks for something the device cannot do.
@@ -79,6 +85,9 @@ public:
                       reinterpret_cast<std::uint64_t>(handle), name);
     }
 
+    // Every kernel's pipeline goes through it; a file-backed one when GpuOptions asked.
+    PipelineCache& pipelineCache() const { return *pipelineCache_; }
+
     MemoryAccounting& memoryAccounting() { return memoryAccounting_; }
     const MemoryStats& memoryStats() const { return memoryAccounting_.stats(); }
 
@@ -94,6 +103,7 @@ private:
     VkDevice device_ = VK_NULL_HANDLE;
     VkQueue queue_ = VK_NULL_HANDLE;
     VkCommandPool commandPool_ = VK_NULL_HANDLE;
+    std::unique_ptr<PipelineCache> pipelineCache_;
     MemoryAccounting memoryAccounting_;
 };
 

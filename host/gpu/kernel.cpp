@@ -148,8 +148,8 @@ void Kernel::createPipeline() {
     info.stage.pName = "main";
     info.stage.pSpecializationInfo = specialization.info();
     info.layout = pipelineLayout_;
-    VKPT_VK_CHECK(vkCreateComputePipelines(context_->device(), VK_NULL_HANDLE, 1, &info, nullptr,
-                                           &pipeline_));
+    VKPT_VK_CHECK(vkCreateComputePipelines(context_->device(), context_->pipelineCache().handle(),
+                                           1, &info, nullptr, &pipeline_));
     creationTime_ = std::chrono::steady_clock::now() - start;
     context_->setDebugName(pipeline_, desc_.name);
 }

@@ -183,7 +183,9 @@ namespace {
 // Creates every kernel's pipeline on up to `threads` threads, the largest modules first, so
 // that the longest compile (shade_hits) starts at once and the others fill the other cores:
 // the wait is about the longest compile instead of the sum. vkCreateComputePipelines may be
-// called from several threads at once without a pipeline cache (Vulkan's threading rules).
+// called from several threads at once, and a pipeline cache created without
+// VK_PIPELINE_CACHE_CREATE_EXTERNALLY_SYNCHRONIZED_BIT synchronises itself (Vulkan's threading
+// rules).
 std::vector<Kernel> createKernelsInParallel(const GpuContext& context,
                                             const SceneFeatures& features,
                                             const std::vector<SpecializationConstant>& constants,
@@ -236,6 +238,8 @@ WavefrontPipelines::WavefrontPipelines(const GpuContext& context, const BufferTa
     kernels_ = createKernelsInParallel(context, features, constants, builds,
                                        std::max(1u, std::thread::hardware_concurrency()));
     wallSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // At once, so that a render stopped later still leaves its compiles for the next one.
+    context.pipelineCache().save();
     sets_.reserve(kWavefrontKernelCount);
     for (std::size_t i = 0; i < kWavefrontKernelCount; ++i) {
         const auto id = static_cast<WavefrontKernel>(i);

@@ -53,8 +53,8 @@ VKPT_FN PixelFeatures noPixelFeatures() {
 }
 
 // `direction` is the camera ray's, as the camera made it; t the hit's distance along it.
-VKPT_FN SampleFeatures surfaceFeatures(vec3 baseColor, vec3 shadingNormal, float t,
-                                       vec3 direction, vec3 forward) {
+VKPT_FN SampleFeatures surfaceFeatures(vec3 baseColor, vec3 shadingNormal, float t, vec3 direction,
+                                       vec3 forward) {
     SampleFeatures hit;
     hit.albedo = baseColor;
     hit.depth = t * dot(direction, forward);

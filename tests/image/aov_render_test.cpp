@@ -166,9 +166,9 @@ TEST_F(Aovs, NoneUnlessAsked) {
     const LoadedTestScene scene = loadTestScene("cornell-box.gltf");
     const RenderSettings settings = testSettings(8, 2);
     RenderStats stats;
-    EXPECT_TRUE(renderReferenceParts(scene.prepared, testCamera(scene, settings), settings, stats,
-                                     {})
-                    .features.empty());
+    EXPECT_TRUE(
+        renderReferenceParts(scene.prepared, testCamera(scene, settings), settings, stats, {})
+            .features.empty());
     EXPECT_TRUE(renderWavefront(context(), scene.prepared, testCamera(scene, settings), settings)
                     .features.empty());
 }
