@@ -3,8 +3,12 @@
 // double in two float channels.
 #pragma once
 
+#include <ImfThreading.h>
+
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <thread>
 
 namespace vkpt::state_channels {
 
@@ -28,6 +32,18 @@ inline constexpr const char* kLuminanceMeanLo = "vkpt.luminanceMeanLo";
 inline constexpr const char* kLuminanceM2 = "vkpt.luminanceM2";
 inline constexpr const char* kLuminanceM2Lo = "vkpt.luminanceM2Lo";
 inline constexpr const char* kFeatureSamples = "vkpt.featureSamples"; // with the AOV channels
+
+// Threads for a file's compression or decompression. OpenEXR runs those tasks on its global
+// thread pool, which is empty until told otherwise (then one thread does all of it: 0.98 s of
+// ZIP for the 1024² preview's 26 channels on 2 cores, 0.5 s with both).
+inline int exrThreads() {
+    static const int threads = [] {
+        const int count = int(std::max(1u, std::thread::hardware_concurrency()));
+        Imf::setGlobalThreadCount(count);
+        return count;
+    }();
+    return threads;
+}
 
 // String attributes of the header.
 inline constexpr const char* kFormatAttribute = "vkpt.format";

@@ -188,7 +188,8 @@ void checkConsistent(const RenderState& state, const std::string& path) {
 }
 
 RenderState readState(const std::string& path) {
-    Imf::InputFile file(path.c_str());
+    // Decompression in parallel, as the writer compresses (state_file_write.cpp).
+    Imf::InputFile file(path.c_str(), exrThreads());
     RenderState state;
     readIdentity(file.header(), path, state);
     if (!file.isComplete()) refuse(path, "truncated: not every scan line of the image is there");

@@ -143,7 +143,8 @@ void writeChannels(const RenderState& state, Channels& channels, const std::stri
         header.channels().insert(name, Imf::Channel(Imf::UINT));
         frame.insert(name, Imf::Slice::Make(Imf::UINT, values.data(), window));
     }
-    Imf::OutputFile file(path.c_str(), header);
+    // ZIP compresses blocks of 16 scan lines independently, so OpenEXR's threads share them.
+    Imf::OutputFile file(path.c_str(), header, exrThreads());
     file.setFrameBuffer(frame);
     file.writePixels(int(state.window.height()));
 }
