@@ -9,6 +9,7 @@
 
 #include "app/convergence_options.h"
 #include "app/interrupt.h"
+#include "app/live_preview.h"
 #include "app/output_checks.h"
 #include "app/program_options.h"
 #include "app/render_part.h"
@@ -50,14 +51,16 @@ std::optional<ConvergenceReport> finalError(const ConvergenceSettings& convergen
     return ConvergenceReport{convergence, RenderStop::Budget, false, tracker.curve()};
 }
 
-ReferenceOptions referenceOptions(RenderPart& part, const IntersectorFactory& intersectors) {
+ReferenceOptions referenceOptions(const RenderSettings& settings, RenderPart& part,
+                                  const IntersectorFactory& intersectors) {
     ReferenceOptions options;
     options.intersectors = &intersectors;
     options.plan = part.plan();
     options.resume = part.resumeRecords();
     options.interrupt = &stopRequested();
-    options.checkpointSeconds = part.checkpointSeconds();
-    if (options.checkpointSeconds > 0.0) options.checkpoint = part.checkpointWriter();
+    const PeriodicWrite periodic = periodicWrites(settings, part);
+    options.checkpointSeconds = periodic.seconds;
+    options.checkpoint = periodic.write;
     return options;
 }
 
@@ -78,7 +81,7 @@ int run(const ReferenceProgram& program, const ProgramOptions& invocation) {
     RenderReport report = sceneReport(program.name, settings, setup);
     const ReferenceResult result =
         renderReferenceParts(setup.prepared, setup.camera, settings, report.stats,
-                             referenceOptions(part, *intersectors));
+                             referenceOptions(settings, part, *intersectors));
     const RenderOutput& output = result.output;
     part.writeResults(output, result.records, result.interrupted);
     report.device = deviceDescription(settings);
