@@ -7,7 +7,6 @@
 
 #include "prepare/environment_map.h"
 #include "prepare/scene_lighting.h"
-#include "prepare/studio_environment.h"
 #include "scene/camera.h"
 #include "scene/gltf_loader.h"
 
@@ -32,12 +31,11 @@ void lightIfUnlit(Scene& scene, const RenderSettings& settings, const std::strin
     request.environmentGiven = !settings.environmentPath.empty() || settings.environmentColorSet;
     request.defaultLightAllowed = settings.defaultLight == DefaultLight::Auto;
     request.lightMatters = settings.integrator != Integrator::Normals;
-    const LightingDecision decision = decideSceneLighting(scene, request);
+    const LightingDecision decision = applyDefaultLighting(scene, request);
     if (settings.verbose)
         std::fprintf(stderr, "%s: lighting: %s\n", program.c_str(),
                      describeLightingMeasure(decision.measure).c_str());
     if (!decision.useStudio) return;
-    scene.environment = makeStudioEnvironment();
     std::fprintf(stderr,
                  "%s: %s: %s; lit by the default studio environment (--default-light off or "
                  "--env-color 0 0 0 keeps it dark)\n",

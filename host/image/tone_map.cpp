@@ -9,9 +9,9 @@ namespace vkpt {
 namespace {
 
 // PBR Neutral's constants, as its specification names them.
-constexpr float kF90 = 0.04f;             // Fresnel reflectance at normal incidence, IoR 1.5
+constexpr float kF90 = 0.04f;                    // Fresnel reflectance at normal incidence, IoR 1.5
 constexpr float kStartCompression = 0.8f - kF90; // Ks
-constexpr float kDesaturation = 0.15f;    // Kd
+constexpr float kDesaturation = 0.15f;           // Kd
 
 // A non-finite component is not a colour: written as 0 (black), as the PNG always has; the
 // float formats and the statistics are where NaNs get reported. Negative radiance is none.

@@ -168,6 +168,12 @@ LightingDecision decideSceneLighting(const Scene& scene, const LightingRequest& 
     return decision;
 }
 
+LightingDecision applyDefaultLighting(Scene& scene, const LightingRequest& request) {
+    const LightingDecision decision = decideSceneLighting(scene, request);
+    if (decision.useStudio) scene.environment = makeStudioEnvironment();
+    return decision;
+}
+
 std::string describeLightingReason(const SceneLightingMeasure& measure) {
     if (!(measure.emittedPower > 0.0)) return "no lights or emitters";
     char text[96];

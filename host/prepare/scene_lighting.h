@@ -51,6 +51,10 @@ struct LightingDecision {
 // The measure is taken in every case (for --verbose).
 LightingDecision decideSceneLighting(const Scene& scene, const LightingRequest& request);
 
+// decideSceneLighting, and when it says so, the studio set as the scene's environment: what
+// vkpt and vkpt-ref do to every scene they load (app/scene_setup.cpp).
+LightingDecision applyDefaultLighting(Scene& scene, const LightingRequest& request);
+
 // "no light of its own (emitters 3.1e-05 of the studio's power)" — for the log line.
 std::string describeLightingReason(const SceneLightingMeasure& measure);
 
