@@ -85,10 +85,6 @@ PeriodicWrite combinePeriodicWrites(PeriodicWrite checkpoint, PeriodicWrite prev
             }};
 }
 
-} // namespace vkpt
-
-namespace vkpt {
-
 PeriodicWrite periodicWrites(const RenderSettings& settings, RenderPart& part) {
     PeriodicWrite checkpoint;
     if (part.checkpointSeconds() > 0.0)

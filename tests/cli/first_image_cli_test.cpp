@@ -133,6 +133,26 @@ TEST_P(FirstImage, ASceneWithLightsGetsNoExtraLight) {
     EXPECT_EQ(bytesOf(path("a.pfm")), bytesOf(path("b.pfm")));
 }
 
+// The decision is part of the render's identity (through the environment the scene hash covers):
+// a part lit by the studio and one kept dark are not one render.
+TEST_P(FirstImage, PartsLitDifferentlyDoNotMerge) {
+    const auto part = [&](const std::string& task, const std::string& out,
+                          std::vector<std::string> extra) {
+        std::vector<std::string> a = {"-q", "--spp",  "4",  "--res", "8",
+                                      "8",  "--task", task, "-o",    path(out)};
+        a.insert(a.end(), extra.begin(), extra.end());
+        render(a, kSpheres);
+    };
+    part("0/2", "lit.exr", {});
+    part("1/2", "dark.exr", {"--default-light", "off"});
+    const Finished f =
+        runProcess({VKPT_MERGE, "-o", path("merged.exr"), path("lit.exr"), path("dark.exr")});
+    EXPECT_EQ(f.exitCode, 1);
+    EXPECT_EQ(linesContaining(f.stderrText, path("dark.exr") + ": another scene than"), 1)
+        << f.stderrText;
+    EXPECT_FALSE(std::filesystem::exists(path("merged.exr")));
+}
+
 // Each PNG byte is the sRGB encoding of the tone-mapped, exposed linear value of the PFM of the
 // same render; the PFM does not depend on the tone map.
 TEST_P(FirstImage, ToneMapsApplyAfterTheExposureToEightBitOutputOnly) {
