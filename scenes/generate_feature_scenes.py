@@ -433,6 +433,20 @@ def environment_room():
     s.save("environment.gltf")
 
 
+def metal_rough_spheres():
+    """As Khronos' MetalRoughSpheres: spheres from dielectric to metal (rows) and smooth to rough
+    (columns), with no emitter and no camera, so that vkpt frames the bounds and lights the
+    scene with its default studio (scenes/test/, not features/: it has no light of its own)."""
+    s = FeatureScene()
+    for row, metallic in enumerate([0.0, 1.0]):
+        for column, roughness in enumerate([0.05, 0.35, 0.7, 1.0]):
+            s.sphere(f"sphere metallic {metallic} roughness {roughness}",
+                     (-1.2 + 0.8 * column, 0.4 - 0.8 * row, 0.0), 0.35,
+                     s.material(f"metallic {metallic} roughness {roughness}", (0.9, 0.6, 0.3),
+                                metallic=metallic, roughness=roughness))
+    s.save("../metal-rough-spheres.gltf")
+
+
 def glass_room():
     """Glass in a room under a quad light: a smooth solid ball (ior 1.5), a rough one, a tinted
     thin-walled pane, and an absorbing block (a volume of ior 1.33)."""
@@ -509,6 +523,7 @@ def main():
     textured()
     punctual()
     environment_room()
+    metal_rough_spheres()
     normal_map()
     orthographic()
     glass_room()

@@ -9,6 +9,7 @@
 
 #include "app/convergence_options.h"
 #include "app/interrupt.h"
+#include "app/live_preview.h"
 #include "app/output_checks.h"
 #include "app/program_options.h"
 #include "app/render_part.h"
@@ -51,7 +52,8 @@ std::optional<ConvergenceReport> finalError(const ConvergenceSettings& convergen
     return ConvergenceReport{convergence, RenderStop::Budget, false, tracker.curve()};
 }
 
-ReferenceOptions referenceOptions(RenderPart& part, const IntersectorFactory& intersectors) {
+ReferenceOptions referenceOptions(const RenderSettings& settings, RenderPart& part,
+                                  const IntersectorFactory& intersectors) {
     ReferenceOptions options;
     options.intersectors = &intersectors;
     options.plan = part.plan();
@@ -59,8 +61,9 @@ ReferenceOptions referenceOptions(RenderPart& part, const IntersectorFactory& in
     options.aovs = part.needsAovs();
     options.resumeFeatures = part.resumeFeatures();
     options.interrupt = &stopRequested();
-    options.checkpointSeconds = part.checkpointSeconds();
-    if (options.checkpointSeconds > 0.0) options.checkpoint = part.checkpointWriter();
+    const PeriodicWrite periodic = periodicWrites(settings, part);
+    options.checkpointSeconds = periodic.seconds;
+    options.checkpoint = periodic.write;
     return options;
 }
 
@@ -84,7 +87,7 @@ int run(const ReferenceProgram& program, const ProgramOptions& invocation) {
     ScopedPhase renderPhase("render");
     const ReferenceResult result =
         renderReferenceParts(setup.prepared, setup.camera, settings, report.stats,
-                             referenceOptions(part, *intersectors));
+                             referenceOptions(settings, part, *intersectors));
     renderPhase.end();
     const RenderOutput& output = result.output;
     ScopedPhase writePhase("write");

@@ -22,6 +22,18 @@ Instancing parseInstancing(const std::string& text) {
     throw InputError("option --instancing: '" + text + "' is not one of auto, on, off");
 }
 
+DefaultLight parseDefaultLight(const std::string& text) {
+    if (text == "auto") return DefaultLight::Auto;
+    if (text == "off") return DefaultLight::Off;
+    throw InputError("option --default-light: '" + text + "' is not one of auto, off");
+}
+
+ToneMap parseToneMap(const std::string& text) {
+    if (text == "neutral") return ToneMap::PbrNeutral;
+    if (text == "clamp") return ToneMap::Clamp;
+    throw InputError("option --tonemap: '" + text + "' is not one of neutral, clamp");
+}
+
 LightSampling parseLightSampling(const std::string& text) {
     if (text == "light") return LightSampling::Light;
     if (text == "hemisphere") return LightSampling::Hemisphere;
@@ -44,6 +56,11 @@ void addImageOptions(CommandLine& cl, RenderSettings& s) {
     cl.add({"exposure", {}, "EV", "scale by 2^EV before 8-bit output (default 0)", [&s](auto v) {
                 s.exposure = parseFloat("exposure", v[0]);
             }});
+    cl.add({"tonemap",
+            {},
+            "NAME",
+            "8-bit output: neutral (Khronos PBR Neutral, the default) or clamp",
+            [&s](auto v) { s.toneMap = parseToneMap(v[0]); }});
     cl.add(
         {"camera", {}, "N", "render from the scene's camera N (default: the first)", [&s](auto v) {
              s.cameraIndex = int(parseUnsigned("camera", v[0]));
@@ -105,6 +122,11 @@ void addSceneOptions(CommandLine& cl, RenderSettings& s) {
                 }
                 s.environmentColorSet = true;
             }});
+    cl.add({"default-light",
+            {},
+            "MODE",
+            "auto (default): a scene without lights gets a studio environment; off: it stays dark",
+            [&s](auto v) { s.defaultLight = parseDefaultLight(v[0]); }});
     cl.add({"env-scale", {}, "X", "multiply the --env image by X (default 1)", [&s](auto v) {
                 s.environmentScale = parseFloat("env-scale", v[0]);
                 if (!(s.environmentScale >= 0.0f))
@@ -154,6 +176,15 @@ void addRunOptions(CommandLine& cl, RenderSettings& s) {
             }});
     cl.add({"stats-json", {}, "FILE", "write the render statistics as JSON", [&s](auto v) {
                 s.statsJsonPath = v[0];
+            }});
+    cl.add({"preview",
+            {},
+            "S",
+            "write the image so far to the output every S seconds (atomically)",
+            [&s](auto v) {
+                s.previewSeconds = double(parseFloat("preview", v[0]));
+                if (!(s.previewSeconds > 0.0))
+                    throw InputError("option --preview: S must be positive");
             }});
     cl.add({"quiet", {'q'}, "", "no progress bar", [&s](auto) { s.quiet = true; }});
 }

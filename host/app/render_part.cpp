@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "app/live_preview.h"
 #include "app/output_checks.h"
 #include "common/errors.h"
 #include "image/image_file.h"
@@ -130,7 +131,7 @@ void RenderPart::writeResults(const RenderOutput& output, const std::vector<Pixe
         if (isExr(path))
             writeStateFile(state, path);
         else
-            writeImage(output.image, path, settings_.exposure);
+            writeDisplayImage(output.image, settings_);
         writeSampleCountHeatMap(output.sampleCounts, output.image.width, output.image.height,
                                 heatMapPathFor(path));
         if (!isExr(path) && (stopped || farm_.checkpointSeconds > 0.0))

@@ -7,6 +7,7 @@
 
 #include "common/phase_log.h"
 #include "prepare/environment_map.h"
+#include "prepare/scene_lighting.h"
 #include "scene/camera.h"
 #include "scene/gltf_loader.h"
 
@@ -22,6 +23,25 @@ SceneEnvironment loadEnvironment(const RenderSettings& settings) {
         environment.radiance = glm::vec3(settings.environmentColor[0], settings.environmentColor[1],
                                          settings.environmentColor[2]);
     return environment;
+}
+
+// The studio for a scene that brings no light (scene_lighting.h), said in one line with the
+// options that keep the scene dark.
+void lightIfUnlit(Scene& scene, const RenderSettings& settings, const std::string& program) {
+    LightingRequest request;
+    request.environmentGiven = !settings.environmentPath.empty() || settings.environmentColorSet;
+    request.defaultLightAllowed = settings.defaultLight == DefaultLight::Auto;
+    request.lightMatters = settings.integrator != Integrator::Normals;
+    const LightingDecision decision = applyDefaultLighting(scene, request);
+    if (settings.verbose)
+        std::fprintf(stderr, "%s: lighting: %s\n", program.c_str(),
+                     describeLightingMeasure(decision.measure).c_str());
+    if (!decision.useStudio) return;
+    std::fprintf(stderr,
+                 "%s: %s: %s; lit by the default studio environment (--default-light off or "
+                 "--env-color 0 0 0 keeps it dark)\n",
+                 program.c_str(), settings.scenePath.c_str(),
+                 describeLightingReason(decision.measure).c_str());
 }
 
 // " (16438 stored: 2 meshes placed by 12544 instances)" for a two-level scene.
@@ -44,6 +64,7 @@ SceneSetup setUpScene(const RenderSettings& settings, const std::string& program
     loadOptions.instancing = settings.instancing;
     Scene scene = loadGltfScene(settings.scenePath, loadOptions);
     scene.environment = loadEnvironment(settings);
+    lightIfUnlit(scene, settings, program);
     loadPhase.end();
     setup.loadSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -69,8 +90,10 @@ SceneSetup setUpScene(const RenderSettings& settings, const std::string& program
         std::fprintf(stderr, "%s: features: %s%s\n", program.c_str(),
                      describeFeatures(setup.prepared.usedFeatures).c_str(),
                      settings.general ? " (built for all features: --general)" : "");
-    if (setup.prepared.emitters.empty())
-        std::fprintf(stderr, "%s: %s: the scene has no emitters; the image will be black\n",
+    if (setup.prepared.emitters.empty() && settings.integrator != Integrator::Normals)
+        std::fprintf(stderr,
+                     "%s: %s: the scene has no emitters; the image will be black (light it with "
+                     "--env FILE or --env-color R G B)\n",
                      program.c_str(), settings.scenePath.c_str());
     return setup;
 }

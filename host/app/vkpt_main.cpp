@@ -10,6 +10,7 @@
 #include "app/command_line.h"
 #include "app/convergence_options.h"
 #include "app/interrupt.h"
+#include "app/live_preview.h"
 #include "app/output_checks.h"
 #include "app/program_options.h"
 #include "app/render_part.h"
@@ -117,8 +118,9 @@ WavefrontOptions wavefrontOptions(const Invocation& invocation, ConvergenceTrack
     options.resume = part.resumeRecords();
     options.aovs = part.needsAovs();
     options.resumeFeatures = part.resumeFeatures();
-    options.checkpointSeconds = part.checkpointSeconds();
-    if (options.checkpointSeconds > 0.0) options.checkpoint = part.checkpointWriter();
+    const PeriodicWrite periodic = periodicWrites(invocation.settings, part);
+    options.checkpointSeconds = periodic.seconds;
+    options.checkpoint = periodic.write;
     const ConvergenceSettings& convergence = invocation.convergence;
     options.timeLimitSeconds = convergence.timeLimitSeconds;
     if (!convergence.any()) return options;

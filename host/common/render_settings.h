@@ -14,6 +14,12 @@ enum class PathFilter : std::uint32_t { All = 0, DirectOnly = 1, IndirectOnly = 
 // BVH (docs/scene-model.md, "Instancing"): by the measured rule, all meshes, or none (every
 // placement flattened into world space).
 enum class Instancing : std::uint32_t { Auto = 0, On = 1, Off = 2 };
+// --default-light: whether a scene that brings no light gets the built-in studio environment
+// (docs/scene-model.md, "Default lighting").
+enum class DefaultLight : std::uint32_t { Auto = 0, Off = 1 };
+// --tonemap: how 8-bit output maps linear radiance (after the exposure) into [0, 1]
+// (image/tone_map.h): a plain clamp or the Khronos PBR Neutral operator (the default).
+enum class ToneMap : std::uint32_t { Clamp = 0, PbrNeutral = 1 };
 
 struct AdaptiveSettings {
     bool enabled = false;
@@ -37,7 +43,8 @@ struct RenderSettings {
     std::uint32_t lightSamples = 1;
     PathFilter pathFilter = PathFilter::All;
     AdaptiveSettings adaptive;
-    float exposure = 0.0f; // EV applied to 8-bit output only
+    float exposure = 0.0f;                 // EV applied to 8-bit output only
+    ToneMap toneMap = ToneMap::PbrNeutral; // 8-bit output only, after the exposure
     // --clamp X: a sample's largest component is limited to X (biased; 0 = off, the default).
     float clamp = 0.0f;
     std::optional<int> cameraIndex;
@@ -47,11 +54,14 @@ struct RenderSettings {
     bool environmentColorSet = false;
     float environmentColor[3] = {0.0f, 0.0f, 0.0f};
     float environmentScale = 1.0f;
+    DefaultLight defaultLight = DefaultLight::Auto;
     bool general = false; // --general: the all-features pipelines and buffers
     Instancing instancing = Instancing::Auto;
     bool verbose = false; // --verbose: the scene's feature set and more on stderr
     std::string statsJsonPath;
     bool quiet = false; // no progress bar
+    // --preview S: the image so far written to the output path every S seconds (0: never).
+    double previewSeconds = 0.0;
 };
 
 } // namespace vkpt

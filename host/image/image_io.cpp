@@ -8,6 +8,7 @@
 
 #include "common/errors.h"
 #include "image/image_file.h"
+#include "image/tone_map.h"
 
 namespace vkpt {
 
@@ -18,12 +19,15 @@ void checkPixelCount(const Image& image) {
                 "image pixel count != width * height");
 }
 
-// A non-finite value is not a colour. Writing it as 0 (black) keeps the PNG a faithful picture
-// of everything else; the float formats and the statistics are where NaNs get reported.
-std::uint8_t srgbByte(float linear, double scale) {
-    if (!std::isfinite(linear)) return 0;
-    const float srgb = linearToSrgb(float(double(linear) * scale));
-    return std::uint8_t(std::lround(double(srgb) * 255.0));
+// Exposure first (in double: a bright pixel times 2^EV can leave the float range), then the tone
+// map, then the sRGB encoding; a non-finite component is written as 0 (applyToneMap).
+glm::vec3 displayColour(const glm::vec3& linear, double scale, ToneMap toneMap) {
+    const glm::dvec3 exposed = glm::dvec3(linear) * scale;
+    return applyToneMap(toneMap, glm::vec3(exposed));
+}
+
+std::uint8_t srgbByte(float display) {
+    return std::uint8_t(std::lround(double(linearToSrgb(display)) * 255.0));
 }
 
 // RGBE stores three 8-bit mantissas and a shared exponent byte (exponent + 128), so it has no
@@ -65,14 +69,16 @@ float linearToSrgb(float linear) {
     return float(encoded);
 }
 
-void writePngSrgb(const Image& image, const std::string& path, float exposure) {
+void writePngSrgb(const Image& image, const std::string& path, float exposure, ToneMap toneMap) {
     checkPixelCount(image);
     const double scale = std::exp2(double(exposure));
     std::vector<std::uint8_t> rgb;
     rgb.reserve(image.pixels.size() * 3);
-    for (const glm::vec3& pixel : image.pixels)
+    for (const glm::vec3& pixel : image.pixels) {
+        const glm::vec3 display = displayColour(pixel, scale, toneMap);
         for (int c = 0; c < 3; ++c)
-            rgb.push_back(srgbByte(pixel[c], scale));
+            rgb.push_back(srgbByte(display[c]));
+    }
     detail::writeFileBytes(path, detail::encodePngRgb8(image.width, image.height, rgb));
 }
 
@@ -81,10 +87,14 @@ void writeHdr(const Image& image, const std::string& path) {
     detail::writeFileBytes(path, encodeHdr(image));
 }
 
-void writeImage(const Image& image, const std::string& path, float exposure) {
-    const std::string extension = detail::lowerCaseExtension(path);
+void writeImage(const Image& image, const std::string& path, float exposure, ToneMap toneMap) {
+    writeImageAs(image, path, detail::lowerCaseExtension(path), exposure, toneMap);
+}
+
+void writeImageAs(const Image& image, const std::string& path, const std::string& extension,
+                  float exposure, ToneMap toneMap) {
     if (extension == ".png")
-        writePngSrgb(image, path, exposure);
+        writePngSrgb(image, path, exposure, toneMap);
     else if (extension == ".pfm")
         writePfm(image, path);
     else if (extension == ".hdr")

@@ -6,20 +6,29 @@
 #include <span>
 #include <string>
 
+#include "common/render_settings.h"
 #include "image/image.h"
 
 namespace vkpt {
 
-// Writes by extension; exposure (EV) scales by 2^EV before the 8-bit sRGB encoding of .png
-// and is ignored for float formats. Throws InputError for an unknown extension or a write
-// failure, naming the path. Values a format cannot hold are never left to chance: PFM keeps
-// NaN and infinity exactly; PNG writes a non-finite component as 0 and clamps the rest to
-// [0, 1]; HDR (RGBE) writes non-finite and negative components as 0.
-void writeImage(const Image& image, const std::string& path, float exposure = 0.0f);
+// Writes by extension; for .png, exposure (EV) scales by 2^EV, then the tone map brings the
+// colour into [0, 1] (tone_map.h; the programs' default, PBR Neutral, here too), then the 8-bit
+// sRGB encoding; float formats ignore both and stay linear. Throws InputError for an unknown
+// extension or a write failure, naming the path. Values a format cannot hold are never left to
+// chance: PFM keeps NaN and infinity exactly; PNG writes a non-finite or negative component as
+// 0; HDR (RGBE) writes non-finite and negative components as 0.
+void writeImage(const Image& image, const std::string& path, float exposure = 0.0f,
+                ToneMap toneMap = ToneMap::PbrNeutral);
+
+// The same in the format of `extension` (".png", ".pfm", ".hdr"), whatever `path` ends in: for a
+// temporary file that is renamed to the real name once written (atomic_write.h).
+void writeImageAs(const Image& image, const std::string& path, const std::string& extension,
+                  float exposure = 0.0f, ToneMap toneMap = ToneMap::PbrNeutral);
 
 void writePfm(const Image& image, const std::string& path);
 void writeHdr(const Image& image, const std::string& path);
-void writePngSrgb(const Image& image, const std::string& path, float exposure = 0.0f);
+void writePngSrgb(const Image& image, const std::string& path, float exposure = 0.0f,
+                  ToneMap toneMap = ToneMap::PbrNeutral);
 
 // PFM ("PF" RGB or "Pf" greyscale, expanded to RGB; little- or big-endian by the scale's sign;
 // bottom row first in the file, top row first in the Image). Throws InputError naming the path

@@ -18,15 +18,6 @@ namespace vkpt {
 
 namespace {
 
-// The radius of the scene's bounding sphere: directional and environment light cover a disk
-// of it (their power estimates). 1 for an empty scene.
-double sceneRadius(const Scene& scene) {
-    Bounds bounds = computeBounds(scene);
-    if (bounds.min.x > bounds.max.x) return 1.0;
-    double radius = 0.5 * glm::length(glm::dvec3(bounds.max) - glm::dvec3(bounds.min));
-    return radius > 0.0 ? radius : 1.0;
-}
-
 void prepareEnvironment(const Scene& scene, double radius, PreparedScene& prepared, double& power) {
     prepared.environment = gpu::EnvironmentParams{};
     prepared.environment.emitterIndex = NO_EMITTER;
@@ -76,6 +67,13 @@ void prepareSingleLevel(const Scene& scene, const PrepareOptions& options, bool 
 
 } // namespace
 
+double sceneBoundingRadius(const Scene& scene) {
+    Bounds bounds = computeBounds(scene);
+    if (bounds.min.x > bounds.max.x) return 1.0;
+    double radius = 0.5 * glm::length(glm::dvec3(bounds.max) - glm::dvec3(bounds.min));
+    return radius > 0.0 ? radius : 1.0;
+}
+
 PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options) {
     VKPT_ASSERT(scene.positions.size() == 3 * scene.triangleCount(), "three vertices a triangle");
     PreparedScene prepared;
@@ -100,7 +98,7 @@ PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options) {
         prepared.texels = std::move(textures.texels);
     }
 
-    const double radius = sceneRadius(scene);
+    const double radius = sceneBoundingRadius(scene);
     double environmentPower = 0.0;
     prepareEnvironment(scene, radius, prepared, environmentPower);
     EmitterList emitters = buildEmitters(prepared.triangles, prepared.materials,

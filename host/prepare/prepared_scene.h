@@ -62,6 +62,10 @@ struct PrepareOptions {
 
 PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options = {});
 
+// The radius of the scene's bounding sphere: directional and environment light cover a disk
+// of it (their power estimates). 1 for an empty scene.
+double sceneBoundingRadius(const Scene& scene);
+
 std::vector<gpu::Material> makeGpuMaterials(const std::vector<SceneMaterial>& materials);
 
 // Triangles and shading normals in the order of tree.primitiveOrder.

@@ -3,6 +3,7 @@
 // and the errors a user sees for a bad path or file.
 #include "../support/test_directory.h"
 #include "image/image_io.h"
+#include "image/tone_map.h"
 
 #include <algorithm>
 #include <bit>
@@ -208,7 +209,8 @@ TEST_F(ImageIo, MissingPfmNamesThePath) {
 TEST_F(ImageIo, PngEncodesSrgbOfKnownValues) {
     // 0.0031308 is where the linear segment meets the power curve: 12.92 × 0.0031308 = 0.04045,
     // i.e. 10.3 of 255. 0.5 encodes to 0.7354 (187.5 → 188). 2 clamps to white.
-    writeImage(greyRow({0.0f, 0.0031308f, 0.5f, 1.0f, 2.0f}), path("srgb.png"));
+    writeImage(greyRow({0.0f, 0.0031308f, 0.5f, 1.0f, 2.0f}), path("srgb.png"), 0.0f,
+               ToneMap::Clamp);
     int width = 0, height = 0;
     const std::vector<std::uint8_t> rgb = decodePng(path("srgb.png"), width, height);
     ASSERT_EQ(width, 5);
@@ -222,7 +224,8 @@ TEST_F(ImageIo, PngEncodesSrgbOfKnownValues) {
 TEST_F(ImageIo, PngAppliesExposureAndWritesNonFiniteAsBlack) {
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const float inf = std::numeric_limits<float>::infinity();
-    writeImage(greyRow({0.25f, 0.125f, nan, inf, -1.0f}), path("exposure.png"), 1.0f);
+    writeImage(greyRow({0.25f, 0.125f, nan, inf, -1.0f}), path("exposure.png"), 1.0f,
+               ToneMap::Clamp);
     int width = 0, height = 0;
     const std::vector<std::uint8_t> rgb = decodePng(path("exposure.png"), width, height);
     ASSERT_EQ(rgb.size(), 15u);
@@ -233,11 +236,32 @@ TEST_F(ImageIo, PngAppliesExposureAndWritesNonFiniteAsBlack) {
     EXPECT_EQ(rgb[12], 0); // negative clamps to black
 }
 
+// The default tone map, PBR Neutral, after the exposure: 0.5 × 2 = 1 lies above its start of
+// compression (0.76 after the 0.04 toe) and is compressed, 0.25 × 2 = 0.5 passes less the toe.
+TEST_F(ImageIo, PngAppliesExposureBeforeTheDefaultToneMap) {
+    writeImage(greyRow({0.5f, 0.25f, 0.0f}), path("neutral.png"), 1.0f);
+    int width = 0, height = 0;
+    const std::vector<std::uint8_t> rgb = decodePng(path("neutral.png"), width, height);
+    ASSERT_EQ(rgb.size(), 9u);
+    EXPECT_EQ(rgb[0], std::lround(linearToSrgb(pbrNeutralToneMap(glm::vec3(1.0f)).x) * 255.0f));
+    EXPECT_LT(rgb[0], 255);
+    EXPECT_EQ(rgb[3], std::lround(linearToSrgb(0.5f - 0.04f) * 255.0f));
+    EXPECT_EQ(rgb[6], 0);
+}
+
+TEST_F(ImageIo, FloatFormatsIgnoreTheToneMap) {
+    const Image image = greyRow({0.5f, 3.0f, 100.0f});
+    writeImage(image, path("linear.pfm"), 2.0f, ToneMap::PbrNeutral);
+    const Image back = readPfm(path("linear.pfm"));
+    for (std::size_t i = 0; i < image.pixels.size(); ++i)
+        EXPECT_EQ(back.pixels[i], image.pixels[i]) << "pixel " << i;
+}
+
 TEST_F(ImageIo, PngKeepsRowsTopFirstAndChannelsInOrder) {
     Image image(1, 2);
     image.at(0, 0) = {1, 0, 0};
     image.at(0, 1) = {0, 0, 1};
-    writeImage(image, path("order.PNG")); // extensions are case-insensitive
+    writeImage(image, path("order.PNG"), 0.0f, ToneMap::Clamp); // extensions: any case
     int width = 0, height = 0;
     const std::vector<std::uint8_t> rgb = decodePng(path("order.PNG"), width, height);
     EXPECT_EQ(rgb, (std::vector<std::uint8_t>{255, 0, 0, 0, 0, 255}));
