@@ -89,11 +89,21 @@ room_scene="$out/room-$room.gltf"
 for scene in scenes/cornell-box.gltf "$room_scene"; do
     [ -f "$scene" ] || continue
     name=$(basename "$scene" .gltf)
-    say "vkpt $name ${width}x${height}, $spp spp, per-kernel times:"
+    say "vkpt $name ${width}x${height}, $spp spp, per-kernel times and the phases of the process:"
     "$bin/vkpt" "${device_args[@]}" --spp "$spp" --res "$width" "$height" --stats \
         --stats-json "$out/vkpt-$name.json" -o "$out/vkpt-$name.pfm" "$scene" 2>&1 |
-        grep -E 'Mrays|rays:|samples:|device:|kernel|pipelines' | tee -a "$summary"
+        grep -E 'Mrays|rays:|samples:|device:|kernel|pipeline|time:' | tee -a "$summary"
 done
+
+# The time to an image of a preview (docs/benchmarks.md, "Time to an image"): one sample of the
+# 1M-triangle room at depth 2, written as EXR with its AOVs; the summary's last line is the
+# process's phases (load, BVH, device set-up, pipelines, upload, render, write).
+if [ -f "$room_scene" ]; then
+    say "vkpt $(basename "$room_scene" .gltf) preview ${width}x${height}, 1 spp, depth 2, EXR:"
+    "$bin/vkpt" "${device_args[@]}" --spp 1 --max-depth 2 --res "$width" "$height" \
+        --stats-json "$out/vkpt-preview.json" -o "$out/vkpt-preview.exr" "$room_scene" 2>&1 |
+        grep -E 'Mrays|device:|pipelines|time:' | tee -a "$summary"
+fi
 
 # Instancing (docs/scene-model.md, "Instancing"): the field of meshes placed many times,
 # flattened against instanced at 8.5 million placed triangles, and instanced at 103 million.
@@ -109,7 +119,7 @@ for size in "$field" "$big_field"; do
         "$bin/vkpt" "${device_args[@]}" --instancing "$mode" --spp "$spp" \
             --res "$width" "$height" --stats --stats-json "$out/vkpt-field-$grid-$mode.json" \
             -o "$out/vkpt-field-$grid-$mode.pfm" "$field_scene" 2>&1 |
-            grep -E 'triangles|Mrays|device:|kernel|pipelines' | tee -a "$summary"
+            grep -E 'triangles|Mrays|device:|kernel|pipeline|time:' | tee -a "$summary"
     done
 done
 
