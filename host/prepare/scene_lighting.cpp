@@ -137,15 +137,6 @@ double emittedPowerOfSpheres(const Scene& scene) {
     return power;
 }
 
-// The studio's mean luminance, computed once from its map as the renderers will see it.
-double studioMeanLuminance() {
-    static const double mean = [] {
-        const EnvironmentDistribution distribution =
-            buildEnvironmentDistribution(makeStudioEnvironment(), 1.0);
-        return luminanceOf(glm::vec3(distribution.averageRadiance));
-    }();
-    return mean;
-}
 
 } // namespace
 
@@ -155,7 +146,7 @@ SceneLightingMeasure measureSceneLighting(const Scene& scene) {
         if (luminanceOf(light.intensity) > 0.0) ++measure.punctualLights;
     measure.emittedPower = emittedPowerOfTriangles(scene) + emittedPowerOfSpheres(scene);
     const double radius = sceneBoundingRadius(scene);
-    measure.studioPower = 4.0 * kPi * kPi * radius * radius * studioMeanLuminance();
+    measure.studioPower = 4.0 * kPi * kPi * radius * radius * kStudioMeanLuminance;
     return measure;
 }
 

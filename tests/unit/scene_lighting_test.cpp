@@ -130,6 +130,11 @@ TEST(StudioEnvironment, IsGreyAndBrightestAtItsKeyLight) {
     EXPECT_GT(studioRadiance({1, 0.01f, 0}), studioRadiance({0, -1, 0})); // sky over floor
 }
 
+TEST(StudioEnvironment, ItsMeanLuminanceConstantIsTheMaps) {
+    const EnvironmentDistribution map = buildEnvironmentDistribution(makeStudioEnvironment(), 1.0);
+    EXPECT_NEAR(kStudioMeanLuminance, map.averageRadiance.x, 2e-7);
+}
+
 // The map's mean radiance (environment_map.h, exact texel solid angles) against a fine
 // midpoint quadrature of the analytic function over the sphere.
 TEST(StudioEnvironment, TheMapKeepsTheFunctionsMeanRadiance) {
