@@ -137,7 +137,6 @@ double emittedPowerOfSpheres(const Scene& scene) {
     return power;
 }
 
-
 } // namespace
 
 SceneLightingMeasure measureSceneLighting(const Scene& scene) {
