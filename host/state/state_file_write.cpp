@@ -117,6 +117,9 @@ Imf::Header makeHeader(const RenderState& state) {
     Imf::Header header(box(fullFrame(state.identity.width, state.identity.height)),
                        box(state.window));
     header.compression() = Imf::ZIP_COMPRESSION;
+    // zlib's fastest level: the 1024² preview's state writes in 0.58 s instead of 0.66 s at
+    // OpenEXR's default (4), and takes 21.2 MB instead of 20.4 MB (stored: 96 MB).
+    header.zipCompressionLevel() = 1;
     const auto text = [&](const char* name, const std::string& value) {
         header.insert(name, Imf::StringAttribute(value));
     };
