@@ -13,9 +13,8 @@
 #include <regex>
 #include <thread>
 
-#include <stb_image.h>
-
 #include "../support/child_process.h"
+#include "../support/decode_png.h"
 #include "../support/test_directory.h"
 #include "image/image_compare.h"
 #include "image/image_io.h"
@@ -48,19 +47,6 @@ double meanOf(const Image& image) {
     for (const glm::vec3& p : image.pixels)
         sum += double(gpu::luminance(p));
     return sum / double(image.pixels.size());
-}
-
-struct StbFree {
-    void operator()(stbi_uc* p) const { stbi_image_free(p); }
-};
-
-// The PNG's RGB bytes, empty when it does not decode.
-std::vector<std::uint8_t> decodePng(const std::string& path, int& width, int& height) {
-    int channels = 0;
-    std::unique_ptr<stbi_uc, StbFree> pixels(
-        stbi_load(path.c_str(), &width, &height, &channels, 3));
-    if (!pixels) return {};
-    return {pixels.get(), pixels.get() + std::size_t(width) * std::size_t(height) * 3};
 }
 
 std::vector<char> bytesOf(const std::string& path) {

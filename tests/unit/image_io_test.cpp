@@ -1,6 +1,7 @@
 // image_io_test.cpp — image files as other tools read them: PFM bytes and byte orders, PNG
 // sRGB values decoded back with stb_image, Radiance HDR within RGBE precision, the heat map,
 // and the errors a user sees for a bad path or file.
+#include "../support/decode_png.h"
 #include "../support/test_directory.h"
 #include "image/image_io.h"
 #include "image/tone_map.h"
@@ -18,7 +19,6 @@
 #include <vector>
 
 #include <gtest/gtest.h>
-#include <stb_image.h>
 #include <unistd.h>
 
 #include "common/errors.h"
@@ -27,6 +27,11 @@ namespace vkpt {
 namespace {
 
 namespace fs = std::filesystem;
+using test::decodePng;
+
+struct StbFree {
+    void operator()(void* pixels) const { stbi_image_free(pixels); }
+};
 
 class ImageIo : public test::TestDirectory {
 protected:
@@ -69,19 +74,6 @@ std::string errorOf(const std::function<void()>& action) {
         return error.what();
     }
     return "(no InputError)";
-}
-
-struct StbFree {
-    void operator()(void* pixels) const { stbi_image_free(pixels); }
-};
-
-// 8-bit RGB as stb_image decodes the file.
-std::vector<std::uint8_t> decodePng(const std::string& path, int& width, int& height) {
-    int channels = 0;
-    std::unique_ptr<stbi_uc, StbFree> pixels(
-        stbi_load(path.c_str(), &width, &height, &channels, 3));
-    if (!pixels) return {};
-    return {pixels.get(), pixels.get() + std::size_t(width) * std::size_t(height) * 3};
 }
 
 Image greyRow(const std::vector<float>& values) {
