@@ -23,6 +23,7 @@
 
 #include "../support/instancing.h"
 #include "../support/render_checks.h"
+#include "../support/scratch_directory.h"
 #include "feature_scenes.h"
 #include "instanced_scene.h"
 #include "wavefront_test_support.h"
@@ -96,7 +97,7 @@ ScenePair wholeSceneFile(const std::string& relative) {
 
 // The generated scene as the loader reads it: flattened, and with every mesh kept once.
 ScenePair generatedFile() {
-    const std::string path = (std::filesystem::current_path() / "instanced_scene.gltf").string();
+    const std::string path = scratchPath("instanced_scene.gltf");
     InstancedSceneSpec spec;
     spec.columns = spec.rows = 3;
     writeInstancedScene(spec, path);
@@ -198,7 +199,7 @@ INSTANTIATE_TEST_SUITE_P(Instancing, InstancedScenes, ::testing::ValuesIn(instan
 class HundredMillionTriangles : public GpuTest {};
 
 TEST_F(HundredMillionTriangles, RenderInstancedByDefault) {
-    const std::string path = (std::filesystem::current_path() / "hundred_million.gltf").string();
+    const std::string path = scratchPath("hundred_million.gltf");
     InstancedSceneSpec spec;
     spec.columns = spec.rows = 112;
     spec.rings = 64;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "../support/child_process.h"
+#include "../support/scratch_directory.h"
 #include "image/image_io.h"
 
 namespace vkpt {
@@ -17,7 +18,7 @@ using test::readUntil;
 using test::spawnWithStderrPipe;
 
 TEST(VkptInterrupt, CtrlCFinishesThePassWritesTheImageAndExits130) {
-    const std::string output = (std::filesystem::current_path() / "interrupted.pfm").string();
+    const std::string output = test::scratchPath("interrupted.pfm");
     std::filesystem::remove(output);
     // A budget no test waits for: only the interrupt ends this render.
     Child child = spawnWithStderrPipe({VKPT_EXECUTABLE, "--spp", "1000000", "--res", "8", "8", "-o",

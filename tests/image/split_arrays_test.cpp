@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "../support/room_scene.h"
+#include "../support/scratch_directory.h"
 #include "feature_scenes.h"
 #include "lib/wavefront.h"
 #include "render/scene_arrays.h"
@@ -75,8 +76,7 @@ std::uint32_t buffersOf(const WavefrontResult& result, const std::string& name) 
 // vkpt would: its texture coordinates (24 bytes a triangle) are half as large as its
 // triangles, so one limit splits both the texel arrays and this storage array.
 LoadedTestScene texturedRoom() {
-    const std::string path =
-        (std::filesystem::current_path() / "split_textured_room.gltf").string();
+    const std::string path = scratchPath("split_textured_room.gltf");
     writeRoomSceneGltf(makeRoomScene(2000, true), path);
     LoadOptions options;
     options.warnUnsupportedExtensions = false;

@@ -17,6 +17,7 @@
 #include "prepare/prepared_scene.h"
 #include "reference_render.h"
 #include "scene/gltf_loader.h"
+#include "scratch_directory.h"
 
 namespace vkpt {
 namespace {
@@ -24,11 +25,9 @@ namespace {
 using test::GeometryCoding;
 using test::ImageCoding;
 
-// Named by process: ctest runs the cases of this file as parallel processes.
+// In the process's own scratch folder: ctest runs the cases of this file as parallel processes.
 std::string writeScene(const std::string& name, GeometryCoding geometry, ImageCoding image) {
-    const std::string path = (std::filesystem::current_path() /
-                              ("compressed_" + std::to_string(::getpid()) + "_" + name))
-                                 .string();
+    const std::string path = test::scratchPath("compressed_" + name);
     test::writeTestScene(path, geometry, image);
     return path;
 }

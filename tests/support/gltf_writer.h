@@ -15,6 +15,8 @@
 #include <glm/glm.hpp>
 #include <tiny_gltf.h>
 
+#include "scratch_directory.h"
+
 namespace vkpt::test {
 
 // A mesh of one primitive: positions, optional vertex normals and texture coordinates,
@@ -295,9 +297,9 @@ inline void writeQuantisedCopy(const std::string& source, const std::string& tar
     GltfWriter::writeModel(model, target);
 }
 
-// A file name in the working directory (the test's build directory under ctest).
+// A file name in the test process's scratch directory.
 inline std::string testFilePath(const std::string& name) {
-    return (std::filesystem::current_path() / ("extremes_" + name)).string();
+    return scratchPath("extremes_" + name);
 }
 
 } // namespace vkpt::test
