@@ -14,8 +14,8 @@ namespace vkpt::test {
 
 inline const std::filesystem::path& scratchDirectory() {
     struct Scratch {
-        std::filesystem::path path = std::filesystem::temp_directory_path() /
-                                     ("vkpt-test-" + std::to_string(::getpid()));
+        std::filesystem::path path =
+            std::filesystem::temp_directory_path() / ("vkpt-test-" + std::to_string(::getpid()));
         Scratch() {
             std::filesystem::remove_all(path);
             std::filesystem::create_directories(path);
