@@ -6,6 +6,7 @@
 #include <chrono>
 #include <memory>
 
+#include "app/output_checks.h"
 #include "common/errors.h"
 #include "image/image_file.h"
 #include "image/image_io.h"
@@ -16,10 +17,6 @@ namespace vkpt {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-bool isExr(const std::string& path) {
-    return detail::lowerCaseExtension(path) == ".exr";
-}
 
 // The image writer's message names the temporary file; writeAtomically names the real one, so
 // only the reason is passed on.
@@ -60,7 +57,7 @@ void writeDisplayImage(const Image& image, const RenderSettings& settings) {
 
 RecordsWriter previewWriter(const RenderSettings& settings, const PixelRect& crop,
                             RecordsWriter stateWriter) {
-    if (isExr(settings.outputPath)) return stateWriter;
+    if (outputHoldsState(settings.outputPath)) return stateWriter;
     return [&settings, crop](const std::vector<PixelRecord>& records,
                              const std::vector<FeatureRecord>&) {
         RenderState state;

@@ -33,8 +33,12 @@ void checkWritable(const std::string& path) {
 
 } // namespace
 
+bool outputHoldsState(const std::string& outputPath) {
+    return detail::lowerCaseExtension(outputPath) == ".exr";
+}
+
 std::string statePathFor(const std::string& outputPath) {
-    if (detail::lowerCaseExtension(outputPath) == ".exr") return outputPath;
+    if (outputHoldsState(outputPath)) return outputPath;
     const std::filesystem::path output(outputPath);
     return (output.parent_path() / (output.stem().string() + "_state.exr")).string();
 }

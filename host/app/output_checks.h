@@ -7,6 +7,10 @@
 
 namespace vkpt {
 
+// Whether an output of this name is the render's whole state (.exr: the image, its layers and
+// the moments) rather than an image alone.
+bool outputHoldsState(const std::string& outputPath);
+
 // The state file beside an image: the image itself when it is .exr, else
 // "dir/name.png" → "dir/name_state.exr".
 std::string statePathFor(const std::string& outputPath);

@@ -18,10 +18,6 @@ namespace vkpt {
 
 namespace {
 
-bool isExr(const std::string& path) {
-    return detail::lowerCaseExtension(path) == ".exr";
-}
-
 // The samples the records hold, as the ranges of their region: uniform sampling takes the same
 // samples in every pixel, [begin, begin + taken); adaptive sampling the prefix [0, B) that the
 // pixels still going have reached (converged ones stopped within it).
@@ -82,7 +78,7 @@ void RenderPart::checkResumable(const RenderState& resumed) {
 }
 
 bool RenderPart::needsAovs() const {
-    return isExr(settings_.outputPath) || farm_.checkpointSeconds > 0.0 ||
+    return outputHoldsState(settings_.outputPath) || farm_.checkpointSeconds > 0.0 ||
            resumeFeatures() != nullptr;
 }
 
@@ -128,13 +124,13 @@ void RenderPart::writeResults(const RenderOutput& output, const std::vector<Pixe
     const std::string& path = settings_.outputPath;
     const RenderState state = stateOf(records, features);
     try {
-        if (isExr(path))
+        if (outputHoldsState(path))
             writeStateFile(state, path);
         else
             writeDisplayImage(output.image, settings_);
         writeSampleCountHeatMap(output.sampleCounts, output.image.width, output.image.height,
                                 heatMapPathFor(path));
-        if (!isExr(path) && (stopped || farm_.checkpointSeconds > 0.0))
+        if (!outputHoldsState(path) && (stopped || farm_.checkpointSeconds > 0.0))
             writeState(state, statePathFor(path), "state");
     } catch (const InputError& error) {
         const std::string rescue = rescuePathFor(statePathFor(path));

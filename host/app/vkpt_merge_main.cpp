@@ -62,7 +62,7 @@ std::vector<StatePart> readParts(const std::vector<std::string>& paths) {
 
 void writeMerged(const RenderState& merged, const std::string& path) {
     const RenderOutput output = renderOutputOf(merged);
-    if (detail::lowerCaseExtension(path) == ".exr") {
+    if (outputHoldsState(path)) {
         writeStateFile(merged, path);
     } else {
         writeImage(output.image, path);
