@@ -3,18 +3,24 @@
 #include "bvh/bvh_wide.h"
 
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstring>
 #include <span>
+#include <utility>
 
 #include "common/errors.h"
+#include "common/worker_threads.h"
 
 namespace vkpt {
 
 namespace {
 
 using Kind = WideDraftChild::Kind;
+
+// Below this many wide nodes one thread lays them out faster than it can start others.
+constexpr std::size_t kParallelMinimum = 4096;
 
 // Levels below each binary node (0 for a leaf); children follow their parents in the array,
 // so one backward pass sees every child before its parent.
@@ -73,15 +79,19 @@ ChildList openChildren(const BvhTree& tree, std::uint32_t node, CollapseOrder or
 }
 
 // The direction of octant s: component k is −1 where bit k of s is set.
-glm::vec3 octantDirection(std::uint32_t s) {
+constexpr glm::vec3 octantDirection(std::uint32_t s) {
     return {(s & 1u) ? -1.0f : 1.0f, (s & 2u) ? -1.0f : 1.0f, (s & 4u) ? -1.0f : 1.0f};
 }
+
+constexpr std::array<glm::vec3, WIDE_BVH_WIDTH> kOctantDirections = {
+    octantDirection(0), octantDirection(1), octantDirection(2), octantDirection(3),
+    octantDirection(4), octantDirection(5), octantDirection(6), octantDirection(7)};
 
 // Slot s should hold the child that a ray travelling along octant s's direction reaches
 // first: the one whose centre lies lowest along that direction (Ylitie et al. 2017, section
 // 3.2, assign the same way with an auction). Greedy: the cheapest (child, slot) pair whose
 // child and slot are both free is placed next, ties to the lower child, then the lower slot
-// (at most 8 rounds over 64 costs, no sort).
+// (at most 8 rounds over the free pairs, kept as bit masks; no sort).
 std::array<std::uint32_t, WIDE_BVH_WIDTH> assignSlots(const BvhTree& tree, std::uint32_t parent,
                                                       const ChildList& children) {
     const glm::vec3 centre = tree.nodes[parent].bounds.centre();
@@ -89,16 +99,16 @@ std::array<std::uint32_t, WIDE_BVH_WIDTH> assignSlots(const BvhTree& tree, std::
     for (std::uint32_t c = 0; c < children.count; ++c) {
         glm::vec3 offset = tree.nodes[children.nodes[c]].bounds.centre() - centre;
         for (std::uint32_t s = 0; s < WIDE_BVH_WIDTH; ++s)
-            cost[c][s] = glm::dot(offset, octantDirection(s));
+            cost[c][s] = glm::dot(offset, kOctantDirections[s]);
     }
     std::array<std::uint32_t, WIDE_BVH_WIDTH> slotOfChild{};
-    std::array<bool, WIDE_BVH_WIDTH> childPlaced{}, slotTaken{};
-    for (std::uint32_t round = 0; round < children.count; ++round) {
+    std::uint32_t freeChildren = (1u << children.count) - 1u, freeSlots = 0xffu;
+    while (freeChildren != 0) {
         std::uint32_t bestChild = WIDE_BVH_WIDTH, bestSlot = 0;
-        for (std::uint32_t c = 0; c < children.count; ++c) {
-            if (childPlaced[c]) continue;
-            for (std::uint32_t s = 0; s < WIDE_BVH_WIDTH; ++s) {
-                if (slotTaken[s]) continue;
+        for (std::uint32_t cs = freeChildren; cs != 0; cs &= cs - 1u) {
+            const auto c = std::uint32_t(std::countr_zero(cs));
+            for (std::uint32_t ss = freeSlots; ss != 0; ss &= ss - 1u) {
+                const auto s = std::uint32_t(std::countr_zero(ss));
                 // The first free pair is taken whatever its cost, so a NaN cost (centres of
                 // boxes beyond ±FLT_MAX / 2) still gets a slot.
                 if (bestChild == WIDE_BVH_WIDTH || cost[c][s] < cost[bestChild][bestSlot]) {
@@ -107,34 +117,49 @@ std::array<std::uint32_t, WIDE_BVH_WIDTH> assignSlots(const BvhTree& tree, std::
                 }
             }
         }
-        childPlaced[bestChild] = slotTaken[bestSlot] = true;
+        freeChildren &= ~(1u << bestChild);
+        freeSlots &= ~(1u << bestSlot);
         slotOfChild[bestChild] = bestSlot;
     }
     return slotOfChild;
 }
 
-WideDraft collapseWith(const BvhTree& tree, CollapseOrder order) {
-    const std::vector<std::uint32_t> heights =
-        order == CollapseOrder::Tallest ? subtreeHeights(tree) : std::vector<std::uint32_t>{};
-    WideDraft draft;
-    // Each wide node stands for a distinct interior binary node (or the root leaf).
-    draft.nodes.reserve(tree.nodes.size() / 2 + 1);
-    draft.nodes.push_back({0, BVH_END, {}});
-    std::vector<std::uint32_t> depths{0};
-    depths.reserve(draft.nodes.capacity());
-    // A node's internal children are made together, so they are contiguous; nodes are filled
-    // depth first, so a subtree's nodes (and, laid out in node order, its primitives) lie close
-    // together in memory, which a walk down one path of a large tree finds in fewer cache lines.
-    std::vector<std::uint32_t> toFill{0};
+// The node after each binary node's subtree: children follow their parents depth first, the
+// right subtree last, so one backward pass gives them all.
+std::vector<std::uint32_t> subtreeEnds(const BvhTree& tree) {
+    std::vector<std::uint32_t> ends(tree.nodes.size());
+    for (std::size_t i = tree.nodes.size(); i-- > 0;) {
+        const BvhBuildNode& n = tree.nodes[i];
+        ends[i] = n.isLeaf() ? std::uint32_t(i + 1) : ends[n.rightChild];
+    }
+    return ends;
+}
+
+struct CollapseInput {
+    const BvhTree& tree;
+    CollapseOrder order;
+    const std::vector<std::uint32_t>& heights; // Tallest's key; empty for LargestArea
+};
+
+// Fills wide node `start` of the draft and, depth first, the nodes it makes. A node's internal
+// children are made together, so they are contiguous; nodes are filled depth first, so a
+// subtree's nodes (and, laid out in node order, its primitives) lie close together in memory,
+// which a walk down one path of a large tree finds in fewer cache lines. An internal child
+// whose binary node `defer` accepts is made but not filled, and listed in `deferred`.
+template <typename Defer>
+void fillDepthFirst(const CollapseInput& in, std::uint32_t start, WideDraft& draft,
+                    std::vector<std::uint32_t>& depths, const Defer& defer,
+                    std::vector<std::uint32_t>& deferred) {
+    std::vector<std::uint32_t> toFill{start};
     while (!toFill.empty()) {
         const std::uint32_t w = toFill.back();
         toFill.pop_back();
         const std::uint32_t binary = draft.nodes[w].binaryNode;
-        const ChildList children = openChildren(tree, binary, order, heights);
-        const auto slots = assignSlots(tree, binary, children);
+        const ChildList children = openChildren(in.tree, binary, in.order, in.heights);
+        const auto slots = assignSlots(in.tree, binary, children);
         std::array<WideDraftChild, WIDE_BVH_WIDTH> placed{};
         for (std::uint32_t c = 0; c < children.count; ++c) {
-            const bool leaf = tree.nodes[children.nodes[c]].isLeaf();
+            const bool leaf = in.tree.nodes[children.nodes[c]].isLeaf();
             placed[slots[c]] = {leaf ? Kind::Leaf : Kind::Internal, children.nodes[c], 0};
         }
         for (WideDraftChild& child : placed) {
@@ -143,11 +168,76 @@ WideDraft collapseWith(const BvhTree& tree, CollapseOrder order) {
             draft.nodes.push_back({child.binaryNode, w, {}});
             depths.push_back(depths[w] + 1);
             draft.depth = std::max(draft.depth, depths.back());
+            if (defer(child.binaryNode)) deferred.push_back(child.wideNode);
         }
         for (auto child = placed.rbegin(); child != placed.rend(); ++child)
-            if (child->kind == Kind::Internal) toFill.push_back(child->wideNode);
+            if (child->kind == Kind::Internal && !defer(child->binaryNode))
+                toFill.push_back(child->wideNode);
         draft.nodes[w].slots = placed;
     }
+}
+
+// A wide subtree collapsed apart: node 0 stands for the block's root in the whole draft.
+struct CollapsedBlock {
+    WideDraft draft;
+    std::uint32_t root = 0; // the root's index in the whole draft
+};
+
+CollapsedBlock collapseBlock(const CollapseInput& in, std::uint32_t root, std::uint32_t binary) {
+    CollapsedBlock block;
+    block.root = root;
+    block.draft.nodes.push_back({binary, BVH_END, {}});
+    std::vector<std::uint32_t> depths{0}, none;
+    fillDepthFirst(
+        in, 0, block.draft, depths, [](std::uint32_t) { return false; }, none);
+    return block;
+}
+
+// Appends a block's nodes after the draft's, its node 0 becoming the root it stands for.
+void appendBlock(const CollapsedBlock& block, std::uint32_t rootDepth, WideDraft& draft) {
+    const auto base = static_cast<std::uint32_t>(draft.nodes.size()) - 1u;
+    auto global = [&](std::uint32_t local) { return local == 0 ? block.root : base + local; };
+    auto remapSlots = [&](std::array<WideDraftChild, WIDE_BVH_WIDTH> slots) {
+        for (WideDraftChild& child : slots)
+            if (child.kind == Kind::Internal) child.wideNode = global(child.wideNode);
+        return slots;
+    };
+    draft.nodes[block.root].slots = remapSlots(block.draft.nodes[0].slots);
+    for (std::size_t i = 1; i < block.draft.nodes.size(); ++i) {
+        const WideDraftNode& node = block.draft.nodes[i];
+        draft.nodes.push_back({node.binaryNode, global(node.parent), remapSlots(node.slots)});
+    }
+    draft.depth = std::max(draft.depth, rootDepth + block.draft.depth);
+}
+
+// Binary subtrees of at most this many nodes are collapsed as blocks, in parallel, and laid
+// out after the wide nodes above them, one block after another. The blocks depend on the tree
+// alone, so the result does not depend on the thread count; a tree this small is one block
+// under its root, laid out as one depth-first fill would.
+constexpr std::uint32_t kBlockNodes = 4096;
+
+WideDraft collapseWith(const BvhTree& tree, CollapseOrder order, std::uint32_t threadCount) {
+    const std::vector<std::uint32_t> heights =
+        order == CollapseOrder::Tallest ? subtreeHeights(tree) : std::vector<std::uint32_t>{};
+    const CollapseInput in{tree, order, heights};
+    const std::vector<std::uint32_t> ends = subtreeEnds(tree);
+    auto isBlock = [&](std::uint32_t binary) { return ends[binary] - binary <= kBlockNodes; };
+    WideDraft draft;
+    // Each wide node stands for a distinct interior binary node (or the root leaf).
+    draft.nodes.reserve(tree.nodes.size() / 2 + 1);
+    draft.nodes.push_back({0, BVH_END, {}});
+    std::vector<std::uint32_t> depths{0};
+    std::vector<std::uint32_t> blockRoots;
+    fillDepthFirst(in, 0, draft, depths, isBlock, blockRoots);
+    std::vector<CollapsedBlock> blocks(blockRoots.size());
+    std::atomic<std::size_t> next{0};
+    const std::uint32_t threads = blockRoots.size() > 1 ? resolveThreadCount(threadCount) : 1u;
+    runOnWorkers(threads, [&](std::uint32_t) {
+        for (std::size_t k = next++; k < blockRoots.size(); k = next++)
+            blocks[k] = collapseBlock(in, blockRoots[k], draft.nodes[blockRoots[k]].binaryNode);
+    });
+    for (const CollapsedBlock& block : blocks)
+        appendBlock(block, depths[block.root], draft);
     return draft;
 }
 
@@ -170,8 +260,9 @@ float decodeBound(float origin, std::uint32_t q, float scale) {
 }
 
 // The largest q whose decoded bound is at or below `lo`; the bound's own q if that overshoots.
+// (Multiplying by 1 / scale, a power of two, is exact: the same as dividing, and faster.)
 std::uint32_t quantiseLow(float origin, float lo, float scale) {
-    double q = std::floor((double(lo) - double(origin)) / double(scale));
+    double q = std::floor((double(lo) - double(origin)) * (1.0 / double(scale)));
     auto result = static_cast<std::uint32_t>(std::clamp(q, 0.0, double(kQuantisedMax)));
     while (result > 0 && decodeBound(origin, result, scale) > lo)
         --result;
@@ -180,7 +271,7 @@ std::uint32_t quantiseLow(float origin, float lo, float scale) {
 
 // The smallest q whose decoded bound is at or above `hi`, or kQuantisedMax + 1 if none fits.
 std::uint32_t quantiseHigh(float origin, float hi, float scale) {
-    double q = std::ceil((double(hi) - double(origin)) / double(scale));
+    double q = std::ceil((double(hi) - double(origin)) * (1.0 / double(scale)));
     if (!(q <= double(kQuantisedMax))) return kQuantisedMax + 1;
     auto result = static_cast<std::uint32_t>(std::max(q, 0.0));
     while (result <= kQuantisedMax && decodeBound(origin, result, scale) < hi)
@@ -246,24 +337,42 @@ void quantiseChildren(const BvhTree& tree, const WideDraftNode& draft, gpu::Wide
     }
 }
 
-// Appends each wide node's leaf primitives in slot order and points the tree's leaves there.
+// Lays each wide node's leaf primitives out in slot order, node after node, and points the
+// tree's leaves there: the places come from a prefix sum of the nodes' primitive counts, so
+// that slices of the nodes are laid out in parallel (each leaf belongs to one wide node).
 void relayoutPrimitives(BvhTree& tree, const WideDraft& draft,
-                        std::vector<std::uint32_t>& primitiveBase) {
-    std::vector<std::uint32_t> order;
-    order.reserve(tree.primitiveOrder.size());
+                        std::vector<std::uint32_t>& primitiveBase, std::uint32_t threadCount) {
+    auto primitivesOf = [&](const WideDraftNode& node) {
+        std::uint32_t count = 0;
+        for (const WideDraftChild& child : node.slots)
+            if (child.kind == Kind::Leaf) count += tree.nodes[child.binaryNode].primitiveCount;
+        return count;
+    };
     primitiveBase.assign(draft.nodes.size(), 0);
-    for (std::size_t w = 0; w < draft.nodes.size(); ++w) {
-        primitiveBase[w] = static_cast<std::uint32_t>(order.size());
-        for (const WideDraftChild& child : draft.nodes[w].slots) {
-            if (child.kind != Kind::Leaf) continue;
-            BvhBuildNode& leaf = tree.nodes[child.binaryNode];
-            const auto first = static_cast<std::uint32_t>(order.size());
-            for (std::uint32_t i = 0; i < leaf.primitiveCount; ++i)
-                order.push_back(tree.primitiveOrder[leaf.firstPrimitive + i]);
-            leaf.firstPrimitive = first;
-        }
-    }
-    VKPT_ASSERT(order.size() == tree.primitiveOrder.size(), "every primitive in one leaf");
+    forEachSlice(draft.nodes.size(), threadCount,
+                 [&](std::size_t begin, std::size_t end, std::uint32_t) {
+                     for (std::size_t w = begin; w < end; ++w)
+                         primitiveBase[w] = primitivesOf(draft.nodes[w]);
+                 });
+    std::uint32_t total = 0;
+    for (std::uint32_t& base : primitiveBase)
+        total += std::exchange(base, total);
+    VKPT_ASSERT(total == tree.primitiveOrder.size(), "every primitive in one leaf");
+    std::vector<std::uint32_t> order(total);
+    forEachSlice(draft.nodes.size(), threadCount,
+                 [&](std::size_t begin, std::size_t end, std::uint32_t) {
+                     for (std::size_t w = begin; w < end; ++w) {
+                         std::uint32_t next = primitiveBase[w];
+                         for (const WideDraftChild& child : draft.nodes[w].slots) {
+                             if (child.kind != Kind::Leaf) continue;
+                             BvhBuildNode& leaf = tree.nodes[child.binaryNode];
+                             for (std::uint32_t i = 0; i < leaf.primitiveCount; ++i)
+                                 order[next + i] = tree.primitiveOrder[leaf.firstPrimitive + i];
+                             leaf.firstPrimitive = next;
+                             next += leaf.primitiveCount;
+                         }
+                     }
+                 });
     tree.primitiveOrder = std::move(order);
 }
 
@@ -294,23 +403,30 @@ gpu::WideBvhNode compressNode(const BvhTree& tree, const WideDraftNode& draft,
 
 } // namespace
 
-WideDraft collapseBvh(const BvhTree& tree, CollapseOrder order) {
+WideDraft collapseBvh(const BvhTree& tree, CollapseOrder order, std::uint32_t threadCount) {
     VKPT_ASSERT(!tree.nodes.empty(), "a built tree has a root");
-    WideDraft draft = collapseWith(tree, order);
+    WideDraft draft = collapseWith(tree, order, threadCount);
     if (draft.depth > WIDE_BVH_MAX_DEPTH && order == CollapseOrder::LargestArea)
-        draft = collapseWith(tree, CollapseOrder::Tallest);
+        draft = collapseWith(tree, CollapseOrder::Tallest, threadCount);
     VKPT_ASSERT(draft.depth <= WIDE_BVH_MAX_DEPTH, "wide tree within the walk's bit stack");
     return draft;
 }
 
-std::vector<gpu::WideBvhNode> flattenWideBvh(BvhTree& tree, CollapseOrder order) {
-    const WideDraft draft = collapseBvh(tree, order);
+// The layout and the compression, node by node, on slices of the nodes in parallel (the
+// result does not depend on the thread count).
+std::vector<gpu::WideBvhNode> flattenWideBvh(BvhTree& tree, CollapseOrder order,
+                                             std::uint32_t threadCount) {
+    const WideDraft draft = collapseBvh(tree, order, threadCount);
+    const std::uint32_t threads =
+        draft.nodes.size() >= kParallelMinimum ? resolveThreadCount(threadCount) : 1u;
     std::vector<std::uint32_t> primitiveBase;
-    relayoutPrimitives(tree, draft, primitiveBase);
-    std::vector<gpu::WideBvhNode> nodes;
-    nodes.reserve(draft.nodes.size());
-    for (std::size_t w = 0; w < draft.nodes.size(); ++w)
-        nodes.push_back(compressNode(tree, draft.nodes[w], primitiveBase[w]));
+    relayoutPrimitives(tree, draft, primitiveBase, threads);
+    std::vector<gpu::WideBvhNode> nodes(draft.nodes.size());
+    forEachSlice(draft.nodes.size(), threads,
+                 [&](std::size_t begin, std::size_t end, std::uint32_t) {
+                     for (std::size_t w = begin; w < end; ++w)
+                         nodes[w] = compressNode(tree, draft.nodes[w], primitiveBase[w]);
+                 });
     return nodes;
 }
 

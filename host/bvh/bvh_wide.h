@@ -42,15 +42,19 @@ enum class CollapseOrder {
 // eight children or only leaves; the binary leaves become its leaf children, unchanged.
 // Slots are chosen per node so that slot s holds the child nearest along the octant s's
 // direction (host_device.h). With LargestArea a tree deeper than WIDE_BVH_MAX_DEPTH is
-// collapsed again with Tallest, which never is.
-WideDraft collapseBvh(const BvhTree& tree, CollapseOrder order = CollapseOrder::LargestArea);
+// collapsed again with Tallest, which never is. Subtrees below the top are collapsed on
+// threadCount threads (0: one per hardware thread); the result does not depend on it.
+WideDraft collapseBvh(const BvhTree& tree, CollapseOrder order = CollapseOrder::LargestArea,
+                      std::uint32_t threadCount = 0);
 
 // The device nodes of `tree`. Each wide node's leaf primitives must follow one another in slot
 // order, so this renumbers the tree's leaves: tree.primitiveOrder becomes that order and each
 // leaf's firstPrimitive its place in it (the tree's shape and boxes do not change, so its own
-// walk finds the same crossings, now under the new indices).
+// walk finds the same crossings, now under the new indices). threadCount 0: one per hardware
+// thread; the result does not depend on it.
 std::vector<gpu::WideBvhNode> flattenWideBvh(BvhTree& tree,
-                                             CollapseOrder order = CollapseOrder::LargestArea);
+                                             CollapseOrder order = CollapseOrder::LargestArea,
+                                             std::uint32_t threadCount = 0);
 
 // The eight child boxes of a device node as the walk decodes them (origin + q·2^e), empty
 // boxes for empty slots; for tests.

@@ -1,8 +1,9 @@
 // bvh_build_bench.cpp — prints BVH build and collapse times, tree figures, and the cost of the
 // reference's ordered stack walk against the device's stackless wide walk run on the CPU, on
-// a synthetic 1M-triangle surface and on glTF scenes. Prints figures; asserts nothing.
+// a synthetic 1M-triangle surface and on glTF scenes; where Embree 3 is installed, its own
+// builder on the same triangles and threads. Prints figures; asserts nothing.
 //
-//     bvh_build_bench [scene.gltf ...]   (default: the repo's and the shared scenes)
+//     bvh_build_bench [--build-only] [scene.gltf ...]   (default: the repo's and the shared scenes)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -24,6 +25,10 @@
 #include "scene/camera.h"
 #include "scene/gltf_loader.h"
 #include "shared/intersect.h"
+
+#ifdef VKPT_HAVE_EMBREE
+#include "embree/embree_build.h"
+#endif
 
 namespace vkpt {
 namespace {
@@ -149,23 +154,50 @@ BuiltScene buildScene(const std::vector<glm::vec3>& positions) {
     return s;
 }
 
+// Embree's builder on the same triangles, at its default quality and at embree-ref's.
+void benchEmbreeBuild([[maybe_unused]] const BenchScene& scene,
+                      [[maybe_unused]] std::uint32_t threads) {
+#ifdef VKPT_HAVE_EMBREE
+    using bench::EmbreeBuildQuality;
+    auto seconds = [&](EmbreeBuildQuality quality) {
+        std::vector<double> runs;
+        for (int i = 0; i < kBuildRuns; ++i)
+            runs.push_back(bench::embreeBuildSeconds(scene.positions, quality, threads));
+        return median(runs);
+    };
+    const double medium = seconds(EmbreeBuildQuality::Medium);
+    const double high = seconds(EmbreeBuildQuality::High);
+    std::printf("  Embree 3 build on %u threads: %.4f s (medium quality, its default), %.4f s "
+                "(high, as embree-ref)\n",
+                threads, medium, high);
+#endif
+}
+
+// From triangle positions to the device's nodes, as prepareScene does: bounds, binary build,
+// collapse to 8-wide.
 void benchBuild(const BenchScene& scene) {
-    std::vector<Aabb> bounds = triangleBounds(scene.positions);
+    const std::uint32_t threads = std::max(1u, std::thread::hardware_concurrency());
     BvhBuildOptions oneThread;
     oneThread.threadCount = 1;
-    double serial = medianSeconds(kBuildRuns, [&] { buildBvh(bounds, oneThread); });
-    double parallel = medianSeconds(kBuildRuns, [&] { buildBvh(bounds); });
+    double serial =
+        medianSeconds(kBuildRuns, [&] { buildBvh(triangleBounds(scene.positions), oneThread); });
+    double parallel = medianSeconds(kBuildRuns, [&] { buildBvh(triangleBounds(scene.positions)); });
     BuiltScene built = buildScene(scene.positions);
-    double flatten = medianSeconds(kBuildRuns, [&] {
+    // The copy a collapse works on is made outside the timed part.
+    std::vector<double> flattenRuns;
+    for (int i = 0; i < kBuildRuns; ++i) {
         BvhTree copy = built.tree;
+        auto start = std::chrono::steady_clock::now();
         flattenWideBvh(copy);
-    });
+        flattenRuns.push_back(secondsSince(start));
+    }
+    const double flatten = median(flattenRuns);
     BvhStats stats = computeBvhStats(built.tree);
     WideBvhStats wide = computeWideBvhStats(built.nodes);
-    std::printf("  build: %.4f s on 1 thread, %.4f s on %u threads (median of %d); "
-                "collapse to 8-wide %.4f s\n",
-                serial, parallel, std::max(1u, std::thread::hardware_concurrency()), kBuildRuns,
-                flatten);
+    std::printf("  build from positions: %.4f s on 1 thread, %.4f s on %u threads (median of "
+                "%d); collapse to 8-wide %.4f s; build + collapse %.4f s\n",
+                serial, parallel, threads, kBuildRuns, flatten, parallel + flatten);
+    benchEmbreeBuild(scene, threads);
     std::printf("  binary tree: %u nodes, %u leaves, depth %u, max leaf %u, SAH cost %.2f\n",
                 stats.nodeCount, stats.leafCount, stats.maxDepth, stats.maxLeafSize,
                 double(stats.sahCost));
@@ -198,9 +230,10 @@ SceneCamera mirrored(const SceneCamera& camera, const BuiltScene& s) {
     return m;
 }
 
-void benchScene(const BenchScene& scene) {
+void benchScene(const BenchScene& scene, bool buildOnly) {
     std::printf("\n%s: %zu triangles\n", scene.name.c_str(), scene.positions.size() / 3);
     benchBuild(scene);
+    if (buildOnly) return;
     BuiltScene built = buildScene(scene.positions);
     benchTraversal(built, "camera rays", cameraRays(scene.camera, kRays));
     benchTraversal(built, "mirrored camera rays", cameraRays(mirrored(scene.camera, built), kRays));
@@ -248,14 +281,19 @@ int main(int argc, char** argv) {
     using namespace vkpt;
     return runProgram("bvh_build_bench", [argc, argv] {
         CommandLine commandLine("bvh_build_bench");
+        bool buildOnly = false;
+        commandLine.add(
+            {"build-only", {}, "", "time the builds alone, not the walks", [&buildOnly](auto) {
+                 buildOnly = true;
+             }});
         std::vector<std::string> paths = bench::parseBenchArguments(commandLine, argc, argv);
         if (paths.empty()) {
-            benchScene(syntheticSphere());
+            benchScene(syntheticSphere(), buildOnly);
             paths = defaultScenePaths();
         }
         for (const std::string& path : paths) {
             BenchScene scene;
-            if (loadBenchScene(path, scene)) benchScene(scene);
+            if (loadBenchScene(path, scene)) benchScene(scene, buildOnly);
         }
         return 0;
     });

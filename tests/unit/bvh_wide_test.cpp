@@ -5,6 +5,7 @@
 // deepest binary trees, and the walk's bit stack and slot arithmetic.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numeric>
 #include <vector>
 
@@ -49,6 +50,9 @@ std::vector<WideScene> testScenes() {
     scenes.push_back(buildWide(synthetic::closedCube(12)));
     scenes.push_back(buildWide(synthetic::displacedSphere(30, 60), wideLeaves));
     scenes.push_back(buildWide(synthetic::displacedSphere(30, 60), {}, CollapseOrder::Tallest));
+    // 40,000 triangles: large enough that subtrees are collapsed as blocks and laid out after
+    // the nodes above them.
+    scenes.push_back(buildWide(synthetic::displacedSphere(100, 200)));
     return scenes;
 }
 
@@ -313,6 +317,25 @@ TEST(BvhWide, TreesTooDeepForTheBitStackCollapseTallestFirst) {
     std::vector<gpu::WideBvhNode> nodes = flattenWideBvh(chain.tree);
     EXPECT_LE(computeWideBvhStats(nodes).depth, WIDE_BVH_MAX_DEPTH);
     EXPECT_EQ(std::size_t(computeWideBvhStats(nodes).leafCount), chain.tree.primitiveOrder.size());
+}
+
+bool sameNodes(const std::vector<gpu::WideBvhNode>& a, const std::vector<gpu::WideBvhNode>& b) {
+    return a.size() == b.size() &&
+           std::memcmp(a.data(), b.data(), a.size() * sizeof(gpu::WideBvhNode)) == 0;
+}
+
+TEST(BvhWide, SameNodesAndPrimitiveOrderForAnyThreadCount) {
+    const std::vector<Aabb> bounds = triangleBounds(synthetic::displacedSphere(100, 200));
+    const BvhTree built = buildBvh(bounds);
+    BvhTree reference = built;
+    const std::vector<gpu::WideBvhNode> nodes =
+        flattenWideBvh(reference, CollapseOrder::LargestArea, 1);
+    for (std::uint32_t threads : {2u, 3u, 8u}) {
+        BvhTree tree = built;
+        EXPECT_TRUE(sameNodes(flattenWideBvh(tree, CollapseOrder::LargestArea, threads), nodes))
+            << threads << " threads";
+        EXPECT_EQ(tree.primitiveOrder, reference.primitiveOrder) << threads << " threads";
+    }
 }
 
 TEST(BvhWide, EmptyAndSingleTriangleTrees) {
