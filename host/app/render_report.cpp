@@ -119,6 +119,7 @@ void writeDeviceRun(JsonWriter& json, const DeviceRunReport& d) {
     json.field("setupSeconds", d.setupSeconds);
     json.field("truncatedTraversals", d.truncatedTraversals).field("interrupted", d.interrupted);
     json.field("pipelineCreationSeconds", d.pipelineCreationSeconds);
+    json.field("pipelinesCreatedEarly", d.pipelinesCreatedEarly);
     json.key("pipelines").beginArray();
     for (const PipelineCreation& p : d.pipelineCreations)
         json.beginObject()
@@ -148,9 +149,10 @@ void writeDeviceRun(JsonWriter& json, const DeviceRunReport& d) {
 void printDeviceRun(const RenderReport& r, const DeviceRunReport& d) {
     std::printf("  device: %u passes of up to %u path slots, setup %.3f s, peak memory %.1f MiB\n",
                 d.passes, d.pathSlots, d.setupSeconds, double(r.deviceMemoryBytes) / 1048576.0);
-    std::printf("  pipelines %.3f s to create; scene buffers %.1f KiB in %zu buffers\n",
-                d.pipelineCreationSeconds, double(d.sceneBufferBytes) / 1024.0,
-                d.sceneBuffers.size());
+    std::printf(
+        "  pipelines %.3f s %s; scene buffers %.1f KiB in %zu buffers\n", d.pipelineCreationSeconds,
+        d.pipelinesCreatedEarly ? "waited for (created while the scene was prepared)" : "to create",
+        double(d.sceneBufferBytes) / 1024.0, d.sceneBuffers.size());
     for (const KernelTimeTotal& k : d.kernelTimes)
         std::printf("  kernel %-20s %9.3f ms in %llu dispatches\n", k.kernel.c_str(),
                     k.seconds() * 1e3, (unsigned long long)k.dispatches);

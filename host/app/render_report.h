@@ -26,9 +26,10 @@ struct DeviceRunReport {
     std::vector<KernelTimeTotal> kernelTimes; // empty unless --stats
     double pipelineCreationSeconds = 0.0; // wall time of the driver's pipeline compiles (parallel)
     std::vector<PipelineCreation> pipelineCreations; // per kernel
-    std::uint64_t sceneBufferBytes = 0;              // Σ sceneBuffers
-    std::vector<SceneBufferBytes> sceneBuffers;      // vkpt uploads only the arrays the scene has
-    bool interrupted = false;                        // Ctrl-C: the image holds the passes done
+    bool pipelinesCreatedEarly = false; // while the scene was prepared: the wait is what is left
+    std::uint64_t sceneBufferBytes = 0; // Σ sceneBuffers
+    std::vector<SceneBufferBytes> sceneBuffers; // vkpt uploads only the arrays the scene has
+    bool interrupted = false;                   // Ctrl-C: the image holds the passes done
 };
 
 struct RenderReport {

@@ -56,7 +56,8 @@ std::string instancingNote(const Scene& scene) {
 
 } // namespace
 
-SceneSetup setUpScene(const RenderSettings& settings, const std::string& program) {
+SceneSetup setUpScene(const RenderSettings& settings, const std::string& program,
+                      const std::function<void(const Scene&)>& afterLoad) {
     SceneSetup setup;
     auto start = std::chrono::steady_clock::now();
     ScopedPhase loadPhase("load");
@@ -71,6 +72,7 @@ SceneSetup setUpScene(const RenderSettings& settings, const std::string& program
     float aspect = float(settings.width) / float(settings.height);
     SceneCamera camera = selectCamera(scene, settings.cameraIndex, aspect);
     setup.camera = makeGpuCamera(camera, settings.width, settings.height);
+    if (afterLoad) afterLoad(scene);
     ScopedPhase preparePhase("prepare");
     setup.prepared = prepareScene(scene, {{}, settings.general});
     preparePhase.end();

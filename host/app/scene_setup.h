@@ -2,8 +2,12 @@
 // scene out, choose the camera; with one log line for each that takes time.
 #pragma once
 
+#include <functional>
+#include <string>
+
 #include "common/render_settings.h"
 #include "prepare/prepared_scene.h"
+#include "scene/scene.h"
 
 namespace vkpt {
 
@@ -16,7 +20,10 @@ struct SceneSetup {
     std::size_t meshes = 0;            // meshes kept once
 };
 
-SceneSetup setUpScene(const RenderSettings& settings, const std::string& program);
+// `afterLoad`, when given, sees the loaded scene before it is prepared (vkpt starts creating its
+// pipelines there, while the BVH builds).
+SceneSetup setUpScene(const RenderSettings& settings, const std::string& program,
+                      const std::function<void(const Scene&)>& afterLoad = {});
 
 // main()'s one catch: one line on stderr and the exit code of DESIGN's error contract
 // (1 bad input, 2 Vulkan or device failure, 3 internal error).

@@ -23,6 +23,7 @@
 #include "gpu/device_list.h"
 #include "gpu/vk_check.h"
 #include "image/image_io.h"
+#include "render/early_pipelines.h"
 #include "render/wavefront.h"
 
 namespace {
@@ -96,6 +97,7 @@ DeviceRunReport deviceRunReport(const WavefrontResult& result, double setupSecon
     d.kernelTimes = result.kernelTimes;
     d.pipelineCreationSeconds = result.pipelineCreationSeconds;
     d.pipelineCreations = result.pipelineCreations;
+    d.pipelinesCreatedEarly = result.pipelinesCreatedEarly;
     d.sceneBufferBytes = result.sceneBufferBytes;
     d.sceneBuffers = result.sceneBuffers;
     return d;
@@ -171,7 +173,14 @@ int render(const Invocation& invocation) {
     GpuContext context(invocation.gpu);
     devicePhase.end();
     const std::optional<Image> reference = loadReferenceFor(invocation.convergence, settings);
-    SceneSetup setup = setUpScene(settings, kProgram);
+    // The pipelines need the scene's features alone: the driver compiles them while the BVH
+    // builds and the scene uploads.
+    std::optional<EarlyPipelines> earlyPipelines;
+    SceneSetup setup = setUpScene(settings, kProgram, [&](const Scene& scene) {
+        const SceneFeatures used = analyseScene(scene);
+        earlyPipelines.emplace(context, settings.general ? generalFeatures(used) : used,
+                               part.needsAovs(), KernelBuilds::ForFeatureSet);
+    });
     part.attachScene(setup);
     // Everything that reads the host's copy of the scene runs before the render frees the device
     // arrays' copies as they are uploaded (and the tree, just before): a large scene is then held
@@ -186,6 +195,7 @@ int render(const Invocation& invocation) {
     RenderSettings renderSettings = settings;
     renderSettings.quiet = settings.quiet || printsPassLines(invocation);
     WavefrontOptions options = wavefrontOptions(invocation, tracker, part);
+    options.earlyPipelines = earlyPipelines ? &*earlyPipelines : nullptr;
     options.beforeSceneUpload = [&setup] {
         setup.prepared.tree = {};
         setup.prepared.meshes = {};

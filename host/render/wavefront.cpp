@@ -169,9 +169,9 @@ public:
           scene_(uploadAfterHook(upload, options)), table_(makeBufferTable(scene_, buffers_)),
           pipelines_(timedPhase("pipelines",
                                 [&] {
-                                    return WavefrontPipelines(context, table_,
-                                                              kernelFeaturesFor(scene, options),
-                                                              options.aovs, options.kernelBuilds);
+                                    return WavefrontPipelines(
+                                        context, table_, kernelFeaturesFor(scene, options),
+                                        options.aovs, options.kernelBuilds, options.earlyPipelines);
                                 })),
           timer_(makeTimer(context, options)),
           recorder_(pipelines_, buffers_, timer_.get(),
@@ -433,6 +433,7 @@ WavefrontResult WavefrontRenderer::finish(double seconds) {
     result.interrupted = interrupted_;
     result.pipelineCreationSeconds = pipelines_.creationSeconds();
     result.pipelineCreations = pipelines_.creations();
+    result.pipelinesCreatedEarly = pipelines_.createdEarly();
     result.sceneBuffers = scene_.bufferBytes();
     result.sceneBufferBytes = scene_.totalBytes();
     return result;

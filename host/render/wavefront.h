@@ -24,6 +24,8 @@ namespace vkpt {
 
 class GpuContext;
 
+class EarlyPipelines;
+
 struct WavefrontOptions {
     std::uint32_t slotCount = 0; // path slots; 0: chosen from the device (chooseSlotCount)
     bool timeKernels = false;    // per-kernel GPU times from timestamp queries (--stats)
@@ -56,6 +58,9 @@ struct WavefrontOptions {
     // Which kernel builds the pipelines take (render/wavefront_kernels.h): the one for the
     // scene's feature set where there is one, or the full build (images equal bit for bit).
     KernelBuilds kernelBuilds = KernelBuilds::ForFeatureSet;
+    // Pipelines already being created while the scene was prepared (early_pipelines.h); taken
+    // when they were made for what this render needs, else the render creates its own.
+    EarlyPipelines* earlyPipelines = nullptr;
     // Record the AOVs (shared/sample_features.h) from the camera samples' own hits, for an
     // output or a saved state that holds them; a render without them pays nothing for them.
     bool aovs = false;
@@ -89,6 +94,7 @@ struct WavefrontResult {
     // measures the SPIR-V → NIR stage only); each kernel's own time is in pipelineCreations.
     double pipelineCreationSeconds = 0.0;
     std::vector<PipelineCreation> pipelineCreations; // per kernel
+    bool pipelinesCreatedEarly = false;              // taken from options.earlyPipelines
     std::vector<SceneBufferBytes> sceneBuffers;      // the scene's buffers, as uploaded
     std::uint64_t sceneBufferBytes = 0;              // Σ sceneBuffers
 };

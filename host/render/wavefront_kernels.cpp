@@ -12,6 +12,7 @@
 #include "common/errors.h"
 #include "lib/kernel_bindings.h"
 #include "lib/wavefront.h"
+#include "render/early_pipelines.h"
 #include "render/scene_arrays.h"
 #include "vkpt_diffuse_kernels.h"
 #include "vkpt_instanced_diffuse_kernels.h"
@@ -229,14 +230,26 @@ std::vector<Kernel> createKernelsInParallel(const GpuContext& context,
 
 } // namespace
 
+std::vector<Kernel> createWavefrontKernels(const GpuContext& context, const SceneFeatures& features,
+                                           const std::vector<SpecializationConstant>& constants,
+                                           KernelBuilds builds) {
+    return createKernelsInParallel(context, features, constants, builds,
+                                   std::max(1u, std::thread::hardware_concurrency()));
+}
+
+// The render constants are the chunked arrays' (chunkConstants) followed by the AOV switch,
+// in that order, as EarlyPipelines makes them for a scene with no chunked array.
 WavefrontPipelines::WavefrontPipelines(const GpuContext& context, const BufferTable& table,
                                        const SceneFeatures& features, bool aovs,
-                                       KernelBuilds builds) {
+                                       KernelBuilds builds, EarlyPipelines* early) {
     const auto start = std::chrono::steady_clock::now();
     std::vector<SpecializationConstant> constants = chunkConstants(table);
     constants.push_back(aovConstant(aovs));
-    kernels_ = createKernelsInParallel(context, features, constants, builds,
-                                       std::max(1u, std::thread::hardware_concurrency()));
+    std::optional<std::vector<Kernel>> made =
+        early ? early->take(features, constants, builds) : std::nullopt;
+    createdEarly_ = made.has_value();
+    kernels_ =
+        made ? std::move(*made) : createWavefrontKernels(context, features, constants, builds);
     wallSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     // At once, so that a render stopped later still leaves its compiles for the next one.
     context.pipelineCache().save();

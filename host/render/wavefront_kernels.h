@@ -86,17 +86,28 @@ Kernel makeWavefrontKernel(const GpuContext& context, WavefrontKernel kernel,
 DescriptorSet bindWavefrontKernel(const Kernel& kernel, WavefrontKernel id,
                                   const BufferTable& table);
 
-// Every kernel's pipeline and descriptor set, created together.
+// Every kernel's pipeline, in WavefrontKernel order, created on one thread per core.
+std::vector<Kernel> createWavefrontKernels(const GpuContext& context, const SceneFeatures& features,
+                                           const std::vector<SpecializationConstant>& constants,
+                                           KernelBuilds builds);
+
+class EarlyPipelines;
+
+// Every kernel's pipeline and descriptor set, created together — or taken from `early`, when
+// it made them for the same features and constants.
 class WavefrontPipelines {
 public:
     WavefrontPipelines(const GpuContext& context, const BufferTable& table,
-                       const SceneFeatures& features, bool aovs, KernelBuilds builds);
+                       const SceneFeatures& features, bool aovs, KernelBuilds builds,
+                       EarlyPipelines* early = nullptr);
 
     const Kernel& kernel(WavefrontKernel id) const { return kernels_[index(id)]; }
     const DescriptorSet& set(WavefrontKernel id) const { return sets_[index(id)]; }
     // Wall seconds from the first pipeline's creation to the last's: what the render waited for
-    // (they are created in parallel, so less than Σ Kernel::creationTime()).
+    // (they are created in parallel, so less than Σ Kernel::creationTime()); with pipelines
+    // created early, the wait for them, if any.
     double creationSeconds() const;
+    bool createdEarly() const { return createdEarly_; }
     // Each kernel's SPIR-V size and creation time, in dispatch order.
     std::vector<PipelineCreation> creations() const;
 
@@ -106,6 +117,7 @@ private:
     std::vector<Kernel> kernels_;
     std::vector<std::uint64_t> spirvBytes_;
     double wallSeconds_ = 0.0;
+    bool createdEarly_ = false;
     std::vector<DescriptorSet> sets_;
 };
 

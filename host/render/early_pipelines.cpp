@@ -1,0 +1,53 @@
+// early_pipelines.cpp — pipelines created ahead of the scene's upload (early_pipelines.h).
+#include "render/early_pipelines.h"
+
+#include <algorithm>
+
+namespace vkpt {
+
+namespace {
+
+bool sameConstants(const std::vector<SpecializationConstant>& a,
+                   const std::vector<SpecializationConstant>& b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                      [](const SpecializationConstant& x, const SpecializationConstant& y) {
+                          return x.id == y.id && x.value == y.value;
+                      });
+}
+
+// The same SPIR-V and specialisation for every kernel: the kernels' features and the build
+// each picks (kernelSpirv reads the features' instancing and BSDF switches).
+bool sameKernels(const SceneFeatures& a, const SceneFeatures& b, KernelBuilds builds) {
+    if (a.kernelFeatures() != b.kernelFeatures()) return false;
+    for (std::size_t i = 0; i < kWavefrontKernelCount; ++i) {
+        const auto kernel = static_cast<WavefrontKernel>(i);
+        if (kernelSpirv(kernel, a, builds).data() != kernelSpirv(kernel, b, builds).data())
+            return false;
+    }
+    return true;
+}
+
+} // namespace
+
+EarlyPipelines::EarlyPipelines(const GpuContext& context, const SceneFeatures& features, bool aovs,
+                               KernelBuilds builds)
+    : features_(features), constants_{aovConstant(aovs)}, builds_(builds) {
+    kernels_ = std::async(std::launch::async, [&context, features, constants = constants_, builds] {
+        return createWavefrontKernels(context, features, constants, builds);
+    });
+}
+
+EarlyPipelines::~EarlyPipelines() {
+    if (kernels_.valid()) kernels_.wait();
+}
+
+std::optional<std::vector<Kernel>>
+EarlyPipelines::take(const SceneFeatures& features,
+                     const std::vector<SpecializationConstant>& constants, KernelBuilds builds) {
+    if (!kernels_.valid() || builds != builds_ || !sameConstants(constants, constants_) ||
+        !sameKernels(features, features_, builds))
+        return std::nullopt;
+    return kernels_.get();
+}
+
+} // namespace vkpt
