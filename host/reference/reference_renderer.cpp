@@ -15,6 +15,7 @@
 
 #include "common/errors.h"
 #include "common/progress.h"
+#include "driver/render_driver.h"
 #include "reference/integrators.h"
 #include "reference/pixel_accumulator.h"
 #include "reference/stack_intersector.h"
@@ -218,78 +219,6 @@ std::vector<PixelWork> initialWork(const SamplePlan& plan, const ReferenceOption
 
 // --- rounds ----------------------------------------------------------------------------------
 
-class RoundLoop {
-public:
-    RoundLoop(RenderJob& job, const ReferenceOptions& options)
-        : job_(job), options_(options), lastCheckpoint_(Clock::now()) {}
-
-    // Returns true when interrupted.
-    bool run() {
-        std::uint32_t done = samplesDone();
-        const std::uint32_t budget = job_.plan.range.size();
-        double secondsPerPixelSample = 0.0;
-        while (done < budget && activePixels() > 0) {
-            const std::uint32_t k = samplesForRound(secondsPerPixelSample, budget - done);
-            const Clock::time_point begin = Clock::now();
-            const std::uint64_t samplesBefore = job_.stats.samplesTaken;
-            job_.roundEnd = done + k;
-            runRound(job_);
-            const double seconds = std::chrono::duration<double>(Clock::now() - begin).count();
-            const std::uint64_t samples = job_.stats.samplesTaken - samplesBefore;
-            if (samples > 0) secondsPerPixelSample = seconds / double(samples);
-            done = job_.roundEnd;
-            if (done >= budget) break;
-            checkpointIfDue();
-            if (options_.interrupt && options_.interrupt->load()) return true;
-        }
-        return false;
-    }
-
-private:
-    std::uint32_t samplesDone() const {
-        std::uint32_t least = UINT32_MAX;
-        for (const PixelWork& w : job_.pixels)
-            if (!w.converged) least = std::min(least, w.taken);
-        return least == UINT32_MAX ? job_.plan.range.size() : least;
-    }
-
-    std::uint64_t activePixels() const {
-        return std::uint64_t(
-            std::count_if(job_.pixels.begin(), job_.pixels.end(), [&](const PixelWork& w) {
-                return !w.converged && w.taken < job_.plan.range.size();
-            }));
-    }
-
-    // The first round takes one sample per pixel to measure the rate; later ones what fits in
-    // kRoundSeconds, or in the time left to the next checkpoint when that is sooner.
-    std::uint32_t samplesForRound(double secondsPerPixelSample, std::uint32_t left) const {
-        if (!(secondsPerPixelSample > 0.0)) return 1;
-        double seconds = kRoundSeconds;
-        if (options_.checkpoint && options_.checkpointSeconds > 0.0) {
-            const double sinceCheckpoint =
-                std::chrono::duration<double>(Clock::now() - lastCheckpoint_).count();
-            seconds = std::min(seconds, options_.checkpointSeconds - sinceCheckpoint);
-        }
-        const double perSample = secondsPerPixelSample * double(activePixels());
-        const double fit = std::floor(std::max(seconds, 0.0) / perSample);
-        return std::uint32_t(std::clamp(fit, 1.0, double(left)));
-    }
-
-    void checkpointIfDue() {
-        if (!options_.checkpoint || !(options_.checkpointSeconds > 0.0)) return;
-        const Clock::time_point now = Clock::now();
-        if (std::chrono::duration<double>(now - lastCheckpoint_).count() <
-            options_.checkpointSeconds)
-            return;
-        options_.checkpoint(recordsOf(job_.pixels), featuresOf(job_.pixels, job_.aovs));
-        lastCheckpoint_ = Clock::now();
-    }
-
-    RenderJob& job_;
-    const ReferenceOptions& options_;
-    Clock::time_point lastCheckpoint_;
-};
-
 RenderOutput outputOf(const gpu::Camera& camera, const PixelRect& crop,
                       const std::vector<PixelRecord>& records) {
     RenderState state;
@@ -299,6 +228,59 @@ RenderOutput outputOf(const gpu::Camera& camera, const PixelRect& crop,
     state.pixels = records;
     return renderOutputOf(state);
 }
+
+// The reference as the render driver's executor: a batch is a round, each pixel sampled up to
+// the round's end unless it converges.
+class ReferenceExecutor final : public RenderExecutor {
+public:
+    explicit ReferenceExecutor(RenderJob& job) : job_(job) {}
+
+    std::uint32_t samplesDone() const override {
+        std::uint32_t least = UINT32_MAX;
+        for (const PixelWork& w : job_.pixels)
+            if (!w.converged) least = std::min(least, w.taken);
+        return least == UINT32_MAX ? budget() : std::min(least, budget());
+    }
+
+    std::uint32_t budget() const override { return job_.plan.range.size(); }
+
+    std::uint64_t activePixels() const override {
+        return std::uint64_t(
+            std::count_if(job_.pixels.begin(), job_.pixels.end(), [&](const PixelWork& w) {
+                return !w.converged && w.taken < budget();
+            }));
+    }
+
+    // The first round takes one sample per pixel to measure the rate; later ones what fits in
+    // kRoundSeconds.
+    std::uint32_t batchWanted(std::uint32_t left, double secondsPerPixelSample) const override {
+        if (!(secondsPerPixelSample > 0.0)) return 1;
+        const double perSample = secondsPerPixelSample * double(activePixels());
+        const double fit = std::floor(kRoundSeconds / perSample);
+        return std::uint32_t(std::clamp(fit, 1.0, double(std::max(left, 1u))));
+    }
+
+    std::uint64_t runBatch(std::uint32_t k) override {
+        const std::uint64_t before = job_.stats.samplesTaken;
+        job_.roundEnd = samplesDone() + k;
+        runRound(job_);
+        return job_.stats.samplesTaken - before;
+    }
+
+    RenderSnapshot snapshot() override {
+        RenderSnapshot pixels;
+        pixels.records = recordsOf(job_.pixels);
+        pixels.output = outputOf(job_.camera, job_.plan.crop, pixels.records);
+        return pixels;
+    }
+
+    std::vector<FeatureRecord> features() override { return featuresOf(job_.pixels, job_.aovs); }
+
+    void finish() override { job_.progress.finish(); }
+
+private:
+    RenderJob& job_;
+};
 
 } // namespace
 
@@ -329,14 +311,10 @@ ReferenceResult renderReferenceParts(const PreparedScene& scene, const gpu::Came
                   pixels,       *progress, adaptiveDarkFloor(settings.exposure),
                   tiles,        0,         {},
                   {},           stats};
-    RoundLoop rounds(job, options);
-    ReferenceResult result;
-    result.interrupted = rounds.run();
-    progress->finish();
-    result.records = recordsOf(pixels);
-    result.features = featuresOf(pixels, options.aovs);
-    result.output = outputOf(camera, plan.crop, result.records);
+    ReferenceExecutor executor(job);
+    ReferenceResult result = runRender(executor, options);
     stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    result.stats = stats;
     return result;
 }
 

@@ -39,18 +39,6 @@ std::uint32_t samplesForPass(const ScheduleInputs& in) {
     return static_cast<std::uint32_t>(firstTest + std::min(wanted, possible) * batch);
 }
 
-std::uint32_t samplesForGeometricGrowth(std::uint32_t k, std::uint32_t samplesDone) {
-    return std::min(k, std::max(1u, samplesDone / 4));
-}
-
-std::uint32_t samplesWithinTime(std::uint32_t k, std::uint32_t activePixels,
-                                double secondsPerPixelSample, double secondsLeft) {
-    if (!(secondsPerPixelSample > 0.0) || activePixels == 0) return k;
-    const double fit = secondsLeft / (secondsPerPixelSample * double(activePixels));
-    if (!(fit >= 1.0)) return std::min(k, 1u); // also NaN: never less than one sample
-    return fit >= double(k) ? k : static_cast<std::uint32_t>(fit);
-}
-
 std::uint32_t pixelsPerChunk(std::uint32_t activePixels, std::uint32_t samplesPerPass,
                              std::uint32_t slotCount) {
     VKPT_ASSERT(samplesPerPass > 0 && samplesPerPass <= slotCount, "k samples must fit the slots");

@@ -28,18 +28,6 @@ struct ScheduleInputs {
 // converges wastes few traced samples while the device stays busy.
 std::uint32_t samplesForPass(const ScheduleInputs& inputs);
 
-// k capped so that passes grow geometrically, for a render whose error is measured after every
-// pass: at most max(1, samplesDone / 4) samples per pixel, so measurements come at 1, 2, 3, 4,
-// 5, 6, 7, 8, 10, 12, 15, ... spp — evenly spaced on the log axis that error curves are read
-// on — and a render that stops at a target error overshoots it by at most a quarter.
-std::uint32_t samplesForGeometricGrowth(std::uint32_t k, std::uint32_t samplesDone);
-
-// k capped for a time limit: the samples per pixel that `activePixels` pixels take within
-// `secondsLeft` at `secondsPerPixelSample` (the last pass's rate), at least 1 and at most k.
-// An unknown rate (<= 0, before the first pass) leaves k as it is.
-std::uint32_t samplesWithinTime(std::uint32_t k, std::uint32_t activePixels,
-                                double secondsPerPixelSample, double secondsLeft);
-
 // Active pixels per chunk at k samples each: all of them when they fit in the slots.
 std::uint32_t pixelsPerChunk(std::uint32_t activePixels, std::uint32_t samplesPerPass,
                              std::uint32_t slotCount);

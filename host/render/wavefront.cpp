@@ -1,6 +1,6 @@
-// wavefront.cpp — the pass loop: plan k samples for the active pixels, run each chunk's
-// bounces from one command buffer, read the counters, compact, repeat; after each pass, tell
-// an observer (if any) where the render stands and stop when it, the budget or the clock says.
+// wavefront.cpp — vkpt's executor: a pass gives k samples to the active pixels, each chunk's
+// bounces from one command buffer, then reads the counters and compacts the active list; the
+// render driver decides how many passes, of what k, and when to look at the pixels.
 #include "render/wavefront.h"
 
 #include <array>
@@ -14,6 +14,7 @@
 #include "common/errors.h"
 #include "common/phase_log.h"
 #include "common/progress.h"
+#include "driver/render_driver.h"
 #include "gpu/context.h"
 #include "gpu/submit.h"
 #include "gpu/upload.h"
@@ -30,12 +31,6 @@
 namespace vkpt {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double secondsBetween(Clock::time_point begin, Clock::time_point end) {
-    return std::chrono::duration<double>(end - begin).count();
-}
 
 // Bounces recorded into one command buffer. Default depths (16) need one submission per
 // chunk; deeper limits continue in further submissions while the queue holds rays, so
@@ -135,9 +130,7 @@ std::unique_ptr<GpuTimer> makeTimer(const GpuContext& context, const WavefrontOp
                                       "kernelTimer");
 }
 
-DeviceScene uploadAfterHook(const std::function<DeviceScene()>& upload,
-                            const WavefrontOptions& options) {
-    if (options.beforeSceneUpload) options.beforeSceneUpload();
+DeviceScene timedUpload(const std::function<DeviceScene()>& upload) {
     ScopedPhase phase("upload");
     return upload();
 }
@@ -148,11 +141,11 @@ template <typename Make> auto timedPhase(const char* name, Make&& make) {
     return make();
 }
 
-class WavefrontRenderer {
+class WavefrontRenderer final : public RenderExecutor {
 public:
     // `upload` puts `scene` on the device (uploadScene); it runs after the working buffers exist,
-    // so that a render too large for the device fails before the scene's upload and before
-    // options.beforeSceneUpload. The renderer reads only the scene's features.
+    // so that a render too large for the device fails before the scene's upload (and before
+    // renderWavefrontReleasing frees anything). The renderer reads only the scene's features.
     WavefrontRenderer(GpuContext& context, const std::function<DeviceScene()>& upload,
                       const PreparedScene& scene, const gpu::Camera& camera,
                       const RenderSettings& settings, const WavefrontOptions& options)
@@ -166,7 +159,7 @@ public:
                                       settings.lightSamples, pixelCount_,
                                       {scene.features.instances, options.aovs});
                               })),
-          scene_(uploadAfterHook(upload, options)), table_(makeBufferTable(scene_, buffers_)),
+          scene_(timedUpload(upload)), table_(makeBufferTable(scene_, buffers_)),
           pipelines_(timedPhase("pipelines",
                                 [&] {
                                     return WavefrontPipelines(
@@ -178,27 +171,33 @@ public:
                     settings.integrator != Integrator::Normals && settings.lightSamples > 0),
           bounces_(bouncesToTrace(settings)) {}
 
+    // The driver's loop, between the set-up and the result.
     WavefrontResult run();
+
+    std::uint32_t samplesDone() const override { return samplesDone_; }
+    std::uint32_t budget() const override { return budget_; }
+    std::uint64_t activePixels() const override { return activePixels_; }
+    // As many samples as the path slots hold for the active pixels (pass_schedule.h).
+    std::uint32_t batchWanted(std::uint32_t, double) const override {
+        return samplesForPass(schedule());
+    }
+    std::uint64_t runBatch(std::uint32_t k) override;
+    RenderSnapshot snapshot() override;
+    std::vector<FeatureRecord> features() override;
+    void finish() override { progress_->finish(); }
 
 private:
     void initialise();
     void uploadResumedStates();
     void uploadFeatures();
     void uploadActiveList();
-    bool checkpointIfDue();
     std::vector<gpu::PixelState> downloadPixelStates();
-    std::vector<FeatureRecord> downloadFeatures();
     ScheduleInputs schedule() const;
     gpu::PassParams chunkParams(std::uint32_t samplesPerPass, std::uint32_t start,
                                 std::uint32_t pixels) const;
-    std::uint32_t samplesForNextPass() const;
-    bool runPass(); // false once nothing is left to sample
-    bool observe(); // true when the observer asks to stop
-    RenderStop runPasses();
-    double elapsed() const { return secondsBetween(start_, Clock::now()); }
     void runChunk(const gpu::PassParams& params, bool firstChunk);
     void submit(const std::string& label, const std::function<void()>& record);
-    WavefrontResult finish(double seconds);
+    WavefrontResult resultOf(RenderRunResult run);
 
     ScopedPhase setupPhase_; // from the first member to the first pass
     GpuContext& context_;
@@ -224,14 +223,7 @@ private:
     std::uint32_t activeParity_ = 0;
     bool useActiveList_ = false;
     std::uint32_t passes_ = 0;
-    bool interrupted_ = false;
-    Clock::time_point start_;
-    double startCpu_ = 0.0;
-    double secondsPerPixelSample_ = 0.0; // the last pass's rate, for a time limit
-    double observerSeconds_ = 0.0;       // spent in readbacks and observer calls
-    double observerCpuSeconds_ = 0.0;
     std::uint64_t resumedSamples_ = 0; // Σ samples the resumed records had taken
-    Clock::time_point lastCheckpoint_;
 };
 
 void WavefrontRenderer::initialise() {
@@ -356,27 +348,11 @@ gpu::PassParams WavefrontRenderer::chunkParams(std::uint32_t samplesPerPass, std
     return params;
 }
 
-std::uint32_t WavefrontRenderer::samplesForNextPass() const {
-    std::uint32_t k = samplesForPass(schedule());
-    if (options_.readPixelsAfterPass) k = samplesForGeometricGrowth(k, samplesDone_);
-    if (options_.checkpoint && options_.checkpointSeconds > 0.0) {
-        const double sinceCheckpoint = secondsBetween(lastCheckpoint_, Clock::now());
-        k = samplesWithinTime(k, activePixels_, secondsPerPixelSample_,
-                              options_.checkpointSeconds - sinceCheckpoint);
-    }
-    if (!(options_.timeLimitSeconds > 0.0)) return k;
-    return samplesWithinTime(k, activePixels_, secondsPerPixelSample_,
-                             options_.timeLimitSeconds - elapsed());
-}
-
-bool WavefrontRenderer::runPass() {
-    const std::uint32_t k = samplesForNextPass();
+std::uint64_t WavefrontRenderer::runBatch(std::uint32_t k) {
     const std::uint32_t chunk = pixelsPerChunk(activePixels_, k, buffers_.slotCount);
-    const Clock::time_point passStart = Clock::now();
+    const std::uint64_t samples = std::uint64_t(activePixels_) * k;
     for (std::uint32_t start = 0; start < activePixels_; start += chunk)
         runChunk(chunkParams(k, start, std::min(chunk, activePixels_ - start)), start == 0);
-    secondsPerPixelSample_ =
-        secondsBetween(passStart, Clock::now()) / (double(activePixels_) * double(k));
     activePixels_ = readCounters(buffers_.countersReadback).nextActivePixels();
     activeParity_ ^= 1u;
     useActiveList_ = true;
@@ -384,7 +360,7 @@ bool WavefrontRenderer::runPass() {
     ++passes_;
     progress_->setStatus("active pixels " + std::to_string(activePixels_));
     progress_->advance(k);
-    return samplesDone_ < budget_ && activePixels_ > 0;
+    return samples;
 }
 
 std::vector<gpu::PixelState> WavefrontRenderer::downloadPixelStates() {
@@ -392,7 +368,7 @@ std::vector<gpu::PixelState> WavefrontRenderer::downloadPixelStates() {
 }
 
 // The crop's features, row-major; none without AOVs.
-std::vector<FeatureRecord> WavefrontRenderer::downloadFeatures() {
+std::vector<FeatureRecord> WavefrontRenderer::features() {
     if (!options_.aovs) return {};
     const std::vector<gpu::PixelFeatures> pixels =
         download<gpu::PixelFeatures>(context_, *buffers_.pixelFeatures, pixelCount_);
@@ -404,33 +380,27 @@ std::vector<FeatureRecord> WavefrontRenderer::downloadFeatures() {
     return features;
 }
 
-// A checkpoint downloads the pixel states and features (consistent at a pass end) and hands the
-// crop's records to the caller, who writes them.
-bool WavefrontRenderer::checkpointIfDue() {
-    if (!options_.checkpoint || !(options_.checkpointSeconds > 0.0)) return false;
-    if (secondsBetween(lastCheckpoint_, Clock::now()) < options_.checkpointSeconds) return false;
-    options_.checkpoint(cropRecords(downloadPixelStates(), camera_.width, plan_.crop),
-                        downloadFeatures());
-    lastCheckpoint_ = Clock::now();
-    return true;
+// One readback of the pixel states (consistent at a pass end).
+RenderSnapshot WavefrontRenderer::snapshot() {
+    const std::vector<gpu::PixelState> pixels = downloadPixelStates();
+    return {cropRecords(pixels, camera_.width, plan_.crop),
+            makeRenderOutput(pixels, camera_.width, camera_.height)};
 }
 
-WavefrontResult WavefrontRenderer::finish(double seconds) {
-    std::vector<gpu::PixelState> pixels = downloadPixelStates();
+WavefrontResult WavefrontRenderer::resultOf(RenderRunResult run) {
     WavefrontResult result;
-    result.output = makeRenderOutput(pixels, camera_.width, camera_.height);
-    result.records = cropRecords(pixels, camera_.width, plan_.crop);
-    result.features = downloadFeatures();
+    static_cast<RenderRunResult&>(result) = std::move(run);
     DeviceCounters counters = readCounters(buffers_.countersReadback);
     addCounterStats(counters, result.stats);
-    result.stats.seconds = seconds;
-    result.stats.samplesTaken = totalSamplesTaken(pixels) - resumedSamples_;
+    std::uint64_t taken = 0;
+    for (const PixelRecord& record : result.records)
+        taken += record.samplesTaken;
+    result.stats.samplesTaken = taken - resumedSamples_;
     result.stats.uniformBudget = std::uint64_t(plan_.crop.area()) * budget_;
     result.kernelTimes = times_.totals();
     result.truncatedTraversals = counters.words[COUNTER_TRUNCATED];
     result.passes = passes_;
     result.slotCount = buffers_.slotCount;
-    result.interrupted = interrupted_;
     result.pipelineCreationSeconds = pipelines_.creationSeconds();
     result.pipelineCreations = pipelines_.creations();
     result.pipelinesCreatedEarly = pipelines_.createdEarly();
@@ -439,66 +409,13 @@ WavefrontResult WavefrontRenderer::finish(double seconds) {
     return result;
 }
 
-// One readback of the pixel states when the observer wants the image; its time and the
-// observer's own are counted, so that an observer can leave them out of its timings.
-bool WavefrontRenderer::observe() {
-    if (!options_.afterPass) return false;
-    const Clock::time_point begin = Clock::now();
-    const double beginCpu = processCpuSeconds();
-    PassFigures figures;
-    figures.pass = passes_;
-    figures.samplesPerPixel = samplesDone_;
-    figures.activePixels = activePixels_;
-    figures.seconds = secondsBetween(start_, begin);
-    figures.renderSeconds = figures.seconds - observerSeconds_;
-    const double cpuSeconds = beginCpu - startCpu_;
-    figures.cpuSeconds = cpuSeconds - observerCpuSeconds_;
-    RenderOutput output;
-    const RenderOutput* shown = nullptr;
-    if (options_.readPixelsAfterPass) {
-        std::vector<gpu::PixelState> pixels =
-            download<gpu::PixelState>(context_, buffers_.pixelStates, pixelCount_);
-        output = makeRenderOutput(pixels, camera_.width, camera_.height);
-        shown = &output;
-        figures.samplesTaken = totalSamplesTaken(pixels);
-    }
-    const bool stop = options_.afterPass(figures, shown);
-    observerSeconds_ += secondsBetween(begin, Clock::now());
-    observerCpuSeconds_ += processCpuSeconds() - beginCpu;
-    return stop;
-}
-
-RenderStop WavefrontRenderer::runPasses() {
-    while (true) {
-        const bool more = runPass();
-        if (observe()) return RenderStop::TargetError;
-        if (!more)
-            return activePixels_ == 0 && samplesDone_ < budget_ ? RenderStop::Converged
-                                                                : RenderStop::Budget;
-        if (options_.interrupt && options_.interrupt->load()) return RenderStop::Interrupted;
-        checkpointIfDue();
-        if (options_.timeLimitSeconds > 0.0 && elapsed() >= options_.timeLimitSeconds)
-            return RenderStop::TimeLimit;
-    }
-}
-
 WavefrontResult WavefrontRenderer::run() {
     initialise();
     setupPhase_.end();
     ScopedPhase renderPhase("render");
-    start_ = Clock::now();
-    lastCheckpoint_ = start_;
-    startCpu_ = processCpuSeconds();
     progress_ = makeProgressBar("vkpt", budget_, settings_.quiet);
     progress_->advance(samplesDone_);
-    // A resumed render may have nothing left to do.
-    const bool done = activePixels_ == 0 || samplesDone_ >= budget_;
-    const RenderStop stop = done ? RenderStop::Budget : runPasses();
-    interrupted_ = stop == RenderStop::Interrupted;
-    progress_->finish();
-    WavefrontResult result = finish(elapsed());
-    result.stop = stop;
-    return result;
+    return resultOf(runRender(*this, options_));
 }
 
 } // namespace
@@ -514,9 +431,15 @@ WavefrontResult renderWavefront(GpuContext& context, const PreparedScene& scene,
 WavefrontResult renderWavefrontReleasing(GpuContext& context, PreparedScene& scene,
                                          const gpu::Camera& camera, const RenderSettings& settings,
                                          const WavefrontOptions& options) {
-    WavefrontRenderer renderer(
-        context, [&] { return uploadSceneAndRelease(context, scene); }, scene, camera, settings,
-        options);
+    // The tree (the device walks the wide nodes) and the host's meshes are freed first, once the
+    // working buffers exist: a render too large for the device has failed by then.
+    auto release = [&] {
+        scene.tree = {};
+        scene.meshes = {};
+        scene.instanceTree = {};
+        return uploadSceneAndRelease(context, scene);
+    };
+    WavefrontRenderer renderer(context, release, scene, camera, settings, options);
     return renderer.run();
 }
 

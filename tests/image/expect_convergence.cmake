@@ -1,12 +1,12 @@
 # expect_convergence.cmake — the command line of --reference, --target-error and --time-limit:
-# runs vkpt (and vkpt-ref) on a small Cornell box and checks exit codes, messages and the
-# "convergence" object of the stats JSON.
+# runs a renderer (vkpt or vkpt-ref: both run the same render driver) on a small Cornell box
+# and checks exit codes, messages and the "convergence" object of the stats JSON.
 #
-#   cmake -DMODE=<mode> -DVKPT=<vkpt> -DVKPT_REF=<vkpt-ref> -DSCENE=<gltf> -DOUT=<dir>
-#         -P expect_convergence.cmake
+#   cmake -DMODE=<mode> -DRENDERER=<vkpt or vkpt-ref> -DNAME=<its name> -DVKPT_REF=<vkpt-ref>
+#         -DSCENE=<gltf> -DOUT=<dir> -P expect_convergence.cmake
 #
-# Modes: reference_curve, time_limit, target_error, wrong_size, reference_on_the_cpu, bad_target.
-foreach(variable MODE VKPT VKPT_REF SCENE OUT)
+# Modes: reference_curve, time_limit, target_error, wrong_size, bad_target.
+foreach(variable MODE RENDERER NAME VKPT_REF SCENE OUT)
     if(NOT DEFINED ${variable})
         message(FATAL_ERROR "expect_convergence.cmake: -D${variable}=... is missing")
     endif()
@@ -43,7 +43,7 @@ set(json_path "${OUT}/stats.json")
 
 if(MODE STREQUAL "reference_curve")
     make_reference("${OUT}/ref.pfm" ${size})
-    run(0 "${VKPT}" --spp 64 --res ${size} --reference "${OUT}/ref.pfm" --stats-json "${json_path}"
+    run(0 "${RENDERER}" --spp 64 --res ${size} --reference "${OUT}/ref.pfm" --stats-json "${json_path}"
         -o "${OUT}/image.pfm" "${SCENE}")
     file(READ "${json_path}" json)
     string(JSON points LENGTH "${json}" convergence curve)
@@ -59,14 +59,14 @@ if(MODE STREQUAL "reference_curve")
     endforeach()
     string(JSON spp GET "${json}" convergence curve ${last} spp)
     expect_equal("spp of the last point" ${spp} 64)
-    string(REGEX MATCHALL "vkpt: pass [0-9]+, [^\n]*relMSE" lines "${stderr}")
+    string(REGEX MATCHALL "${NAME}: pass [0-9]+, [^\n]*relMSE" lines "${stderr}")
     list(LENGTH lines count)
     expect_equal("lines on stderr, one per pass" ${count} ${points})
     if(NOT stdout MATCHES "  error: pass 19, .*relMSE")
         message(FATAL_ERROR "the summary names the final error:\n${stdout}")
     endif()
 elseif(MODE STREQUAL "time_limit")
-    run(0 "${VKPT}" --spp 1000000 --res ${size} --time-limit 0.5 --stats-json "${json_path}"
+    run(0 "${RENDERER}" --spp 1000000 --res ${size} --time-limit 0.5 --stats-json "${json_path}"
         -o "${OUT}/image.pfm" "${SCENE}")
     if(NOT EXISTS "${OUT}/image.pfm")
         message(FATAL_ERROR "--time-limit: no image written")
@@ -81,7 +81,7 @@ elseif(MODE STREQUAL "time_limit")
     string(JSON type TYPE "${json}" convergence curve 0 relMse)
     expect_equal("relMse without a reference or a target" "${type}" "NULL")
 elseif(MODE STREQUAL "target_error")
-    run(0 "${VKPT}" --spp 100000 --res ${size} --target-error 0.05 --stats-json "${json_path}"
+    run(0 "${RENDERER}" --spp 100000 --res ${size} --target-error 0.05 --stats-json "${json_path}"
         -o "${OUT}/image.pfm" "${SCENE}")
     file(READ "${json_path}" json)
     string(JSON stop GET "${json}" convergence stop)
@@ -100,27 +100,14 @@ elseif(MODE STREQUAL "target_error")
     endif()
 elseif(MODE STREQUAL "wrong_size")
     make_reference("${OUT}/ref.pfm" 16 16)
-    run(1 "${VKPT}" --spp 4 --res ${size} --reference "${OUT}/ref.pfm" -o "${OUT}/image.pfm"
+    run(1 "${RENDERER}" --spp 4 --res ${size} --reference "${OUT}/ref.pfm" -o "${OUT}/image.pfm"
         "${SCENE}")
-    if(NOT stderr MATCHES "^vkpt: error: [^\n]*ref\\.pfm: the reference is 16x16, the render 24x24\n$")
+    if(NOT stderr MATCHES "^${NAME}: error: [^\n]*ref\\.pfm: the reference is 16x16, the render 24x24\n$")
         message(FATAL_ERROR "expected one line naming both sizes, got: [${stderr}]")
     endif()
-elseif(MODE STREQUAL "reference_on_the_cpu")
-    make_reference("${OUT}/ref.pfm" ${size})
-    run(0 "${VKPT_REF}" --spp 16 --res ${size} --reference "${OUT}/ref.pfm" -q
-        --stats-json "${json_path}" -o "${OUT}/image.pfm" "${SCENE}")
-    file(READ "${json_path}" json)
-    string(JSON points LENGTH "${json}" convergence curve)
-    expect_equal("vkpt-ref's curve: the final image" ${points} 1)
-    string(JSON type TYPE "${json}" convergence curve 0 relMse)
-    expect_equal("relMse" "${type}" "NUMBER")
-    run(1 "${VKPT_REF}" --time-limit 1 "${SCENE}")
-    if(NOT stderr MATCHES "unknown option")
-        message(FATAL_ERROR "vkpt-ref refuses --time-limit: [${stderr}]")
-    endif()
 elseif(MODE STREQUAL "bad_target")
-    run(1 "${VKPT}" --target-error -1 "${SCENE}")
-    if(NOT stderr MATCHES "^vkpt: error: option --target-error: '-1' is not a positive number\n$")
+    run(1 "${RENDERER}" --target-error -1 "${SCENE}")
+    if(NOT stderr MATCHES "^${NAME}: error: option --target-error: '-1' is not a positive number\n$")
         message(FATAL_ERROR "expected one line: [${stderr}]")
     endif()
 else()

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "driver/batch_policy.h"
 #include "render/pass_schedule.h"
 
 namespace vkpt {
