@@ -59,10 +59,11 @@ SamplingAnalysis analyseSampling(const gpu::ShadingMaterial& m, glm::vec3 wo, co
 // The analyses of a test file's cases, each made on first use and kept for the other tests.
 class SamplingAnalyses {
 public:
-    SamplingAnalyses(int count, std::function<SamplingAnalysis(int)> analyse)
-        : analyses_(std::size_t(count)), analyse_(std::move(analyse)) {}
+    SamplingAnalyses(std::vector<std::string> names, std::function<SamplingAnalysis(int)> analyse)
+        : names_(std::move(names)), analyses_(names_.size()), analyse_(std::move(analyse)) {}
 
     int size() const { return int(analyses_.size()); }
+    const std::string& name(int index) const { return names_[std::size_t(index)]; }
 
     const SamplingAnalysis& operator[](int index) {
         SamplingAnalysis& a = analyses_[std::size_t(index)];
@@ -71,15 +72,30 @@ public:
     }
 
 private:
+    std::vector<std::string> names_;
     std::vector<SamplingAnalysis> analyses_;
     std::function<SamplingAnalysis(int)> analyse_;
 };
 
+// The analyses of `cases` (each with a `name`, `material()` and the view `wo()`), case k drawn
+// `samples` times from stream firstSeed + k (independent streams) into the cells of
+// gridOf(case).
+template <typename Case, std::size_t N, typename GridOf>
+SamplingAnalyses samplingAnalysesOf(const Case (&cases)[N], std::uint32_t firstSeed, GridOf gridOf,
+                                    int samples = 200000) {
+    std::vector<std::string> names;
+    for (const Case& c : cases)
+        names.push_back(c.name);
+    return SamplingAnalyses(std::move(names), [&cases, firstSeed, gridOf, samples](int k) {
+        const Case& c = cases[k];
+        return analyseSampling(c.material(), c.wo(), gridOf(c), samples,
+                               firstSeed + std::uint32_t(k));
+    });
+}
+
 // Every case at once, with family-wise false-alarm rate `familyAlpha`: Šidák's per-case level
 // 1 − (1 − α)^(1/cases). Cells expecting fewer than 5 samples are pooled (chi_square.h).
-inline void expectSamplesFollowThePdf(SamplingAnalyses& analyses,
-                                      const std::function<std::string(int)>& name,
-                                      double familyAlpha = 0.01) {
+inline void expectSamplesFollowThePdf(SamplingAnalyses& analyses, double familyAlpha = 0.01) {
     const double perCaseAlpha = 1.0 - std::pow(1.0 - familyAlpha, 1.0 / analyses.size());
     for (int k = 0; k < analyses.size(); ++k) {
         const SamplingAnalysis& a = analyses[k];
@@ -89,21 +105,20 @@ inline void expectSamplesFollowThePdf(SamplingAnalyses& analyses,
         expected.push_back(std::max(0.0, 1.0 - a.integral) * a.samples);
         const ChiSquareResult r = chiSquareTest(a.observed, expected);
         EXPECT_GT(r.pValue, perCaseAlpha)
-            << name(k) << ": chi2 " << r.statistic << " dof " << r.degreesOfFreedom;
+            << analyses.name(k) << ": chi2 " << r.statistic << " dof " << r.degreesOfFreedom;
     }
 }
 
 // ∫ pdf + the invalid share = 1, within 4 binomial σ of that share (the sampled share's noise)
 // plus `quadratureError`, the bound on the cells' integration.
 inline void expectPdfIntegratesToOneLessTheInvalidShare(SamplingAnalyses& analyses,
-                                                        const std::function<std::string(int)>& name,
                                                         double quadratureError) {
     for (int k = 0; k < analyses.size(); ++k) {
         const SamplingAnalysis& a = analyses[k];
         const double p = a.invalidFraction;
         const double tolerance =
             4.0 * std::sqrt(std::max(p * (1.0 - p), 1e-12) / a.samples) + quadratureError;
-        EXPECT_NEAR(a.integral + p, 1.0, tolerance) << name(k);
+        EXPECT_NEAR(a.integral + p, 1.0, tolerance) << analyses.name(k);
     }
 }
 

@@ -5,6 +5,7 @@
 // term has its known values.
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -21,8 +22,6 @@ namespace {
 using glm::vec2;
 using glm::vec3;
 using glm::vec4;
-
-constexpr double kPi = 3.14159265358979323846;
 
 using test::viewAt;
 
@@ -51,6 +50,7 @@ struct GlassCase {
     gpu::ShadingMaterial material() const {
         return glass(roughness, eta, thinWalled, transmission, vec3(0.9f, 0.8f, 0.7f));
     }
+    vec3 wo() const { return viewAt(cosThetaO); }
 };
 
 // α = roughness² from 0.09 to 0.64; entering (η > 1) and leaving (η < 1, total internal
@@ -79,8 +79,8 @@ public:
     int cellOf(vec3 w) const {
         int ci = std::clamp(int((double(w.z) + 1.0) * 0.5 * kCosBins), 0, kCosBins - 1);
         double phi = std::atan2(double(w.y), double(w.x));
-        if (phi < 0.0) phi += 2.0 * kPi;
-        int pi = std::clamp(int(phi / (2.0 * kPi) * kPhiBins), 0, kPhiBins - 1);
+        if (phi < 0.0) phi += 2.0 * std::numbers::pi;
+        int pi = std::clamp(int(phi / (2.0 * std::numbers::pi) * kPhiBins), 0, kPhiBins - 1);
         return ci * kPhiBins + pi;
     }
 
@@ -90,7 +90,7 @@ public:
     // which bounds the quadrature.
     template <typename G> double integrateCell(int cell, const G& g) const {
         constexpr int kSub = 24;
-        const double dCos = 2.0 / kCosBins / kSub, dPhi = 2.0 * kPi / kPhiBins / kSub;
+        const double dCos = 2.0 / kCosBins / kSub, dPhi = 2.0 * std::numbers::pi / kPhiBins / kSub;
         int ci = cell / kPhiBins, pi = cell % kPhiBins;
         double sum = 0.0;
         for (int a = 0; a < kSub; ++a)
@@ -104,31 +104,21 @@ public:
     }
 };
 
-// Each case drawn 2·10^5 times from its own stream.
-test::SamplingAnalyses& analyses() {
-    static test::SamplingAnalyses cases(kCaseCount, [](int k) {
-        const GlassCase& c = kCases[k];
-        return test::analyseSampling(c.material(), viewAt(c.cosThetaO), SphereGrid(), 200000,
-                                     300u + uint32_t(k));
-    });
-    return cases;
-}
-
-std::string caseName(int k) {
-    return kCases[k].name;
-}
+// Each case drawn 2·10^5 times (streams 300, 301, ...) into the sphere's cells.
+test::SamplingAnalyses analyses =
+    test::samplingAnalysesOf(kCases, 300u, [](const GlassCase&) { return SphereGrid(); });
 
 // Chi-square over the sphere's cells plus one outcome for invalid samples (visible normals
 // that reflect below or refract above the surface). α = 0.01 for the family, Šidák-corrected
 // per case.
 TEST(Dielectric, SampledDirectionsMatchThePdfOverTheSphereByChiSquare) {
-    test::expectSamplesFollowThePdf(analyses(), caseName);
+    test::expectSamplesFollowThePdf(analyses);
 }
 
 // Both hemispheres are sampled: each case transmits and reflects a real share.
 TEST(Dielectric, SamplesReachBothSidesOfTheSurface) {
     for (int k = 0; k < kCaseCount; ++k) {
-        const test::SamplingAnalysis& a = analyses()[k];
+        const test::SamplingAnalysis& a = analyses[k];
         double below = 0.0; // the lower half of the cos θ bins
         for (int cell = 0; cell < SphereGrid().cells() / 2; ++cell)
             below += a.observed[size_t(cell)];
@@ -140,7 +130,7 @@ TEST(Dielectric, SamplesReachBothSidesOfTheSurface) {
 // ∫ pdf + invalid share = 1: within 4 binomial σ of the invalid share plus 1e-3 for the
 // midpoint quadrature.
 TEST(Dielectric, PdfIntegratesToOneLessTheInvalidSamples) {
-    test::expectPdfIntegratesToOneLessTheInvalidShare(analyses(), caseName, 1e-3);
+    test::expectPdfIntegratesToOneLessTheInvalidShare(analyses, 1e-3);
 }
 
 // The weight is f·|cos θi|/pdf and the pdf is bsdfPdf's, for every sampled direction of a rough
@@ -149,7 +139,7 @@ TEST(Dielectric, SampleWeightIsFTimesCosineOverPdf) {
     for (const GlassCase& c : kCases) {
         auto rough = [&c](const gpu::BsdfSample& s) { ASSERT_FALSE(s.delta) << c.name; };
         ASSERT_NO_FATAL_FAILURE(test::expectSamplesAgreeWithEvaluation(
-            c.material(), viewAt(c.cosThetaO), 20000, 13, 1e-5f, 1e-4f, c.name, rough));
+            c.material(), c.wo(), 20000, 13, 1e-5f, 1e-4f, c.name, rough));
     }
 }
 

@@ -166,35 +166,25 @@ private:
     std::vector<double> thetaEdges_;
 };
 
-// Each case drawn 2·10^5 times from its own stream.
-test::SamplingAnalyses& analyses() {
-    static test::SamplingAnalyses cases(kCaseCount, [](int k) {
-        const BsdfCase& c = kCases[k];
-        return test::analyseSampling(c.material(), c.wo(),
-                                     MirrorFrameGrid(c.wo(), c.narrowestAlpha()), 200000,
-                                     100u + uint32_t(k));
-    });
-    return cases;
-}
-
-std::string caseName(int k) {
-    return kCases[k].name;
-}
+// Each case drawn 2·10^5 times (streams 100, 101, ...) into the mirror-frame cells about its
+// narrowest lobe.
+test::SamplingAnalyses analyses = test::samplingAnalysesOf(
+    kCases, 100u, [](const BsdfCase& c) { return MirrorFrameGrid(c.wo(), c.narrowestAlpha()); });
 
 // (a) Chi-square over the mirror-frame cells plus one outcome for invalid samples (GGX normals
 // that reflect below the horizon). α = 0.01 for the family of cases, Šidák-corrected: each of
 // the 20 cases is tested at 1 − (1 − 0.01)^(1/20) ≈ 0.00050.
 TEST(Bsdf, SampledDirectionsMatchThePdfByChiSquare) {
-    test::expectSamplesFollowThePdf(analyses(), caseName);
+    test::expectSamplesFollowThePdf(analyses);
 }
 
 // (b) The pdf integrates to one less the share of GGX samples lost below the horizon, which
 // sampling measures: within 4 binomial σ of that share plus 2e-4 for the quadrature (nested
 // adaptive Simpson, relative 1e-5 per cell); and never above one.
 TEST(Bsdf, PdfIntegratesToOneLessTheReflectionsLostBelowTheHorizon) {
-    test::expectPdfIntegratesToOneLessTheInvalidShare(analyses(), caseName, 2e-4);
+    test::expectPdfIntegratesToOneLessTheInvalidShare(analyses, 2e-4);
     for (int k = 0; k < kCaseCount; ++k)
-        EXPECT_LE(analyses()[k].integral, 1.0 + 2e-4) << kCases[k].name;
+        EXPECT_LE(analyses[k].integral, 1.0 + 2e-4) << kCases[k].name;
 }
 
 // The quadrature itself: the grid integrates the Lambertian pdf cos θ/π to one.
