@@ -4,7 +4,7 @@
 #pragma once
 
 #include "bvh/bvh_traverse.h"
-#include "prepare/scene_view.h"
+#include "prepare/prepared_scene_view.h"
 
 namespace vkpt {
 

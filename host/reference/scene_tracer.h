@@ -6,7 +6,7 @@
 #include <memory>
 
 #include "common/render_stats.h"
-#include "prepare/scene_view.h"
+#include "prepare/prepared_scene_view.h"
 #include "reference/scene_intersector.h"
 #include "shared/surface.h"
 

@@ -4,7 +4,7 @@
 // wide_bvh.h.
 //
 // Every function of that code takes VKPT_SCENE_PARAM last. On the C++ side it is a SceneView,
-// spans over the arrays of a PreparedScene (host/prepare/scene_view.h makes one), and the
+// spans over the arrays of a PreparedScene (host/prepare/prepared_scene_view.h makes one), and the
 // accessors below read them. On the GLSL side it is empty: the includer defines the same
 // accessors over its texel fetches and storage buffers before including the shared code
 // (lib/materials.glsl, lib/surface.glsl, lib/environment.glsl, lib/lights.glsl), and the

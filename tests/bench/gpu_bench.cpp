@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_device_option.h"
 #include "bench_options.h"
 #include "bench_statistics.h"
 #include "common/errors.h"
@@ -22,38 +23,28 @@
 
 namespace {
 
-using vkpt::bench::addRenderBenchOptions;
 using vkpt::bench::median;
-using vkpt::bench::parseBenchArguments;
+using vkpt::bench::RenderBenchOptions;
 
 using namespace vkpt;
 
 struct BenchOptions {
-    std::uint32_t spp = 64;
-    std::uint32_t width = 512;
-    std::uint32_t height = 512;
-    int runs = 3;
+    RenderBenchOptions render{64, 512, 512, 3, {}};
     GpuOptions gpu;
-    std::vector<std::string> scenes;
 };
 
 BenchOptions parse(int argc, char** argv) {
     BenchOptions o;
+    RenderBenchOptions& r = o.render;
     CommandLine commandLine("gpu_bench");
-    commandLine.add({"quick", {}, "", "2 spp at 128 x 128: seconds on lavapipe", [&o](auto) {
-                         o.spp = 2;
-                         o.width = o.height = 128;
+    commandLine.add({"quick", {}, "", "2 spp at 128 x 128: seconds on lavapipe", [&r](auto) {
+                         r.spp = 2;
+                         r.width = r.height = 128;
                      }});
-    addRenderBenchOptions(commandLine, o.spp, o.width, o.height, o.runs);
-    commandLine.add(
-        {"device", {}, "N|NAME", "Vulkan device by index or name substring", [&o](auto v) {
-             o.gpu.device = parseDeviceSelection(v[0]);
-         }});
-    o.scenes = parseBenchArguments(commandLine, argc, argv);
-    if (o.scenes.empty())
-        o.scenes = {std::string(VKPT_SCENES_DIR) + "/cornell-box.gltf",
-                    std::string(VKPT_SCENES_DIR) +
-                        "/../../shared/scenes/TransmissionTest/TransmissionTest.glb"};
+    bench::addRenderBenchOptions(commandLine, r);
+    bench::addDeviceOption(commandLine, o.gpu);
+    r.scenes = bench::parseBenchArguments(commandLine, argc, argv);
+    if (r.scenes.empty()) r.scenes = bench::defaultBenchScenes();
     return o;
 }
 
@@ -75,15 +66,6 @@ struct Figures {
     }
 };
 
-RenderSettings benchSettings(const BenchOptions& o) {
-    RenderSettings settings;
-    settings.width = o.width;
-    settings.height = o.height;
-    settings.samplesPerPixel = o.spp;
-    settings.quiet = true;
-    return settings;
-}
-
 void printKernelTimes(const WavefrontResult& result) {
     std::uint64_t total = 0;
     for (const KernelTimeTotal& t : result.kernelTimes)
@@ -94,14 +76,14 @@ void printKernelTimes(const WavefrontResult& result) {
                     (unsigned long long)t.dispatches);
 }
 
-void benchScene(GpuContext& context, const std::string& path, const BenchOptions& o) {
+void benchScene(GpuContext& context, const std::string& path, const RenderBenchOptions& o) {
     LoadOptions loadOptions;
     loadOptions.warnUnsupportedExtensions = false;
     Scene scene = loadGltfScene(path, loadOptions);
     PreparedScene prepared = prepareScene(scene);
     gpu::Camera camera = makeGpuCamera(
         selectCamera(scene, std::nullopt, float(o.width) / float(o.height)), o.width, o.height);
-    RenderSettings settings = benchSettings(o);
+    RenderSettings settings = o.settings();
     std::printf("%s: %zu triangles, %ux%u at %u spp\n", path.c_str(), scene.triangleCount(),
                 o.width, o.height, o.spp);
     Figures device, reference;
@@ -135,8 +117,8 @@ int main(int argc, char** argv) {
         GpuContext context(options.gpu);
         std::printf("device: %s%s\n", describeDevice(context.deviceInfo()).c_str(),
                     context.validationEnabled() ? " (validation on: figures are slower)" : "");
-        for (const std::string& path : options.scenes)
-            benchScene(context, path, options);
+        for (const std::string& path : options.render.scenes)
+            benchScene(context, path, options.render);
         return 0;
     } catch (const vkpt::VulkanError& error) {
         std::fprintf(stderr, "gpu_bench: error: %s\n", error.what());

@@ -18,33 +18,21 @@
 
 namespace {
 
-using vkpt::bench::addRenderBenchOptions;
 using vkpt::bench::median;
-using vkpt::bench::parseBenchArguments;
+using vkpt::bench::RenderBenchOptions;
 
 using namespace vkpt;
 
-struct BenchOptions {
-    std::uint32_t spp = 4;
-    std::uint32_t width = 256;
-    std::uint32_t height = 256;
-    int runs = 3;
-    std::vector<std::string> scenes;
-};
-
-BenchOptions parse(int argc, char** argv) {
-    BenchOptions o;
+RenderBenchOptions parse(int argc, char** argv) {
+    RenderBenchOptions o{4, 256, 256, 3, {}};
     CommandLine commandLine("reference_bench");
-    addRenderBenchOptions(commandLine, o.spp, o.width, o.height, o.runs);
-    o.scenes = parseBenchArguments(commandLine, argc, argv);
-    if (o.scenes.empty())
-        o.scenes = {std::string(VKPT_SCENES_DIR) + "/cornell-box.gltf",
-                    std::string(VKPT_SCENES_DIR) +
-                        "/../../shared/scenes/TransmissionTest/TransmissionTest.glb"};
+    bench::addRenderBenchOptions(commandLine, o);
+    o.scenes = bench::parseBenchArguments(commandLine, argc, argv);
+    if (o.scenes.empty()) o.scenes = bench::defaultBenchScenes();
     return o;
 }
 
-void benchScene(const std::string& path, const BenchOptions& o) {
+void benchScene(const std::string& path, const RenderBenchOptions& o) {
     LoadOptions loadOptions;
     loadOptions.warnUnsupportedExtensions = false;
     Scene scene = loadGltfScene(path, loadOptions);
@@ -56,11 +44,7 @@ void benchScene(const std::string& path, const BenchOptions& o) {
         prepared = prepareScene(scene);
         buildSeconds.push_back(prepared.bvhStats.buildSeconds);
     }
-    RenderSettings settings;
-    settings.width = o.width;
-    settings.height = o.height;
-    settings.samplesPerPixel = o.spp;
-    settings.quiet = true;
+    RenderSettings settings = o.settings();
     gpu::Camera camera = makeGpuCamera(sceneCamera, o.width, o.height);
     for (int run = 0; run < o.runs; ++run) {
         renderReference(prepared, camera, settings, stats);
@@ -84,7 +68,7 @@ void benchScene(const std::string& path, const BenchOptions& o) {
 
 int main(int argc, char** argv) {
     try {
-        BenchOptions options = parse(argc, argv);
+        RenderBenchOptions options = parse(argc, argv);
         for (const std::string& path : options.scenes)
             benchScene(path, options);
         return 0;

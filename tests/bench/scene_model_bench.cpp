@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_device_option.h"
 #include "bench_options.h"
 #include "bench_statistics.h"
 #include "common/errors.h"
@@ -30,9 +31,8 @@
 
 namespace {
 
-using vkpt::bench::addRenderBenchOptions;
 using vkpt::bench::median;
-using vkpt::bench::parseBenchArguments;
+using vkpt::bench::RenderBenchOptions;
 
 using namespace vkpt;
 
@@ -41,11 +41,9 @@ struct BenchScene {
     glm::vec3 environment{0.0f};
 };
 
+// The scenes go with the environment that lights each (render.scenes stays empty).
 struct BenchOptions {
-    std::uint32_t spp = 16;
-    std::uint32_t width = 256;
-    std::uint32_t height = 256;
-    int runs = 5;
+    RenderBenchOptions render{16, 256, 256, 5, {}};
     GpuOptions gpu;
     std::vector<BenchScene> scenes;
     std::optional<glm::vec3> environment;
@@ -54,17 +52,14 @@ struct BenchOptions {
 BenchOptions parse(int argc, char** argv) {
     BenchOptions o;
     CommandLine commandLine("scene_model_bench");
-    addRenderBenchOptions(commandLine, o.spp, o.width, o.height, o.runs);
-    commandLine.add(
-        {"device", {}, "N|NAME", "Vulkan device by index or name substring", [&o](auto v) {
-             o.gpu.device = parseDeviceSelection(v[0]);
-         }});
+    bench::addRenderBenchOptions(commandLine, o.render);
+    bench::addDeviceOption(commandLine, o.gpu);
     commandLine.add(
         {"env-color", {}, "R G B", "constant environment of the scenes given", [&o](auto v) {
              o.environment = glm::vec3(parseFloat("env-color", v[0]), parseFloat("env-color", v[1]),
                                        parseFloat("env-color", v[2]));
          }});
-    for (const std::string& path : parseBenchArguments(commandLine, argc, argv))
+    for (const std::string& path : bench::parseBenchArguments(commandLine, argc, argv))
         o.scenes.push_back({path, o.environment.value_or(glm::vec3(0.0f))});
     if (o.scenes.empty()) {
         const std::string shared = std::string(VKPT_SCENES_DIR) + "/../../shared/scenes/";
@@ -85,23 +80,14 @@ struct ModeFigures {
     RenderOutput image; // of the last run, for the same-seed comparison
 };
 
-RenderSettings benchSettings(const BenchOptions& o) {
-    RenderSettings settings;
-    settings.width = o.width;
-    settings.height = o.height;
-    settings.samplesPerPixel = o.spp;
-    settings.quiet = true;
-    return settings;
-}
-
 // A fresh device per mode, so that its peak memory is this mode's alone.
 ModeFigures runMode(const Scene& scene, const BenchOptions& o, bool general,
                     const gpu::Camera& camera) {
     GpuContext context(o.gpu);
     PreparedScene prepared = prepareScene(scene, {{}, general});
     ModeFigures figures;
-    for (int run = 0; run < o.runs; ++run) {
-        WavefrontResult result = renderWavefront(context, prepared, camera, benchSettings(o));
+    for (int run = 0; run < o.render.runs; ++run) {
+        WavefrontResult result = renderWavefront(context, prepared, camera, o.render.settings());
         if (run == 0) figures.firstRunSeconds = result.stats.seconds;
         figures.seconds.push_back(result.stats.seconds);
         figures.mrays.push_back(result.stats.megaRaysPerSecond());
@@ -110,7 +96,7 @@ ModeFigures runMode(const Scene& scene, const BenchOptions& o, bool general,
         figures.buffers = result.sceneBuffers;
         figures.image = std::move(result.output);
         std::fprintf(stderr, "  %s run %d/%d: %.3f s\n", general ? "general" : "scene", run + 1,
-                     o.runs, result.stats.seconds);
+                     o.render.runs, result.stats.seconds);
     }
     figures.peakBytes = context.memoryStats().peakBytes;
     return figures;
@@ -138,11 +124,12 @@ void benchScene(const BenchScene& bench, const BenchOptions& o) {
     loadOptions.warnUnsupportedExtensions = false;
     Scene scene = loadGltfScene(bench.path, loadOptions);
     scene.environment.radiance = bench.environment;
-    SceneCamera sceneCamera = selectCamera(scene, std::nullopt, float(o.width) / float(o.height));
-    gpu::Camera camera = makeGpuCamera(sceneCamera, o.width, o.height);
+    SceneCamera sceneCamera =
+        selectCamera(scene, std::nullopt, float(o.render.width) / float(o.render.height));
+    gpu::Camera camera = makeGpuCamera(sceneCamera, o.render.width, o.render.height);
     std::printf("%s: %zu triangles, %zu spheres, %ux%u at %u spp; features: %s\n",
-                bench.path.c_str(), scene.triangleCount(), scene.spheres.size(), o.width, o.height,
-                o.spp, describeFeatures(analyseScene(scene)).c_str());
+                bench.path.c_str(), scene.triangleCount(), scene.spheres.size(), o.render.width,
+                o.render.height, o.render.spp, describeFeatures(analyseScene(scene)).c_str());
     ModeFigures specialised = runMode(scene, o, false, camera);
     ModeFigures general = runMode(scene, o, true, camera);
     std::printf("| build | Mrays/s | seconds | first run | pipeline creation | scene buffers | "
@@ -156,7 +143,7 @@ void benchScene(const BenchScene& bench, const BenchOptions& o) {
     }
     std::printf("  (medians of %d runs)\n  scene buffers, scene:     %s\n"
                 "  scene buffers, --general: %s\n",
-                o.runs, buffersText(specialised.buffers).c_str(),
+                o.render.runs, buffersText(specialised.buffers).c_str(),
                 buffersText(general.buffers).c_str());
     std::printf("  same seed, largest relative difference between the two images: %.3g\n\n",
                 largestRelativeDifference(specialised.image, general.image));

@@ -22,6 +22,8 @@
 
 #include "../support/room_scene.h"
 #include "app/command_line.h"
+#include "bench_device_option.h"
+#include "bench_options.h"
 #include "bench_statistics.h"
 #include "common/errors.h"
 #include "gpu/device_list.h"
@@ -37,38 +39,23 @@ const char* const kProgram = "traversal_bench";
 const std::string kGeneratedRoom = "generated room";
 
 struct BenchOptions {
-    int runs = 3;
-    std::uint32_t width = 256; // one ray path per pixel
-    std::uint32_t height = 256;
+    RenderBenchOptions paths{1, 256, 256, 3, {}}; // one ray path per pixel; spp is unused
     std::uint32_t triangles = 1000000;
     std::uint32_t maxDepth = 8;
     VariantOptions variants;
-    std::vector<std::string> scenes;
 };
 
 BenchOptions parseOptions(int argc, char** argv) {
     BenchOptions o;
-    bool help = false;
     CommandLine cl(kProgram);
     cl.add(
         {"quick", {}, "", "64x64 paths, 1 run, a 100k-triangle room: seconds, for CI", [&](auto) {
-             o.width = o.height = 64;
-             o.runs = 1;
+             o.paths.width = o.paths.height = 64;
+             o.paths.runs = 1;
              o.triangles = 100000;
          }});
-    cl.add({"runs",
-            {},
-            "N",
-            "timed runs per variant and ray set, median printed (default 3)",
-            [&](auto v) { o.runs = int(parseUnsigned("runs", v[0], 1)); }});
-    cl.add({"res",
-            {},
-            "W H",
-            "paths from W x H pixels, one sample each (default 256 256)",
-            [&](auto v) {
-                o.width = parseUnsigned("res", v[0], 1);
-                o.height = parseUnsigned("res", v[1], 1);
-            }});
+    addRunsOption(cl, o.paths, "timed runs per variant and ray set, median printed");
+    addResolutionOption(cl, o.paths, "paths from W x H pixels, one sample each");
     cl.add({"threads", {}, "N", "threads of the CPU variants and Embree (default 2)", [&](auto v) {
                 o.variants.threads = parseUnsigned("threads", v[0], 1);
             }});
@@ -82,27 +69,19 @@ BenchOptions parseOptions(int argc, char** argv) {
     cl.add({"no-device", {}, "", "leave out the device kernels", [&](auto) {
                 o.variants.device = false;
             }});
-    cl.add({"device",
-            {},
-            "N|NAME",
-            "Vulkan device of the device kernels (default: vkpt's choice)",
-            [&](auto v) { o.variants.gpu.device = parseDeviceSelection(v[0]); }});
+    addDeviceOption(cl, o.variants.gpu,
+                    "Vulkan device of the device kernels (default: vkpt's choice)");
     cl.add({"batch",
             {},
             "N",
             "rays per dispatch of the device kernels (default: 16384 on a CPU "
             "device, 4194304 on a GPU)",
             [&](auto v) { o.variants.deviceBatch = parseUnsigned("batch", v[0], 64); }});
-    cl.add({"help", {'h'}, "", "show this help", [&](auto) { help = true; }});
-    o.scenes = cl.parse(std::vector<std::string>(argv + 1, argv + argc));
-    if (help) {
-        std::fputs(cl.usage("[scene.gltf ...]").c_str(), stdout);
-        std::exit(0);
+    o.paths.scenes = parseBenchArguments(cl, argc, argv, "[scene.gltf ...]");
+    if (o.paths.scenes.empty()) {
+        o.paths.scenes = defaultBenchScenes();
+        o.paths.scenes.push_back(kGeneratedRoom);
     }
-    if (o.scenes.empty())
-        o.scenes = {VKPT_SCENES_DIR "/cornell-box.gltf",
-                    VKPT_SCENES_DIR "/../../shared/scenes/TransmissionTest/TransmissionTest.glb",
-                    kGeneratedRoom};
     return o;
 }
 
@@ -246,10 +225,10 @@ void benchScene(const std::string& path, const BenchOptions& o) {
         return;
     }
     Scene scene = loadBenchScene(path, o);
-    float aspect = float(o.width) / float(o.height);
+    float aspect = float(o.paths.width) / float(o.paths.height);
     SceneCamera sceneCamera = selectCamera(scene, std::nullopt, aspect);
     PreparedScene prepared = prepareScene(scene);
-    gpu::Camera camera = makeGpuCamera(sceneCamera, o.width, o.height);
+    gpu::Camera camera = makeGpuCamera(sceneCamera, o.paths.width, o.paths.height);
     RenderSettings settings;
     settings.maxDepth = o.maxDepth;
     std::vector<RaySet> sets = recordRenderRays(prepared, camera, settings);
@@ -260,11 +239,11 @@ void benchScene(const std::string& path, const BenchOptions& o) {
             ? ("generated room, " + std::to_string(o.triangles) + " triangles asked").c_str()
             : path.c_str(),
         prepared.triangles.size(), prepared.bvhStats.nodeCount, prepared.bvhStats.maxDepth,
-        prepared.bvhStats.buildSeconds, o.width, o.height, o.maxDepth, o.runs);
+        prepared.bvhStats.buildSeconds, o.paths.width, o.paths.height, o.maxDepth, o.paths.runs);
     std::vector<std::unique_ptr<TraversalVariant>> variants =
         makeTraversalVariants(prepared, o.variants);
     for (const RaySet& set : sets)
-        benchRaySet(set, variants, o.runs);
+        benchRaySet(set, variants, o.paths.runs);
     std::printf("\n");
 }
 
@@ -274,7 +253,7 @@ void benchScene(const std::string& path, const BenchOptions& o) {
 int main(int argc, char** argv) {
     try {
         vkpt::bench::BenchOptions options = vkpt::bench::parseOptions(argc, argv);
-        for (const std::string& scene : options.scenes)
+        for (const std::string& scene : options.paths.scenes)
             vkpt::bench::benchScene(scene, options);
         return 0;
     } catch (const vkpt::InputError& error) {

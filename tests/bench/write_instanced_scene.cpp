@@ -9,6 +9,7 @@
 
 #include "app/command_line.h"
 #include "app/run_program.h"
+#include "bench_options.h"
 #include "common/errors.h"
 #include "instanced_scene.h"
 
@@ -18,7 +19,6 @@ const char* const kProgram = "write_instanced_scene";
 
 int writeScene(int argc, char** argv) {
     vkpt::test::InstancedSceneSpec spec;
-    bool help = false;
     vkpt::CommandLine commandLine(kProgram);
     commandLine.add({"grid", {'g'}, "N", "N × N placements (default 4)", [&](auto v) {
                          spec.columns = spec.rows = vkpt::parseUnsigned("grid", v[0], 1);
@@ -26,13 +26,8 @@ int writeScene(int argc, char** argv) {
     commandLine.add({"rings", {}, "R", "4·R² triangles per sphere (default 6)", [&](auto v) {
                          spec.rings = vkpt::parseUnsigned("rings", v[0], 2);
                      }});
-    commandLine.add({"help", {'h'}, "", "show this help", [&](auto) { help = true; }});
     std::vector<std::string> positional =
-        commandLine.parse(std::vector<std::string>(argv + 1, argv + argc));
-    if (help) {
-        std::fputs(commandLine.usage("out.gltf").c_str(), stdout);
-        return 0;
-    }
+        vkpt::bench::parseBenchArguments(commandLine, argc, argv, "out.gltf");
     if (positional.size() != 1) throw vkpt::InputError("give one output file (see --help)");
     spec.separateBuffer = true;
     vkpt::test::writeInstancedScene(spec, positional[0]);

@@ -10,6 +10,7 @@
 #include "../support/room_scene.h"
 #include "app/command_line.h"
 #include "app/run_program.h"
+#include "bench_options.h"
 #include "common/errors.h"
 
 namespace {
@@ -18,7 +19,6 @@ const char* const kProgram = "write_room_scene";
 
 int writeScene(int argc, char** argv) {
     std::uint32_t triangles = 1000000;
-    bool help = false;
     bool textured = false;
     vkpt::CommandLine commandLine(kProgram);
     commandLine.add({"triangles", {'n'}, "N", "about N triangles (default 1000000)", [&](auto v) {
@@ -29,13 +29,8 @@ int writeScene(int argc, char** argv) {
                      "",
                      "texture the sphere (TEXCOORD_0 per vertex and a base colour texture)",
                      [&](auto) { textured = true; }});
-    commandLine.add({"help", {'h'}, "", "show this help", [&](auto) { help = true; }});
     std::vector<std::string> positional =
-        commandLine.parse(std::vector<std::string>(argv + 1, argv + argc));
-    if (help) {
-        std::fputs(commandLine.usage("out.gltf").c_str(), stdout);
-        return 0;
-    }
+        vkpt::bench::parseBenchArguments(commandLine, argc, argv, "out.gltf");
     if (positional.size() != 1) throw vkpt::InputError("give one output file (see --help)");
     vkpt::test::RoomScene room = vkpt::test::makeRoomScene(triangles, textured);
     vkpt::test::writeRoomSceneGltf(room, positional[0]);

@@ -5,11 +5,14 @@
 // term has its known values.
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
-#include "../support/chi_square.h"
+#include "../support/bsdf_chi_square.h"
+#include "../support/furnace.h"
 #include "shared/bsdf.h"
 #include "shared/rng.h"
 
@@ -20,11 +23,7 @@ using glm::vec2;
 using glm::vec3;
 using glm::vec4;
 
-constexpr double kPi = 3.14159265358979323846;
-
-vec3 viewAt(float cosTheta) {
-    return vec3(std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta)), 0.0f, cosTheta);
-}
+using test::viewAt;
 
 // A glass material: metallic 0, the given transmission, roughness and η (the ratio the path
 // crosses: ior entering, 1/ior leaving), white, specular 1.
@@ -51,6 +50,7 @@ struct GlassCase {
     gpu::ShadingMaterial material() const {
         return glass(roughness, eta, thinWalled, transmission, vec3(0.9f, 0.8f, 0.7f));
     }
+    vec3 wo() const { return viewAt(cosThetaO); }
 };
 
 // α = roughness² from 0.09 to 0.64; entering (η > 1) and leaving (η < 1, total internal
@@ -69,26 +69,28 @@ const GlassCase kCases[] = {
 constexpr int kCaseCount = int(sizeof(kCases) / sizeof(kCases[0]));
 
 // Cells over the whole sphere: uniform in cos θ ∈ [−1, 1] (so both hemispheres) and in φ.
-constexpr int kCosBins = 40;
-constexpr int kPhiBins = 32;
-constexpr int kCells = kCosBins * kPhiBins;
+class SphereGrid {
+public:
+    static constexpr int kCosBins = 40;
+    static constexpr int kPhiBins = 32;
 
-int cellOf(vec3 w) {
-    int ci = std::clamp(int((double(w.z) + 1.0) * 0.5 * kCosBins), 0, kCosBins - 1);
-    double phi = std::atan2(double(w.y), double(w.x));
-    if (phi < 0.0) phi += 2.0 * kPi;
-    int pi = std::clamp(int(phi / (2.0 * kPi) * kPhiBins), 0, kPhiBins - 1);
-    return ci * kPhiBins + pi;
-}
+    int cells() const { return kCosBins * kPhiBins; }
 
-// ∫ pdf over each cell by the midpoint rule on 24 × 24 sub-cells (dω = d cos θ dφ, so the rule
-// is exact for a pdf constant on sub-cells). The integral over the sphere of all cells, plus
-// the share of invalid samples, is 1 within 1e-3 (the next test), which bounds the quadrature.
-std::vector<double> cellProbabilities(const gpu::ShadingMaterial& m, vec3 wo) {
-    constexpr int kSub = 24;
-    std::vector<double> p(kCells, 0.0);
-    const double dCos = 2.0 / kCosBins / kSub, dPhi = 2.0 * kPi / kPhiBins / kSub;
-    for (int cell = 0; cell < kCells; ++cell) {
+    int cellOf(vec3 w) const {
+        int ci = std::clamp(int((double(w.z) + 1.0) * 0.5 * kCosBins), 0, kCosBins - 1);
+        double phi = std::atan2(double(w.y), double(w.x));
+        if (phi < 0.0) phi += 2.0 * std::numbers::pi;
+        int pi = std::clamp(int(phi / (2.0 * std::numbers::pi) * kPhiBins), 0, kPhiBins - 1);
+        return ci * kPhiBins + pi;
+    }
+
+    // ∫ g over the cell by the midpoint rule on 24 × 24 sub-cells (dω = d cos θ dφ, so the rule
+    // is exact for a g constant on sub-cells). The integral of the pdf over all cells, plus the
+    // share of invalid samples, is 1 within 1e-3 (PdfIntegratesToOneLessTheInvalidSamples),
+    // which bounds the quadrature.
+    template <typename G> double integrateCell(int cell, const G& g) const {
+        constexpr int kSub = 24;
+        const double dCos = 2.0 / kCosBins / kSub, dPhi = 2.0 * std::numbers::pi / kPhiBins / kSub;
         int ci = cell / kPhiBins, pi = cell % kPhiBins;
         double sum = 0.0;
         for (int a = 0; a < kSub; ++a)
@@ -96,71 +98,29 @@ std::vector<double> cellProbabilities(const gpu::ShadingMaterial& m, vec3 wo) {
                 double z = -1.0 + (ci * kSub + a + 0.5) * dCos;
                 double phi = (pi * kSub + b + 0.5) * dPhi;
                 double s = std::sqrt(std::max(0.0, 1.0 - z * z));
-                vec3 wi(float(s * std::cos(phi)), float(s * std::sin(phi)), float(z));
-                sum += double(gpu::bsdfPdf(m, wo, wi));
+                sum += g(vec3(float(s * std::cos(phi)), float(s * std::sin(phi)), float(z)));
             }
-        p[size_t(cell)] = sum * dCos * dPhi;
+        return sum * dCos * dPhi;
     }
-    return p;
-}
-
-struct CaseAnalysis {
-    std::vector<double> observed; // per cell, then the invalid samples last
-    std::vector<double> probabilities;
-    double integral = 0.0;
-    double invalidFraction = 0.0;
-    int samples = 0;
 };
 
-CaseAnalysis analyse(const GlassCase& c, int samples, uint32_t seed) {
-    gpu::ShadingMaterial m = c.material();
-    vec3 wo = viewAt(c.cosThetaO);
-    CaseAnalysis r;
-    r.samples = samples;
-    r.observed.assign(size_t(kCells + 1), 0.0);
-    for (uint32_t i = 0; i < uint32_t(samples); ++i) {
-        vec4 u = gpu::randomFloats(seed, i, 0, 0, DIM_BSDF);
-        gpu::BsdfSample s = gpu::sampleBsdf(m, wo, vec2(u.x, u.y), u.w);
-        r.observed[s.valid ? size_t(cellOf(s.direction)) : size_t(kCells)] += 1.0;
-    }
-    r.invalidFraction = r.observed.back() / samples;
-    r.probabilities = cellProbabilities(m, wo);
-    for (double p : r.probabilities)
-        r.integral += p;
-    return r;
-}
-
-const CaseAnalysis& analysisOf(int index) {
-    static std::vector<CaseAnalysis> cache(kCaseCount);
-    CaseAnalysis& a = cache[size_t(index)];
-    if (a.samples == 0) a = analyse(kCases[index], 200000, 300u + uint32_t(index));
-    return a;
-}
+// Each case drawn 2·10^5 times (streams 300, 301, ...) into the sphere's cells.
+test::SamplingAnalyses analyses =
+    test::samplingAnalysesOf(kCases, 300u, [](const GlassCase&) { return SphereGrid(); });
 
 // Chi-square over the sphere's cells plus one outcome for invalid samples (visible normals
-// that reflect below or refract above the surface), whose expected share is what the pdf's
-// integral lacks. α = 0.01 for the family, Šidák-corrected per case; cells expecting fewer
-// than 5 samples are pooled.
+// that reflect below or refract above the surface). α = 0.01 for the family, Šidák-corrected
+// per case.
 TEST(Dielectric, SampledDirectionsMatchThePdfOverTheSphereByChiSquare) {
-    const double perCaseAlpha = 1.0 - std::pow(1.0 - 0.01, 1.0 / kCaseCount);
-    for (int k = 0; k < kCaseCount; ++k) {
-        const CaseAnalysis& a = analysisOf(k);
-        std::vector<double> expected;
-        for (double p : a.probabilities)
-            expected.push_back(p * a.samples);
-        expected.push_back(std::max(0.0, 1.0 - a.integral) * a.samples);
-        test::ChiSquareResult r = test::chiSquareTest(a.observed, expected);
-        EXPECT_GT(r.pValue, perCaseAlpha)
-            << kCases[k].name << ": chi2 " << r.statistic << " dof " << r.degreesOfFreedom;
-    }
+    test::expectSamplesFollowThePdf(analyses);
 }
 
 // Both hemispheres are sampled: each case transmits and reflects a real share.
 TEST(Dielectric, SamplesReachBothSidesOfTheSurface) {
     for (int k = 0; k < kCaseCount; ++k) {
-        const CaseAnalysis& a = analysisOf(k);
-        double below = 0.0;
-        for (int cell = 0; cell < kCells / 2; ++cell)
+        const test::SamplingAnalysis& a = analyses[k];
+        double below = 0.0; // the lower half of the cos θ bins
+        for (int cell = 0; cell < SphereGrid().cells() / 2; ++cell)
             below += a.observed[size_t(cell)];
         EXPECT_GT(below, 0.02 * a.samples) << kCases[k].name;
         EXPECT_LT(below, 0.98 * a.samples) << kCases[k].name;
@@ -170,33 +130,16 @@ TEST(Dielectric, SamplesReachBothSidesOfTheSurface) {
 // ∫ pdf + invalid share = 1: within 4 binomial σ of the invalid share plus 1e-3 for the
 // midpoint quadrature.
 TEST(Dielectric, PdfIntegratesToOneLessTheInvalidSamples) {
-    for (int k = 0; k < kCaseCount; ++k) {
-        const CaseAnalysis& a = analysisOf(k);
-        double p = a.invalidFraction;
-        double tolerance = 4.0 * std::sqrt(std::max(p * (1.0 - p), 1e-12) / a.samples) + 1e-3;
-        EXPECT_NEAR(a.integral + p, 1.0, tolerance) << kCases[k].name;
-    }
+    test::expectPdfIntegratesToOneLessTheInvalidShare(analyses, 1e-3);
 }
 
 // The weight is f·|cos θi|/pdf and the pdf is bsdfPdf's, for every sampled direction of a rough
 // lobe, on both sides.
 TEST(Dielectric, SampleWeightIsFTimesCosineOverPdf) {
     for (const GlassCase& c : kCases) {
-        gpu::ShadingMaterial m = c.material();
-        vec3 wo = viewAt(c.cosThetaO);
-        for (uint32_t i = 0; i < 20000; ++i) {
-            vec4 u = gpu::randomFloats(13, i, 0, 0, DIM_BSDF);
-            gpu::BsdfSample s = gpu::sampleBsdf(m, wo, vec2(u.x, u.y), u.w);
-            if (!s.valid) continue;
-            ASSERT_FALSE(s.delta) << c.name;
-            ASSERT_NEAR(glm::length(s.direction), 1.0f, 1e-5f);
-            float pdf = gpu::bsdfPdf(m, wo, s.direction);
-            ASSERT_NEAR(s.pdf, pdf, 1e-5f * pdf) << c.name;
-            vec3 expected = gpu::evaluateBsdf(m, wo, s.direction) * (std::abs(s.direction.z) / pdf);
-            for (int ch = 0; ch < 3; ++ch)
-                ASSERT_NEAR(s.weight[ch], expected[ch], 1e-4f * std::max(1.0f, expected[ch]))
-                    << c.name;
-        }
+        auto rough = [&c](const gpu::BsdfSample& s) { ASSERT_FALSE(s.delta) << c.name; };
+        ASSERT_NO_FATAL_FAILURE(test::expectSamplesAgreeWithEvaluation(
+            c.material(), c.wo(), 20000, 13, 1e-5f, 1e-4f, c.name, rough));
     }
 }
 

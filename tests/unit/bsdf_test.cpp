@@ -4,11 +4,13 @@
 // arithmetic.
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
-#include "../support/chi_square.h"
+#include "../support/adaptive_simpson.h"
+#include "../support/bsdf_chi_square.h"
 #include "../support/furnace.h"
 #include "shared/bsdf.h"
 #include "shared/rng.h"
@@ -95,42 +97,6 @@ const BsdfCase kCases[] = {
 };
 constexpr int kCaseCount = int(sizeof(kCases) / sizeof(kCases[0]));
 
-// ---------------------------------------------------------------------------------------------
-// Quadrature: adaptive Simpson (Kuncir 1962; Lyness 1969) in one dimension, nested for two.
-// The tolerance is relative to a first 9-point estimate, with an absolute floor.
-template <typename F>
-double simpsonStep(const F& f, double a, double b, double fa, double fm, double fb, double whole,
-                   double eps, int depth) {
-    double m = 0.5 * (a + b);
-    double flm = f(0.5 * (a + m)), frm = f(0.5 * (m + b));
-    double left = (m - a) / 6.0 * (fa + 4.0 * flm + fm);
-    double right = (b - m) / 6.0 * (fm + 4.0 * frm + fb);
-    double delta = left + right - whole;
-    if (depth <= 0 || std::abs(delta) <= 15.0 * eps) return left + right + delta / 15.0;
-    return simpsonStep(f, a, m, fa, flm, fm, left, 0.5 * eps, depth - 1) +
-           simpsonStep(f, m, b, fm, frm, fb, right, 0.5 * eps, depth - 1);
-}
-
-template <typename F>
-double adaptiveSimpson(const F& f, double a, double b, double relativeTolerance,
-                       double absoluteTolerance) {
-    const int panels = 4;
-    double h = (b - a) / panels, values[2 * panels + 1];
-    for (int i = 0; i <= 2 * panels; ++i)
-        values[i] = f(a + 0.5 * h * i);
-    double estimate = 0.0, panelWholes[panels];
-    for (int p = 0; p < panels; ++p) {
-        panelWholes[p] = h / 6.0 * (values[2 * p] + 4.0 * values[2 * p + 1] + values[2 * p + 2]);
-        estimate += panelWholes[p];
-    }
-    double eps = std::max(relativeTolerance * std::abs(estimate), absoluteTolerance) / panels;
-    double sum = 0.0;
-    for (int p = 0; p < panels; ++p)
-        sum += simpsonStep(f, a + h * p, a + h * (p + 1), values[2 * p], values[2 * p + 1],
-                           values[2 * p + 2], panelWholes[p], eps, 12);
-    return sum;
-}
-
 // Cells over the whole sphere of directions in spherical coordinates (θ', φ') about the mirror
 // direction of wo. A GGX lobe of α = 0.0025 is a few milliradians wide: on a (cos θ, φ) grid
 // about the normal it would fill one cell, so the θ' cells follow a blend of two distributions,
@@ -160,8 +126,8 @@ public:
         return ti * kPhiBins + pi;
     }
 
-    // ∫ over the cell of g(direction) dω, dω = sin θ' dθ' dφ', to a relative 1e-5 (with an
-    // absolute floor of 1e-12) in each of the nested integrals.
+    // ∫ over the cell of g(direction) dω, dω = sin θ' dθ' dφ', by nested adaptive Simpson to a
+    // relative 1e-5 (with an absolute floor of 1e-12) in each of the nested integrals.
     template <typename G> double integrateCell(int cell, const G& g) const {
         int ti = cell / kPhiBins, pi = cell % kPhiBins;
         double phi0 = 2.0 * kPi * pi / kPhiBins, phi1 = 2.0 * kPi * (pi + 1) / kPhiBins;
@@ -169,10 +135,9 @@ public:
             double s = std::sin(theta);
             if (s == 0.0) return 0.0;
             auto alongPhi = [&](double phi) { return g(directionAt(theta, phi)); };
-            return s * adaptiveSimpson(alongPhi, phi0, phi1, 1e-5, 1e-12);
+            return s * test::adaptiveSimpson(alongPhi, phi0, phi1);
         };
-        return adaptiveSimpson(overPhi, thetaEdges_[size_t(ti)], thetaEdges_[size_t(ti + 1)], 1e-5,
-                               1e-12);
+        return test::adaptiveSimpson(overPhi, thetaEdges_[size_t(ti)], thetaEdges_[size_t(ti + 1)]);
     }
 
 private:
@@ -201,73 +166,25 @@ private:
     std::vector<double> thetaEdges_;
 };
 
-// One case drawn n times and its pdf integrated over every cell.
-struct CaseAnalysis {
-    std::vector<double> observed;      // per cell, then the invalid samples last
-    std::vector<double> probabilities; // ∫ pdf per cell
-    double integral = 0.0;             // Σ probabilities: ∫ pdf over the sphere
-    double invalidFraction = 0.0;
-    int samples = 0;
-};
-
-CaseAnalysis analyse(const BsdfCase& c, int samples, uint32_t seed) {
-    gpu::ShadingMaterial m = c.material();
-    vec3 wo = c.wo();
-    MirrorFrameGrid grid(wo, c.narrowestAlpha());
-    CaseAnalysis r;
-    r.samples = samples;
-    r.observed.assign(size_t(grid.cells() + 1), 0.0);
-    for (uint32_t i = 0; i < uint32_t(samples); ++i) {
-        vec4 u = gpu::randomFloats(seed, i, 0, 0, DIM_BSDF);
-        gpu::BsdfSample s = gpu::sampleBsdf(m, wo, vec2(u.x, u.y), u.w);
-        r.observed[s.valid ? size_t(grid.cellOf(s.direction)) : size_t(grid.cells())] += 1.0;
-    }
-    r.invalidFraction = r.observed.back() / samples;
-    auto pdf = [&](vec3 wi) { return double(gpu::bsdfPdf(m, wo, wi)); };
-    for (int cell = 0; cell < grid.cells(); ++cell) {
-        r.probabilities.push_back(grid.integrateCell(cell, pdf));
-        r.integral += r.probabilities.back();
-    }
-    return r;
-}
-
-const CaseAnalysis& analysisOf(int index) {
-    static std::vector<CaseAnalysis> cache(kCaseCount);
-    CaseAnalysis& a = cache[size_t(index)];
-    if (a.samples == 0)
-        a = analyse(kCases[index], 200000, 100u + uint32_t(index)); // independent streams
-    return a;
-}
+// Each case drawn 2·10^5 times (streams 100, 101, ...) into the mirror-frame cells about its
+// narrowest lobe.
+test::SamplingAnalyses analyses = test::samplingAnalysesOf(
+    kCases, 100u, [](const BsdfCase& c) { return MirrorFrameGrid(c.wo(), c.narrowestAlpha()); });
 
 // (a) Chi-square over the mirror-frame cells plus one outcome for invalid samples (GGX normals
-// that reflect below the horizon), whose expected share is what the pdf's integral lacks.
-// α = 0.01 for the family of cases, Šidák-corrected: each of the 20 cases is tested at
-// 1 − (1 − 0.01)^(1/20) ≈ 0.00050. Cells expecting fewer than 5 samples are pooled.
+// that reflect below the horizon). α = 0.01 for the family of cases, Šidák-corrected: each of
+// the 20 cases is tested at 1 − (1 − 0.01)^(1/20) ≈ 0.00050.
 TEST(Bsdf, SampledDirectionsMatchThePdfByChiSquare) {
-    const double perCaseAlpha = 1.0 - std::pow(1.0 - 0.01, 1.0 / kCaseCount);
-    for (int k = 0; k < kCaseCount; ++k) {
-        const CaseAnalysis& a = analysisOf(k);
-        std::vector<double> expected;
-        for (double p : a.probabilities)
-            expected.push_back(p * a.samples);
-        expected.push_back(std::max(0.0, 1.0 - a.integral) * a.samples);
-        test::ChiSquareResult r = test::chiSquareTest(a.observed, expected);
-        EXPECT_GT(r.pValue, perCaseAlpha)
-            << kCases[k].name << ": chi2 " << r.statistic << " dof " << r.degreesOfFreedom;
-    }
+    test::expectSamplesFollowThePdf(analyses);
 }
 
 // (b) The pdf integrates to one less the share of GGX samples lost below the horizon, which
-// sampling measures: |∫ pdf + invalid share − 1| within 4 binomial σ of that share plus 2e-4
-// for the quadrature (nested adaptive Simpson, relative 1e-5 per cell).
+// sampling measures: within 4 binomial σ of that share plus 2e-4 for the quadrature (nested
+// adaptive Simpson, relative 1e-5 per cell); and never above one.
 TEST(Bsdf, PdfIntegratesToOneLessTheReflectionsLostBelowTheHorizon) {
-    for (int k = 0; k < kCaseCount; ++k) {
-        const CaseAnalysis& a = analysisOf(k);
-        double p = a.invalidFraction;
-        double tolerance = 4.0 * std::sqrt(std::max(p * (1.0 - p), 1e-12) / a.samples) + 2e-4;
-        EXPECT_NEAR(a.integral + p, 1.0, tolerance) << kCases[k].name;
-        EXPECT_LE(a.integral, 1.0 + 2e-4) << kCases[k].name;
-    }
+    test::expectPdfIntegratesToOneLessTheInvalidShare(analyses, 2e-4);
+    for (int k = 0; k < kCaseCount; ++k)
+        EXPECT_LE(analyses[k].integral, 1.0 + 2e-4) << kCases[k].name;
 }
 
 // The quadrature itself: the grid integrates the Lambertian pdf cos θ/π to one.
@@ -284,23 +201,13 @@ TEST(Bsdf, MirrorFrameQuadratureIntegratesTheCosinePdfToOne) {
 // glass leaves below the surface.
 TEST(Bsdf, SampleWeightAndPdfAgreeWithEvaluation) {
     for (const BsdfCase& c : kCases) {
-        gpu::ShadingMaterial m = c.material();
-        vec3 wo = c.wo();
-        for (uint32_t i = 0; i < 20000; ++i) {
-            vec4 u = gpu::randomFloats(12, i, 0, 0, DIM_BSDF);
-            gpu::BsdfSample s = gpu::sampleBsdf(m, wo, vec2(u.x, u.y), u.w);
-            if (!s.valid) continue;
-            ASSERT_NEAR(glm::length(s.direction), 1.0f, 1e-5f);
+        auto staysAboveUnlessGlass = [&c](const gpu::BsdfSample& s) {
             if (c.transmission == 0.0f) {
-                ASSERT_GT(s.direction.z, 0.0f);
+                ASSERT_GT(s.direction.z, 0.0f) << c.name;
             }
-            float pdf = gpu::bsdfPdf(m, wo, s.direction);
-            ASSERT_NEAR(s.pdf, pdf, 1e-6f * pdf) << c.name;
-            vec3 expected = gpu::evaluateBsdf(m, wo, s.direction) * (std::abs(s.direction.z) / pdf);
-            for (int ch = 0; ch < 3; ++ch)
-                ASSERT_NEAR(s.weight[ch], expected[ch], 1e-5f * std::max(1.0f, expected[ch]))
-                    << c.name;
-        }
+        };
+        ASSERT_NO_FATAL_FAILURE(test::expectSamplesAgreeWithEvaluation(
+            c.material(), c.wo(), 20000, 12, 1e-6f, 1e-5f, c.name, staysAboveUnlessGlass));
     }
 }
 

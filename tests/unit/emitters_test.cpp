@@ -8,7 +8,7 @@
 #include "../support/chi_square.h"
 #include "prepare/emitters.h"
 #include "prepare/prepared_scene.h"
-#include "prepare/scene_view.h"
+#include "prepare/prepared_scene_view.h"
 #include "reference/scene_tracer.h"
 #include "reference/stack_intersector.h"
 #include "shared/lights.h"

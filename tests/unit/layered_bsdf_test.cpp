@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/adaptive_simpson.h"
 #include "../support/furnace.h"
 #include "shared/albedo_lookup.h"
 #include "shared/bsdf.h"
@@ -26,30 +27,10 @@ using glm::vec3;
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kSize = VKPT_ALBEDO_TABLE_SIZE;
 
-template <typename F>
-double simpson(const F& f, double a, double b, double fa, double fm, double fb, double whole,
-               double eps, int depth) {
-    const double m = 0.5 * (a + b);
-    const double flm = f(0.5 * (a + m)), frm = f(0.5 * (m + b));
-    const double left = (m - a) / 6.0 * (fa + 4.0 * flm + fm);
-    const double right = (b - m) / 6.0 * (fm + 4.0 * frm + fb);
-    const double delta = left + right - whole;
-    if (depth <= 0 || std::abs(delta) <= 15.0 * eps) return left + right + delta / 15.0;
-    return simpson(f, a, m, fa, flm, fm, left, 0.5 * eps, depth - 1) +
-           simpson(f, m, b, fm, frm, fb, right, 0.5 * eps, depth - 1);
-}
-
-// Adaptive Simpson (Kuncir 1962; Lyness 1969) over 16 first panels, to an absolute tolerance.
+// Adaptive Simpson (tests/support/adaptive_simpson.h) over 16 first panels, to an absolute
+// tolerance.
 template <typename F> double integrate(const F& f, double a, double b, double eps) {
-    const int panels = 16;
-    const double h = (b - a) / panels;
-    double sum = 0.0;
-    for (int p = 0; p < panels; ++p) {
-        const double x0 = a + h * p, x1 = x0 + h, xm = 0.5 * (x0 + x1);
-        const double f0 = f(x0), fm = f(xm), f1 = f(x1);
-        sum += simpson(f, x0, x1, f0, fm, f1, h / 6.0 * (f0 + 4.0 * fm + f1), eps / panels, 14);
-    }
-    return sum;
+    return test::adaptiveSimpson(f, a, b, {16, 0.0, eps, 14});
 }
 
 // ---------------------------------------------------------------------------------------------

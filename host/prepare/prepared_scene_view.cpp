@@ -1,5 +1,5 @@
-// scene_view.cpp — spans over a PreparedScene for the shared code.
-#include "prepare/scene_view.h"
+// prepared_scene_view.cpp — spans over a PreparedScene for the shared code.
+#include "prepare/prepared_scene_view.h"
 
 namespace vkpt {
 

@@ -1,6 +1,6 @@
-// scene_view.h — the prepared scene as the shared surface, material and light code reads it on
-// the CPU (shaders/shared/scene_view.h): spans over its arrays and the features the kernels
-// would be specialised for.
+// prepared_scene_view.h — the prepared scene as the shared surface, material and light code
+// reads it on the CPU: a SceneView (shaders/shared/scene_view.h) of spans over its arrays and
+// the features the kernels would be specialised for.
 #pragma once
 
 #include "prepare/prepared_scene.h"
