@@ -44,7 +44,8 @@ RenderRunOptions runOptions(const std::string& program, const ProgramOptions& in
     options.afterPass = [&tracker, printLines, program](const PassFigures& figures,
                                                         const RenderOutput* output) {
         const ConvergencePoint& point = tracker.record(figures, output);
-        if (printLines) std::fprintf(stderr, "%s: %s\n", program.c_str(), describePoint(point).c_str());
+        if (printLines)
+            std::fprintf(stderr, "%s: %s\n", program.c_str(), describePoint(point).c_str());
         return tracker.targetReached();
     };
     return options;
@@ -68,8 +69,9 @@ int runRenderProgram(const std::string& program, const ProgramOptions& invocatio
     // Before the device and the load, so that a stop during them still ends with the image
     // and the state (vkpt names its device once the handlers are in place).
     installStopHandlers();
-    executor.start();
+    // The --reference image next: like the outputs, a wrong file costs a second.
     const std::optional<Image> reference = loadReferenceFor(invocation.convergence, settings);
+    executor.start();
     SceneSetup setup = setUpScene(settings, program,
                                   [&](const Scene& scene) { executor.sceneLoaded(scene, part); });
     part.attachScene(setup);

@@ -48,8 +48,7 @@ private:
             const bool more = runBatch();
             if (observe()) return RenderStop::TargetError;
             if (!more)
-                return executor_.activePixels() == 0 &&
-                               executor_.samplesDone() < executor_.budget()
+                return executor_.activePixels() == 0 && executor_.samplesDone() < executor_.budget()
                            ? RenderStop::Converged
                            : RenderStop::Budget;
             if (options_.interrupt && options_.interrupt->load()) return RenderStop::Interrupted;
@@ -81,7 +80,8 @@ private:
         const std::uint32_t k = nextBatch();
         const Clock::time_point begin = Clock::now();
         const std::uint64_t samples = executor_.runBatch(k);
-        if (samples > 0) secondsPerPixelSample_ = secondsBetween(begin, Clock::now()) / double(samples);
+        if (samples > 0)
+            secondsPerPixelSample_ = secondsBetween(begin, Clock::now()) / double(samples);
         ++batches_;
         return executor_.samplesDone() < executor_.budget() && executor_.activePixels() > 0;
     }

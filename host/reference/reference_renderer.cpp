@@ -246,9 +246,8 @@ public:
 
     std::uint64_t activePixels() const override {
         return std::uint64_t(
-            std::count_if(job_.pixels.begin(), job_.pixels.end(), [&](const PixelWork& w) {
-                return !w.converged && w.taken < budget();
-            }));
+            std::count_if(job_.pixels.begin(), job_.pixels.end(),
+                          [&](const PixelWork& w) { return !w.converged && w.taken < budget(); }));
     }
 
     // The first round takes one sample per pixel to measure the rate; later ones what fits in

@@ -1,8 +1,9 @@
 // wavefront.h — vkpt's executor: the wavefront path tracer on a Vulkan compute device, run by
-// the render driver (driver/render_driver.h). Passes of k samples for every active pixel (chunked to the path slots), each pass one command
-// buffer of all its bounces, sized on the device by indirect dispatches; the host reads one
-// counter block per pass to plan the next. Same integrators, random numbers and decisions as
-// the CPU reference, so that at one seed the images agree pixel by pixel up to float rounding.
+// the render driver (driver/render_driver.h). Passes of k samples for every active pixel (chunked
+// to the path slots), each pass one command buffer of all its bounces, sized on the device by
+// indirect dispatches; the host reads one counter block per pass to plan the next. Same
+// integrators, random numbers and decisions as the CPU reference, so that at one seed the images
+// agree pixel by pixel up to float rounding.
 #pragma once
 
 #include <atomic>
@@ -12,9 +13,9 @@
 #include <vector>
 
 #include "common/device_stats.h"
-#include "driver/render_run.h"
 #include "common/render_settings.h"
 #include "common/render_stats.h"
+#include "driver/render_run.h"
 #include "image/render_output.h"
 #include "prepare/prepared_scene.h"
 #include "render/wavefront_kernels.h"
