@@ -203,7 +203,8 @@ struct PixelState {
 #ifdef __cplusplus
 static_assert(sizeof(FrameParams) == 176 && offsetof(FrameParams, seed) == 80 &&
               offsetof(FrameParams, adaptiveDarkFloor) == 124 &&
-              offsetof(FrameParams, samplerSetup) == 136 && offsetof(FrameParams, sampleClamp) == 140 &&
+              offsetof(FrameParams, samplerSetup) == 136 &&
+              offsetof(FrameParams, sampleClamp) == 140 &&
               offsetof(FrameParams, environment) == 144);
 static_assert(sizeof(PassParams) == 32);
 static_assert(sizeof(PathState) == 64 && offsetof(PathState, radiance) == 16 &&
