@@ -55,12 +55,19 @@ VKPT_FN uint makeSamplerSetup(uint kind, uint width, uint height, uint samplesPe
     return kind | (blockBits << 8u) | (mortonBits << 16u);
 }
 
-// Bits of x and y interleaved (x in the even bits), `bits` of each.
-VKPT_FN uint mortonCode(uint x, uint y, uint bits) {
-    uint code = 0u;
-    for (uint i = 0u; i < bits; ++i)
-        code |= (((x >> i) & 1u) << (2u * i)) | (((y >> i) & 1u) << (2u * i + 1u));
-    return code;
+// The low 16 bits of v moved to the even bit positions.
+VKPT_FN uint spreadBits(uint v) {
+    v &= 0x0000ffffu;
+    v = (v | (v << 8u)) & 0x00ff00ffu;
+    v = (v | (v << 4u)) & 0x0f0f0f0fu;
+    v = (v | (v << 2u)) & 0x33333333u;
+    v = (v | (v << 1u)) & 0x55555555u;
+    return v;
+}
+
+// Bits of x and y (each below 2^16) interleaved, x in the even bits.
+VKPT_FN uint mortonCode(uint x, uint y) {
+    return spreadBits(x) | (spreadBits(y) << 1u);
 }
 
 // Entry `digit` of the permutation of {0, 1, 2, 3} that `choice` selects: a Fisher–Yates
@@ -109,14 +116,13 @@ VKPT_FN uvec2 sobolPairBits(uint setup, uint width, uint seed, uint pixel, uint 
     uint withinMask = (1u << blockBits) - 1u;
     uint key = pcgHash(seed ^ pcgHash(pair ^ pcgHash(sampleIndex >> blockBits)));
     uint coordinateMask = (1u << mortonBits) - 1u;
-    uint code =
-        mortonCode((pixel % width) & coordinateMask, (pixel / width) & coordinateMask, mortonBits);
+    uint code = mortonCode((pixel % width) & coordinateMask, (pixel / width) & coordinateMask);
     uint original = (code << blockBits) | (sampleIndex & withinMask);
     uint index = (shuffleMortonDigits(code, mortonBits, key) << blockBits) |
                  (nestedUniformScramble(original, pcgHash(key + 1u)) & withinMask);
-    uvec2 point = sobolPoint(index);
-    return uvec2(nestedUniformScramble(point.x, pcgHash(key + 2u)),
-                 nestedUniformScramble(point.y, pcgHash(key + 3u)));
+    // sobolPoint(index) scrambled, without reversing each coordinate twice.
+    return uvec2(owenScrambleReversed(index, pcgHash(key + 2u)),
+                 owenScrambleReversed(sobolSecondDimensionReversed(index), pcgHash(key + 3u)));
 }
 
 // The pairs of one (bounce, dimension): which 0 gives .xy, which 1 gives .zw.

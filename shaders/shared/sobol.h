@@ -19,23 +19,25 @@ namespace vkpt::gpu {
 // (0,2)-sequence: every aligned run of 2^m points is a (0,m,2)-net, one point in each of the
 // 2^m elementary intervals of every shape. Every further dimension of the sampler reuses this
 // pair with its own scrambles and shuffles (sampler.h), so no larger table is needed.
-#define SOBOL_DIRECTION_0 0x80000000u
 #define SOBOL_BITS 32u
 
-// Dimension 1's value of `index` (dimension 0's is bitfieldReverse(index)).
-VKPT_FN uint sobolSecondDimension(uint index) {
-    uint value = 0u;
-    uint direction = SOBOL_DIRECTION_0;
-    for (uint bits = index; bits != 0u; bits >>= 1u) {
-        if ((bits & 1u) != 0u) value ^= direction;
-        direction ^= direction >> 1u;
-    }
-    return value;
+// Dimension 1's value of `index` without the loop over its bits: direction j has the
+// (bit-reversed) bit i set exactly when C(j, i) is odd, that is (Lucas's theorem) when the bits
+// of i are a subset of the bits of j. So the reversed value's bit i is the parity of the index's
+// bits j ⊇ i, a superset sum over the five bits of a position, one shift per bit
+// (tests/unit/sobol_test.cpp checks it against the directions of the recurrence above).
+VKPT_FN uint sobolSecondDimensionReversed(uint index) {
+    index ^= (index >> 1u) & 0x55555555u;
+    index ^= (index >> 2u) & 0x33333333u;
+    index ^= (index >> 4u) & 0x0f0f0f0fu;
+    index ^= (index >> 8u) & 0x00ff00ffu;
+    index ^= (index >> 16u) & 0x0000ffffu;
+    return index;
 }
 
 // Point `index` of the sequence as two 32-bit binary fractions.
 VKPT_FN uvec2 sobolPoint(uint index) {
-    return uvec2(bitfieldReverse(index), sobolSecondDimension(index));
+    return uvec2(bitfieldReverse(index), bitfieldReverse(sobolSecondDimensionReversed(index)));
 }
 
 // One hash for keys and seeds: pcg (Jarzynski and Olano, "Hash Functions for GPU Rendering",
@@ -57,6 +59,12 @@ VKPT_FN uint laineKarrasPermutation(uint x, uint seed) {
     x ^= x * 0xc7afe638u;
     x ^= x * 0x8d22f6e6u;
     return x;
+}
+
+// Owen scrambling of a binary fraction given bit-reversed (Burley, section 3): each digit of the
+// fraction is flipped as a function of the digits above it. Returns the scrambled fraction.
+VKPT_FN uint owenScrambleReversed(uint reversed, uint seed) {
+    return bitfieldReverse(laineKarrasPermutation(reversed, seed));
 }
 
 // Owen scrambling of a binary fraction (Burley, section 3): between two bit reversals, each
