@@ -15,13 +15,11 @@ namespace vkpt::gpu {
 using glm::abs;
 using glm::atan; // atan(y, x) is GLSL's two-argument arctangent
 using glm::bitCount;
-using glm::bitfieldReverse;
 using glm::clamp;
 using glm::cross;
 using glm::dot;
 using glm::exp;
 using glm::findLSB;
-using glm::findMSB;
 using glm::floatBitsToInt;
 using glm::floatBitsToUint;
 using glm::floor;

@@ -8,6 +8,8 @@
 
 #ifdef __cplusplus
 namespace vkpt::gpu {
+using glm::bitfieldReverse; // GLSL built-ins that host_device.h does not already name
+using glm::findMSB;
 #endif
 
 // The sequence's direction numbers are Joe and Kuo's ("Constructing Sobol sequences with better
