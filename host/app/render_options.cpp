@@ -34,6 +34,12 @@ ToneMap parseToneMap(const std::string& text) {
     throw InputError("option --tonemap: '" + text + "' is not one of neutral, clamp");
 }
 
+Sampler parseSampler(const std::string& text) {
+    if (text == "sobol") return Sampler::Sobol;
+    if (text == "independent") return Sampler::Independent;
+    throw InputError("option --sampler: '" + text + "' is not one of sobol, independent");
+}
+
 LightSampling parseLightSampling(const std::string& text) {
     if (text == "light") return LightSampling::Light;
     if (text == "hemisphere") return LightSampling::Hemisphere;
@@ -68,6 +74,11 @@ void addImageOptions(CommandLine& cl, RenderSettings& s) {
     cl.add({"seed", {}, "N", "random seed (same seed, same image)", [&s](auto v) {
                 s.seed = parseUnsigned("seed", v[0]);
             }});
+    cl.add({"sampler",
+            {},
+            "NAME",
+            "sobol (scrambled, blue-noise error; the default) or independent",
+            [&s](auto v) { s.sampler = parseSampler(v[0]); }});
 }
 
 void addIntegratorOptions(CommandLine& cl, RenderSettings& s) {

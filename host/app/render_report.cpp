@@ -29,6 +29,7 @@ void writeSettings(JsonWriter& json, const RenderSettings& s) {
     json.field("width", s.width).field("height", s.height).field("spp", s.samplesPerPixel);
     json.field("maxDepth", s.maxDepth).field("rrStartDepth", s.rrStartDepth).field("seed", s.seed);
     json.field("integrator", integratorName(s.integrator));
+    json.field("sampler", s.sampler == Sampler::Sobol ? "sobol" : "independent");
     json.field("lightSampling", s.lightSampling == LightSampling::Light ? "light" : "hemisphere");
     json.field("lightSamples", s.lightSamples);
     json.field("adaptive", s.adaptive.enabled).field("adaptiveBatch", s.adaptive.batchSize);

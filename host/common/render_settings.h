@@ -20,6 +20,9 @@ enum class DefaultLight : std::uint32_t { Auto = 0, Off = 1 };
 // --tonemap: how 8-bit output maps linear radiance (after the exposure) into [0, 1]
 // (image/tone_map.h): a plain clamp or the Khronos PBR Neutral operator (the default).
 enum class ToneMap : std::uint32_t { Clamp = 0, PbrNeutral = 1 };
+// --sampler: where a sample's numbers come from (shared/sampler.h): the scrambled Sobol sequence
+// with pixels in Morton order (the default), or independent random numbers (shared/rng.h).
+enum class Sampler : std::uint32_t { Sobol = 0, Independent = 1 };
 
 struct AdaptiveSettings {
     bool enabled = false;
@@ -37,6 +40,7 @@ struct RenderSettings {
     std::uint32_t maxDepth = 16;    // scattering events: 0 = emitters only, 1 = direct
     std::uint32_t rrStartDepth = 3; // Russian roulette from this scattering event on
     std::uint32_t seed = 0;
+    Sampler sampler = Sampler::Sobol;
     std::uint32_t threads = 0; // 0 = all cores
     Integrator integrator = Integrator::Path;
     LightSampling lightSampling = LightSampling::Light;

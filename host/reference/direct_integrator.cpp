@@ -5,7 +5,6 @@
 #include "shared/materials.h"
 #include "shared/path_rules.h"
 #include "shared/ray_offset.h"
-#include "shared/rng.h"
 #include "shared/sampling.h"
 #include "shared/scene_environment.h"
 #include "shared/surface.h"
@@ -21,8 +20,7 @@ glm::vec3 directByHemisphere(IntegratorContext& context, const SampleKey& key,
     glm::vec3 origin = gpu::offsetFromSurface(s.position, s.geometricNormal, s.coordinateScale);
     glm::vec3 sum(0.0f);
     for (std::uint32_t i = 0; i < context.settings.lightSamples; ++i) {
-        glm::vec4 u =
-            gpu::randomFloats(key.seed, key.pixel, key.sampleIndex, 0, DIM_LIGHT_FIRST + i);
+        glm::vec4 u = gpu::lightSampleOrder(sampleFloats(key, 0, DIM_LIGHT_FIRST + i));
         glm::vec3 local = gpu::sampleUniformHemisphere(glm::vec2(u.y, u.z));
         glm::vec3 direction = gpu::basisToWorld(basis, local);
         if (glm::dot(direction, s.geometricNormal) <= 0.0f) continue;
@@ -46,8 +44,7 @@ glm::vec3 directByLights(IntegratorContext& context, const SampleKey& key,
                          const gpu::SurfacePoint& s) {
     glm::vec3 sum(0.0f);
     for (std::uint32_t i = 0; i < context.settings.lightSamples; ++i) {
-        glm::vec4 u =
-            gpu::randomFloats(key.seed, key.pixel, key.sampleIndex, 0, DIM_LIGHT_FIRST + i);
+        glm::vec4 u = gpu::lightSampleOrder(sampleFloats(key, 0, DIM_LIGHT_FIRST + i));
         DirectLightSample d = sampleDirectLight(context.tracer, s, u);
         if (d.contributes) sum += d.unweighted / d.lightPdf;
     }

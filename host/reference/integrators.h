@@ -4,15 +4,25 @@
 #include "common/render_settings.h"
 #include "reference/scene_tracer.h"
 #include "shared/sample_features.h"
+#include "shared/sampler.h"
 
 namespace vkpt {
 
-// Which random numbers a camera sample uses: see shared/rng.h.
+// Which numbers a camera sample draws (shared/sampler.h): the render's sampler setup and image
+// width with the sample's seed, pixel and index.
 struct SampleKey {
+    std::uint32_t samplerSetup = 0;
+    std::uint32_t width = 0;
     std::uint32_t seed = 0;
     std::uint32_t pixel = 0;
     std::uint32_t sampleIndex = 0;
 };
+
+// The four numbers of one (bounce, dimension) of the sample (docs/integrator.md).
+inline glm::vec4 sampleFloats(const SampleKey& key, std::uint32_t bounce, std::uint32_t dimension) {
+    return gpu::sampleFloats(key.samplerSetup, key.width, key.seed, key.pixel, key.sampleIndex,
+                             bounce, dimension);
+}
 
 struct IntegratorContext {
     const RenderSettings& settings;

@@ -7,7 +7,6 @@
 #include "shared/lights.h"
 #include "shared/path_rules.h"
 #include "shared/ray_offset.h"
-#include "shared/rng.h"
 #include "shared/sampling.h"
 #include "shared/volume.h"
 
@@ -30,8 +29,7 @@ glm::vec3 estimateDirectWithMis(IntegratorContext& context, const SampleKey& key
     const float n = float(lightSamples);
     glm::vec3 sum(0.0f);
     for (std::uint32_t i = 0; i < lightSamples; ++i) {
-        glm::vec4 u = gpu::randomFloats(key.seed, key.pixel, key.sampleIndex, vertex.bounce,
-                                        DIM_LIGHT_FIRST + i);
+        glm::vec4 u = gpu::lightSampleOrder(sampleFloats(key, vertex.bounce, DIM_LIGHT_FIRST + i));
         DirectLightSample d = sampleDirectLight(context.tracer, vertex.surface, u);
         if (!d.contributes) continue;
         glm::vec3 unweighted = d.unweighted;
@@ -52,7 +50,7 @@ struct ScatterSample {
 
 // DIM_BSDF: u.xy the direction, u.z the roulette, u.w the lobe (docs/integrator.md).
 ScatterSample sampleScatter(const SampleKey& key, const PathVertex& vertex) {
-    glm::vec4 u = gpu::randomFloats(key.seed, key.pixel, key.sampleIndex, vertex.bounce, DIM_BSDF);
+    glm::vec4 u = sampleFloats(key, vertex.bounce, DIM_BSDF);
     const gpu::SurfacePoint& s = vertex.surface;
     gpu::Basis basis = gpu::makeBasis(s.shadingNormal);
     ScatterSample sample;

@@ -15,13 +15,13 @@
 
 #include "common/errors.h"
 #include "common/progress.h"
+#include "common/sampler_setup.h"
 #include "driver/render_driver.h"
 #include "reference/integrators.h"
 #include "reference/pixel_accumulator.h"
 #include "reference/stack_intersector.h"
 #include "shared/adaptive.h"
 #include "shared/camera.h"
-#include "shared/rng.h"
 #include "shared/sample_guard.h"
 #include "shared/sampling.h"
 #include "state/pixel_features.h"
@@ -78,13 +78,14 @@ void renderPixel(RenderJob& job, IntegratorContext& context, std::uint32_t x, st
     const RenderSettings& settings = job.settings;
     const AdaptiveSettings& adaptive = settings.adaptive;
     const std::uint32_t pixel = y * job.camera.width + x;
+    const std::uint32_t setup = samplerSetupFor(settings, job.camera.width, job.camera.height);
     PixelWork& work = job.pixels[std::size_t(y - job.plan.crop.y0) * job.plan.crop.width() +
                                  (x - job.plan.crop.x0)];
     PixelAccumulator& accumulator = work.accumulator;
     while (work.taken < job.roundEnd && !work.converged) {
         const std::uint32_t s = job.plan.range.begin + work.taken;
-        SampleKey key{settings.seed, pixel, s};
-        glm::vec4 jitter = gpu::randomFloats(key.seed, pixel, s, 0, DIM_CAMERA);
+        SampleKey key{setup, job.camera.width, settings.seed, pixel, s};
+        glm::vec4 jitter = sampleFloats(key, 0, DIM_CAMERA);
         glm::vec2 film(float(x) + jitter.x, float(y) + jitter.y);
         CameraRay ray{gpu::cameraRayOrigin(job.camera, film),
                       gpu::cameraRayDirection(job.camera, film)};

@@ -14,6 +14,7 @@
 #include "common/errors.h"
 #include "common/phase_log.h"
 #include "common/progress.h"
+#include "common/sampler_setup.h"
 #include "driver/render_driver.h"
 #include "gpu/context.h"
 #include "gpu/submit.h"
@@ -80,6 +81,7 @@ gpu::FrameParams makeFrameParams(const RenderSettings& settings, const gpu::Came
     f.adaptiveDarkFloor = darkFloor(settings.exposure);
     f.slotCount = slotCount;
     f.pixelCount = camera.width * camera.height;
+    f.samplerSetup = samplerSetupFor(settings, camera.width, camera.height);
     f.sampleClamp = settings.clamp;
     f.environment = scene.environment;
     return f;

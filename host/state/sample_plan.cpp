@@ -29,6 +29,10 @@ const char* integratorName(const RenderSettings& s) {
     return "?";
 }
 
+const char* samplerName(Sampler sampler) {
+    return sampler == Sampler::Sobol ? "sobol" : "independent";
+}
+
 // %a prints a float exactly, so that two keys are equal exactly when the values are.
 std::string exactFloat(float value) {
     char text[64];
@@ -66,6 +70,7 @@ SampleRange taskSampleRange(std::uint32_t samplesPerPixel, const TaskShare& task
 
 std::string settingsKey(const RenderSettings& s) {
     std::string key = "integrator=" + std::string(integratorName(s));
+    key += " sampler=" + std::string(samplerName(s.sampler));
     key += " max-depth=" + std::to_string(s.maxDepth);
     key += " rr-depth=" + std::to_string(s.rrStartDepth);
     key += " light-samples=" +

@@ -29,8 +29,8 @@ struct SamplePlan {
     SampleRange range; // the sample indices each pixel is given (its budget)
 };
 
-// The canonical text of every setting that changes a sample's value (integrator, depths, light
-// sampling, path filter, clamp, adaptive rule with its dark floor); the scene, camera and
+// The canonical text of every setting that changes a sample's value (integrator, sampler, depths,
+// light sampling, path filter, clamp, adaptive rule with its dark floor); the scene, camera and
 // environment are in the scene hash, the seed and image size in StateIdentity. Options that
 // only change how fast the same samples are made (--general, --threads, --path-slots) and
 // what is done with the finished image (--exposure, outside adaptive sampling) are left out.

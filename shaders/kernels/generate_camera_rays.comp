@@ -6,7 +6,7 @@
 #include "lib/features.glsl"
 #include "lib/frame.glsl"
 #include "shared/camera.h"
-#include "shared/rng.h"
+#include "shared/sampler.h"
 
 layout(local_size_x = WORKGROUP_SIZE) in;
 
@@ -29,7 +29,8 @@ void main() {
     uint x = pixel % frame.camera.width;
     uint y = pixel / frame.camera.width;
     // The reference's camera sample (docs/integrator.md): a one-pixel box filter.
-    vec4 jitter = randomFloats(frame.seed, pixel, sampleIndex, 0u, DIM_CAMERA);
+    vec4 jitter = sampleFloats(frame.samplerSetup, frame.camera.width, frame.seed, pixel,
+                               sampleIndex, 0u, DIM_CAMERA);
     vec2 film = vec2(float(x) + jitter.x, float(y) + jitter.y);
     vec3 direction = cameraRayDirection(frame.camera, film);
     pathStates[slot].throughput = vec3(1.0);

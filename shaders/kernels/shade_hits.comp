@@ -15,7 +15,7 @@ VKPT_DECLARE_BUFFERS(SHADE_HITS_BINDINGS)
 
 #include "lib/counters.glsl"
 #include "lib/lights.glsl"
-#include "shared/rng.h"
+#include "shared/sampler.h"
 #include "shared/volume.h"
 
 // Ray i of this bounce: what it hit, whose path it carries, and its light-sample records.
@@ -26,7 +26,8 @@ struct Vertex {
 };
 
 vec4 random4(PathState state, uint dimension) {
-    return randomFloats(frame.seed, state.pixel, state.sampleIndex, passParams.bounce, dimension);
+    return sampleFloats(frame.samplerSetup, frame.camera.width, frame.seed, state.pixel,
+                        state.sampleIndex, passParams.bounce, dimension);
 }
 
 // Stores write only what a record needs, field by field: lavapipe writes a storage buffer one
@@ -74,7 +75,8 @@ void writePathLightSamples(Vertex vertex, PathState state) {
     float count = float(n);
     for (uint k = 0u; k < n; ++k) {
         float pdfLight, pdfBsdf;
-        ShadowRay shadow = makeLightSampleRay(vertex.surface, random4(state, DIM_LIGHT_FIRST + k),
+        ShadowRay shadow = makeLightSampleRay(vertex.surface,
+                                              lightSampleOrder(random4(state, DIM_LIGHT_FIRST + k)),
                                               pdfLight, pdfBsdf);
         if (shadow.flags != SHADOW_NONE) {
             // Inside a volume the shadow ray crosses its medium (glass boundaries block it).
@@ -154,7 +156,7 @@ void writeHemisphereProbes(Vertex vertex, PathState state) {
     vec3 origin = offsetFromSurface(s.position, s.geometricNormal, s.coordinateScale);
     uint n = frame.lightSamples;
     for (uint k = 0u; k < n; ++k) {
-        vec4 u = random4(state, DIM_LIGHT_FIRST + k);
+        vec4 u = lightSampleOrder(random4(state, DIM_LIGHT_FIRST + k));
         vec3 local = sampleUniformHemisphere(vec2(u.y, u.z));
         vec3 direction = basisToWorld(basis, local);
         ShadowRay probe = ShadowRay(vec3(0.0), SHADOW_NONE, vec3(0.0), VKPT_FAR, vec3(0.0), 0.0);
@@ -172,7 +174,8 @@ void writeDirectLightSamples(Vertex vertex, PathState state) {
     uint n = frame.lightSamples;
     for (uint k = 0u; k < n; ++k) {
         float pdfLight, pdfBsdf;
-        ShadowRay shadow = makeLightSampleRay(vertex.surface, random4(state, DIM_LIGHT_FIRST + k),
+        ShadowRay shadow = makeLightSampleRay(vertex.surface,
+                                              lightSampleOrder(random4(state, DIM_LIGHT_FIRST + k)),
                                               pdfLight, pdfBsdf);
         if (shadow.flags != SHADOW_NONE) shadow.contribution = shadow.contribution / pdfLight;
         storeLightSample(vertex.ray * n + k, shadow);
@@ -207,8 +210,8 @@ void shadeMiss(RayRecord record) {
         state.throughput *= beerLambertTransmittance(state.mediumCoefficient, VKPT_FAR);
     if (frame.integrator == INTEGRATOR_PATH && bounce > 0u) {
         float pdfLight = environmentLightPdf(unit);
-        radiance =
-            radiance * emissionMisWeight(state.previousBsdfPdf, float(frame.lightSamples), pdfLight);
+        radiance = radiance *
+                   emissionMisWeight(state.previousBsdfPdf, float(frame.lightSamples), pdfLight);
     }
     pathStates[record.slot].radiance = state.radiance + state.throughput * radiance;
 }

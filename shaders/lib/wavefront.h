@@ -92,8 +92,8 @@ struct FrameParams {
     float adaptiveDarkFloor; // ADAPTIVE_DARK_FLOOR · 2^-EV
     uint slotCount;          // path slots; each half of the rays buffer holds this many
     uint pixelCount;         // each half of the activePixels buffer holds this many
-    uint unused0;
-    float sampleClamp; // --clamp: largest component a sample may keep; SAMPLE_CLAMP_OFF: none
+    uint samplerSetup;       // shared/sampler.h: makeSamplerSetup of the render
+    float sampleClamp;       // --clamp: largest component a sample may keep; SAMPLE_CLAMP_OFF: none
     EnvironmentParams environment; // emitterIndex NO_EMITTER: rays that leave see black
 };
 
@@ -203,7 +203,8 @@ struct PixelState {
 #ifdef __cplusplus
 static_assert(sizeof(FrameParams) == 176 && offsetof(FrameParams, seed) == 80 &&
               offsetof(FrameParams, adaptiveDarkFloor) == 124 &&
-              offsetof(FrameParams, unused0) == 136 && offsetof(FrameParams, sampleClamp) == 140 &&
+              offsetof(FrameParams, samplerSetup) == 136 &&
+              offsetof(FrameParams, sampleClamp) == 140 &&
               offsetof(FrameParams, environment) == 144);
 static_assert(sizeof(PassParams) == 32);
 static_assert(sizeof(PathState) == 64 && offsetof(PathState, radiance) == 16 &&

@@ -218,6 +218,7 @@ TEST_F(FarmCli, MergeRefusesPartsThatDoNotBelongTogether) {
     part("a1.exr", {"--task", "1/2"});
     part("seed.exr", {"--task", "1/2", "--seed", "5"});
     part("depth.exr", {"--task", "1/2", "--max-depth", "2"});
+    part("sampler.exr", {"--task", "1/2", "--sampler", "independent"});
     part("scene.exr", {"--task", "1/2"}, VKPT_SCENES_DIR "/furnace.gltf");
     part("all.exr", {});
     std::filesystem::copy_file(path("a1.exr"), path("truncated.exr"));
@@ -231,6 +232,7 @@ TEST_F(FarmCli, MergeRefusesPartsThatDoNotBelongTogether) {
 
     expectMergeRefused({"a0.exr", "seed.exr"}, "seed.exr", "seed 5 differs");
     expectMergeRefused({"a0.exr", "depth.exr"}, "depth.exr", "settings");
+    expectMergeRefused({"a0.exr", "sampler.exr"}, "sampler.exr", "sampler=independent");
     expectMergeRefused({"a0.exr", "scene.exr"}, "scene.exr", "another scene than");
     expectMergeRefused({"a0.exr", "all.exr"}, "all.exr", "its samples [0,4)");
     expectMergeRefused({"a0.exr", "truncated.exr"}, "truncated.exr", "");

@@ -55,7 +55,7 @@ EnvironmentParams makeEnvironment(Values& x) {
 }
 
 // camera, seed ... adaptiveMinSamples, adaptiveTolerance, adaptiveDarkFloor, slotCount,
-// pixelCount, unused0, sampleClamp, environment.
+// pixelCount, samplerSetup, sampleClamp, environment.
 FrameParams makeFrameParams(Values& x) {
     return {makeCamera(x), x.u(), x.u(), x.u(), x.u(), x.u(), x.u(), x.u(), x.u(),
             x.u(),         x.u(), x.f(), x.f(), x.u(), x.u(), x.u(), x.f(), makeEnvironment(x)};

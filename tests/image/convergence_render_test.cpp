@@ -1,8 +1,10 @@
 // convergence_render_test.cpp — vkpt buying accuracy with time on lavapipe: a time limit stops
 // at a pass end with the image so far, a target error stops the render once the estimate
-// crosses it (and that estimate is within 25 % of the true relMSE), and a reference
+// crosses it (and that estimate is within 25 % of the true relMSE with independent samples, an
+// upper bound of it with the Sobol sampler's stratified ones), and a reference
 // gives an error after every pass at log-spaced sample counts.
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include "convergence/convergence.h"
@@ -37,6 +39,8 @@ protected:
         return options;
     }
 
+    double trueOverEstimatedError(RenderSettings settings);
+
     LoadedTestScene box_ = loadTestScene("cornell-box.gltf");
 };
 
@@ -61,28 +65,48 @@ TEST_F(ConvergenceRender, ATimeLimitStopsAtAPassEndWithTheImageSoFar) {
     EXPECT_GT(estimateFromVariance(result.output).minSamples, 1u) << "every pixel has samples";
 }
 
-TEST_F(ConvergenceRender, ATargetErrorStopsOnceTheEstimateCrossesIt) {
+// A render to kTarget, stopped by the estimate from the variances: the true relMSE at the stop
+// over the estimate. The truth is measured against a 2048-spp reference, less that reference's
+// own relMSE (about 2e-4, its estimate from its variances).
+double ConvergenceRender::trueOverEstimatedError(RenderSettings settings) {
     constexpr double kTarget = 0.004; // crossed after the estimate's minimum of 64 spp
-    const RenderSettings settings = testSettings(32, 4096);
     ConvergenceTracker tracker(nullptr, kTarget);
     const WavefrontResult result = render(settings, tracked(tracker));
     EXPECT_EQ(result.stop, RenderStop::TargetError);
     const std::vector<ConvergencePoint>& curve = tracker.curve();
-    ASSERT_GE(curve.size(), 2u);
+    EXPECT_GE(curve.size(), 2u);
+    if (curve.size() < 2) return std::nan("");
     EXPECT_LE(tracker.trackedError(curve.back()), kTarget);
     EXPECT_FALSE(tracker.trackedError(curve[curve.size() - 2]) <= kTarget) << "the first below";
     EXPECT_GT(curve.back().figures.samplesPerPixel, kMinSamplesForEstimate);
     EXPECT_LT(curve.back().figures.samplesPerPixel, 400u);
-    // The estimate against the truth, less the 2048-spp reference's own relMSE (about 2e-4,
-    // its estimate from its variances).
     RenderSettings truthSettings = testSettings(32, 2048);
     truthSettings.seed = 99;
     const RenderOutput truthRender = renderTestScene(box_, truthSettings);
     const double truth = compareWithReference(result.output.image, truthRender.image).relMse -
                          estimateFromVariance(truthRender).estimatedRelMse;
     const double estimate = curve.back().estimatedRelMse;
-    EXPECT_GT(truth / estimate, 0.8) << "true " << truth << ", estimated " << estimate;
-    EXPECT_LT(truth / estimate, 1.25) << "true " << truth << ", estimated " << estimate;
+    std::printf("true relMSE %.4g, estimated %.4g, ratio %.3f\n", truth, estimate,
+                truth / estimate);
+    return truth / estimate;
+}
+
+// σ²/n is the variance of a mean of independent samples: with independent numbers the estimate
+// is the truth, within 25 %.
+TEST_F(ConvergenceRender, ATargetErrorStopsOnceTheEstimateCrossesIt) {
+    RenderSettings settings = testSettings(32, 4096);
+    settings.sampler = Sampler::Independent;
+    const double ratio = trueOverEstimatedError(settings);
+    EXPECT_GT(ratio, 0.8);
+    EXPECT_LT(ratio, 1.25);
+}
+
+// A pixel's Sobol samples are stratified, so their mean varies less than σ²/n says: the estimate
+// is an upper bound of the truth (measured 0.38 of it here), and a target error is reached, not
+// promised and missed. The bound allows the independent case's 25 %.
+TEST_F(ConvergenceRender, WithTheSobolSamplerTheEstimateBoundsTheTrueError) {
+    const double ratio = trueOverEstimatedError(testSettings(32, 4096));
+    EXPECT_LT(ratio, 1.25);
 }
 
 TEST_F(ConvergenceRender, AReferenceGivesTheErrorAfterEveryPassAtLogSpacedCounts) {

@@ -7,9 +7,9 @@
 #include <cmath>
 #include <string>
 
+#include "common/sampler_setup.h"
 #include "shared/camera.h"
 #include "shared/ray_offset.h"
-#include "shared/rng.h"
 #include "wavefront_test_support.h"
 
 namespace vkpt {
@@ -89,13 +89,16 @@ TEST_F(Glass, AbsorbingSlabTransmitsTheBeerLambertFraction) {
         double(RAY_OFFSET_EPSILONS) * double(FLOAT_EPSILON) * kSlabCoordinateScale;
     std::array<RenderOutput, 2> outputs = renderBoth(slab, settings);
     const char* names[] = {"vkpt", "vkpt-ref"};
+    // The camera samples the renderers drew (shared/sampler.h).
+    const std::uint32_t setup = samplerSetupFor(settings, settings.width, settings.height);
     for (std::uint32_t y = 0; y < settings.height; ++y)
         for (std::uint32_t x = 0; x < settings.width; ++x) {
             const std::uint32_t pixel = y * settings.width + x;
             glm::dvec3 expected(0.0);
             double smallestCos = 1.0;
             for (std::uint32_t s = 0; s < settings.samplesPerPixel; ++s) {
-                glm::vec4 u = gpu::randomFloats(settings.seed, pixel, s, 0, DIM_CAMERA);
+                glm::vec4 u = gpu::sampleFloats(setup, settings.width, settings.seed, pixel, s, 0,
+                                                DIM_CAMERA);
                 glm::vec3 d =
                     gpu::cameraRayDirection(camera, glm::vec2(float(x) + u.x, float(y) + u.y));
                 const double cosine = std::abs(double(d.z)) / double(glm::length(d));

@@ -43,6 +43,14 @@ TEST_F(SameSeed, PathTracerMatchesTheReference) {
     expectAgreement("path", "cornell-box.gltf", settings);
 }
 
+// The default sampler is Sobol (shared/sampler.h); the independent one must agree as well.
+TEST_F(SameSeed, IndependentSamplerMatchesTheReference) {
+    RenderSettings settings = testSettings(32, 16);
+    settings.seed = 3;
+    settings.sampler = Sampler::Independent;
+    expectAgreement("path_independent", "cornell-box.gltf", settings);
+}
+
 TEST_F(SameSeed, PathTracerWithSeveralLightSamplesMatchesTheReference) {
     RenderSettings settings = testSettings(24, 8);
     settings.seed = 5;

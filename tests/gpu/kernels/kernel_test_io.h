@@ -11,20 +11,21 @@
 namespace vkpt::gpu::test {
 #endif
 
-// run_rng: one call of randomBits and randomFloats per record.
+// run_rng: one call of randomBits, randomFloats and shared/sampler.h's sampleFloats per record.
 struct RngInput {
     uint seed;
     uint pixel;
     uint sampleIndex;
     uint bounce;
     uint dimension;
+    uint samplerSetup; // makeSamplerSetup's word
+    uint width;        // the image width sampleFloats reads the pixel's coordinates with
     uint unused0;
-    uint unused1;
-    uint unused2;
 };
 struct RngOutput {
     uvec4 bits;
     vec4 floats;
+    vec4 sampled; // sampleFloats
 };
 
 // run_sampling: every function of shared/sampling.h on one record.
@@ -117,7 +118,7 @@ struct LoopParams {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(RngInput) == 32 && sizeof(RngOutput) == 32);
+static_assert(sizeof(RngInput) == 32 && sizeof(RngOutput) == 48);
 static_assert(sizeof(SamplingInput) == 64 && sizeof(SamplingOutput) == 96);
 static_assert(sizeof(IntersectInput) == 112 && sizeof(IntersectOutput) == 80);
 static_assert(sizeof(WideBvhNode) == 4 * LAYOUT_WORDS_BVH_NODE &&

@@ -96,7 +96,7 @@ void putFrameParams(FrameParams frame) {
     putFloat(frame.adaptiveDarkFloor);
     putUint(frame.slotCount);
     putUint(frame.pixelCount);
-    putUint(frame.unused0);
+    putUint(frame.samplerSetup);
     putFloat(frame.sampleClamp);
     putEnvironment(frame.environment);
 }

@@ -1,9 +1,10 @@
-// run_rng.comp — shared/rng.h on the device, one record per invocation, for comparison with C++.
+// run_rng.comp — shared/rng.h and shared/sampler.h on the device, one record per invocation,
+// for comparison with C++.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "kernel_test_io.h"
 #include "lib/buffers.glsl"
-#include "shared/rng.h"
+#include "shared/sampler.h"
 
 layout(local_size_x = WORKGROUP_SIZE) in;
 layout(push_constant) uniform Params {
@@ -22,4 +23,6 @@ void main() {
         randomBits(key.seed, key.pixel, key.sampleIndex, key.bounce, key.dimension);
     rngOutputs[i].floats =
         randomFloats(key.seed, key.pixel, key.sampleIndex, key.bounce, key.dimension);
+    rngOutputs[i].sampled = sampleFloats(key.samplerSetup, key.width, key.seed, key.pixel,
+                                         key.sampleIndex, key.bounce, key.dimension);
 }

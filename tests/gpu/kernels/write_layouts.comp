@@ -104,7 +104,7 @@ FrameParams takeFrameParams() {
     frame.adaptiveDarkFloor = takeFloat();
     frame.slotCount = takeUint();
     frame.pixelCount = takeUint();
-    frame.unused0 = takeUint();
+    frame.samplerSetup = takeUint();
     frame.sampleClamp = takeFloat();
     frame.environment = takeEnvironment();
     return frame;
