@@ -18,13 +18,12 @@ double parsePositive(const std::string& option, const std::string& text) {
 
 } // namespace
 
-void addConvergenceOptions(CommandLine& cl, ConvergenceSettings& s, ConvergenceOptionSet set) {
+void addConvergenceOptions(CommandLine& cl, ConvergenceSettings& s) {
     cl.add({"reference",
             {},
             "FILE",
             "report RMSE and relMSE against this PFM (same size) after every pass",
             [&s](auto v) { s.referencePath = v[0]; }});
-    if (set == ConvergenceOptionSet::ReferenceOnly) return;
     cl.add({"target-error",
             {},
             "E",

@@ -1,6 +1,6 @@
 // convergence_options.h — the options that buy accuracy with time: --reference (error against
-// a reference after every pass), --target-error and --time-limit (vkpt only: they stop the
-// pass loop).
+// a reference after every batch), --target-error and --time-limit (they stop the render
+// driver's loop, for vkpt and vkpt-ref alike).
 #pragma once
 
 #include <optional>
@@ -11,10 +11,7 @@
 
 namespace vkpt {
 
-enum class ConvergenceOptionSet { ReferenceOnly, All };
-
-void addConvergenceOptions(CommandLine& commandLine, ConvergenceSettings& settings,
-                           ConvergenceOptionSet set);
+void addConvergenceOptions(CommandLine& commandLine, ConvergenceSettings& settings);
 
 // The --reference image at the render's size (loadReference), or none without --reference.
 std::optional<Image> loadReferenceFor(const ConvergenceSettings& convergence,

@@ -14,7 +14,7 @@ void parseProgramOptions(const ProgramCommandLine& program, ProgramOptions& opti
                          char** argv) {
     CommandLine commandLine(program.program);
     addRenderOptions(commandLine, options.settings);
-    addConvergenceOptions(commandLine, options.convergence, program.convergence);
+    addConvergenceOptions(commandLine, options.convergence);
     addFarmOptions(commandLine, options.farm);
     if (program.addOwnOptions) program.addOwnOptions(commandLine);
     commandLine.add({"help", {'h'}, "", "show this help", [&](auto) { options.showHelp = true; }});

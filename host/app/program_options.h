@@ -14,7 +14,7 @@ namespace vkpt {
 
 struct ProgramOptions {
     RenderSettings settings;
-    ConvergenceSettings convergence; // vkpt-ref: --reference only
+    ConvergenceSettings convergence;
     FarmSettings farm;
     bool showHelp = false;
 };
@@ -22,7 +22,6 @@ struct ProgramOptions {
 // What a program adds to the shared command line.
 struct ProgramCommandLine {
     std::string program;              // in messages and the usage line
-    ConvergenceOptionSet convergence; // which of the convergence options it takes
     // Adds the program's own options, listed after the shared ones and before --help.
     std::function<void(CommandLine&)> addOwnOptions;
     // True when the options given ask for no render (vkpt --list-devices): then no scene file

@@ -17,7 +17,7 @@ namespace {
 
 ProgramOptions parseArguments(const std::string& program, int argc, char** argv) {
     ProgramOptions invocation;
-    parseProgramOptions({program, ConvergenceOptionSet::All, {}, {}}, invocation, argc, argv);
+    parseProgramOptions({program, {}, {}}, invocation, argc, argv);
     return invocation;
 }
 
