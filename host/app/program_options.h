@@ -21,7 +21,7 @@ struct ProgramOptions {
 
 // What a program adds to the shared command line.
 struct ProgramCommandLine {
-    std::string program;              // in messages and the usage line
+    std::string program; // in messages and the usage line
     // Adds the program's own options, listed after the shared ones and before --help.
     std::function<void(CommandLine&)> addOwnOptions;
     // True when the options given ask for no render (vkpt --list-devices): then no scene file

@@ -65,8 +65,7 @@ Invocation parseArguments(int argc, char** argv) {
     // Drivers that honour a pipeline cache compile each kernel once, not once per render.
     invocation.gpu.persistentPipelineCache = true;
     const ProgramCommandLine commandLine{
-        kProgram,
-        [&invocation](CommandLine& own) { addDeviceOptions(own, invocation); },
+        kProgram, [&invocation](CommandLine& own) { addDeviceOptions(own, invocation); },
         [&invocation] { return invocation.listDevices; }};
     parseProgramOptions(commandLine, invocation, argc, argv);
     return invocation;
