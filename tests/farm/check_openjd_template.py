@@ -9,6 +9,7 @@ vkpt-ref on a tiny image, and the merge must succeed.
     check_openjd_template.py TEMPLATE VKPT_REF VKPT_MERGE SCENE WORK_DIR
 """
 import os
+import shutil
 import re
 import subprocess
 import sys
@@ -92,7 +93,10 @@ def main():
         template = yaml.safe_load(f)
     check_shape(template)
     check_references(template)
-    os.makedirs(work, exist_ok=True)
+    # A fresh folder: the template resumes a task from a part it finds there, and a part left
+    # by an earlier run of another build is another render.
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
     out = os.path.join(work, "out")
     values = {f"Param.{p['name']}": p.get("default") for p in template["parameterDefinitions"]}
     values.update({"Param.SceneFile": scene, "Param.OutputDir": out, "Param.Tasks": 3,
