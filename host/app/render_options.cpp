@@ -34,6 +34,12 @@ ToneMap parseToneMap(const std::string& text) {
     throw InputError("option --tonemap: '" + text + "' is not one of neutral, clamp");
 }
 
+LightSampler parseLightSampler(const std::string& text) {
+    if (text == "bvh") return LightSampler::Bvh;
+    if (text == "power") return LightSampler::Power;
+    throw InputError("option --light-sampler: '" + text + "' is not one of bvh, power");
+}
+
 LightSampling parseLightSampling(const std::string& text) {
     if (text == "light") return LightSampling::Light;
     if (text == "hemisphere") return LightSampling::Hemisphere;
@@ -89,6 +95,12 @@ void addIntegratorOptions(CommandLine& cl, RenderSettings& s) {
             "KIND",
             "direct integrator: light (default) or hemisphere",
             [&s](auto v) { s.lightSampling = parseLightSampling(v[0]); }});
+    cl.add({"light-sampler",
+            {},
+            "KIND",
+            "how a light sample chooses its emitter: bvh (default: a light BVH weighing power, "
+            "distance and orientation) or power",
+            [&s](auto v) { s.lightSampler = parseLightSampler(v[0]); }});
     cl.add({"hemisphere", {'H'}, "", "same as --light-sampling hemisphere", [&s](auto) {
                 s.lightSampling = LightSampling::Hemisphere;
             }});

@@ -72,7 +72,8 @@ SceneSetup setUpScene(const RenderSettings& settings, const std::string& program
     SceneCamera camera = selectCamera(scene, settings.cameraIndex, aspect);
     setup.camera = makeGpuCamera(camera, settings.width, settings.height);
     ScopedPhase preparePhase("prepare");
-    setup.prepared = prepareScene(scene, {{}, settings.general});
+    setup.prepared =
+        prepareScene(scene, {{}, settings.general, settings.lightSampler == LightSampler::Bvh});
     preparePhase.end();
     setup.placedTriangles = scene.placedTriangleCount();
     setup.instances = scene.instances.size();

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <map>
 
+#include "prepare/emitter_power.h"
 #include "shared/intersect.h"
 #include "shared/sampling.h"
 
@@ -91,7 +92,7 @@ class ListBuilder {
 public:
     void add(const gpu::Emitter& emitter, double power) {
         list_.emitters.push_back(emitter);
-        powers_.push_back(power);
+        list_.powers.push_back(power);
         list_.totalPower += power;
     }
     std::uint32_t size() const { return std::uint32_t(list_.emitters.size()); }
@@ -99,10 +100,12 @@ public:
     EmitterList finish() {
         double running = 0.0;
         list_.cdf.resize(list_.emitters.size());
+        // Emitters all of power 0 (black textures) are never chosen: probabilities 0.
+        const double total = list_.totalPower > 0.0 ? list_.totalPower : 1.0;
         for (std::size_t i = 0; i < list_.emitters.size(); ++i) {
-            running += powers_[i];
-            list_.emitters[i].selectProbability = float(powers_[i] / list_.totalPower);
-            list_.cdf[i] = float(running / list_.totalPower);
+            running += list_.powers[i];
+            list_.emitters[i].selectProbability = float(list_.powers[i] / total);
+            list_.cdf[i] = float(running / total);
         }
         // Rounding must not leave u close to 1 without an emitter.
         if (!list_.cdf.empty()) list_.cdf.back() = 1.0f;
@@ -111,7 +114,6 @@ public:
 
 private:
     EmitterList list_;
-    std::vector<double> powers_;
 };
 
 // The emitting primitives in the loaded scene's order (its triangles, then its spheres) rather
@@ -136,8 +138,9 @@ emittingPrimitivesInSceneOrder(std::span<const gpu::Triangle> primitives,
 
 } // namespace
 
-EmitterList buildEmitters(std::span<gpu::Triangle> primitives,
-                          std::span<const gpu::Material> materials, const EmitterSources& sources) {
+EmitterList buildEmitters(std::span<gpu::Triangle> primitives, const gpu::SceneView& scene,
+                          const EmitterSources& sources) {
+    const std::span<const gpu::Material> materials = scene.materials;
     ListBuilder builder;
     std::map<SurfaceKey, std::uint32_t> surfaces;
     for (gpu::Triangle& primitive : primitives)
@@ -145,7 +148,7 @@ EmitterList buildEmitters(std::span<gpu::Triangle> primitives,
     for (std::uint32_t i : emittingPrimitivesInSceneOrder(primitives, materials)) {
         gpu::Triangle& primitive = primitives[i];
         const gpu::Material& material = materials[primitive.materialIndex];
-        const double radiance = luminanceOf(material.emission);
+        const double radiance = meanEmittedLuminance(i, scene);
         if (gpu::isSpherePrimitive(primitive)) {
             const double radius = primitive.v1.x;
             const double area = 4.0 * kPi * radius * radius;

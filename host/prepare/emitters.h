@@ -7,13 +7,15 @@
 
 #include "scene/scene.h"
 #include "shared/host_device.h"
+#include "shared/scene_view.h"
 
 namespace vkpt {
 
 struct EmitterList {
     std::vector<gpu::Emitter> emitters;
-    std::vector<float> cdf;  // inclusive selection CDF, one entry per emitter, the last 1
-    double totalPower = 0.0; // Σ of the powers below, in radiance units × area × solid angle
+    std::vector<float> cdf;     // inclusive selection CDF, one entry per emitter, the last 1
+    std::vector<double> powers; // each emitter's selection weight, as described below
+    double totalPower = 0.0;    // Σ of the powers below, in radiance units × area × solid angle
 };
 
 // What buildEmitters needs besides the primitives: the scene's lights and, for the lights that
@@ -26,12 +28,15 @@ struct EmitterSources {
 
 // Builds the list and writes each emitting primitive's emitterIndex (NO_EMITTER elsewhere).
 // Powers (the selection weights): an emitting surface π·L·A per emitting side (triangle) or
-// π·L·4πr² (sphere), a point light 4π·I, a spot light 2π(1 − (cos θi + cos θo)/2)·I (pbrt-v3's
-// estimate), a directional light π·R²·E, the environment as given; L, I and E by luminance.
-// Zero-area triangles cannot be hit or sampled, so they are left out; a triangle that repeats
-// an earlier emitting one (same corners in the same order, same material) shares its record.
-EmitterList buildEmitters(std::span<gpu::Triangle> primitives,
-                          std::span<const gpu::Material> materials, const EmitterSources& sources);
+// π·L·4πr² (sphere), with L its emission's luminance averaged over it, emissive texture included
+// (emitter_power.h; 0 for a black-textured one, which is then never chosen), a point light 4π·I, a
+// spot light 2π(1 − (cos θi + cos θo)/2)·I (pbrt-v3's estimate), a directional light π·R²·E, the
+// environment as given; L, I and E by luminance. Zero-area triangles cannot be hit or sampled, so
+// they are left out; a triangle that repeats an earlier emitting one (same corners in the same
+// order, same material) shares its record. `scene` reads the primitives' materials, texture
+// coordinates and textures.
+EmitterList buildEmitters(std::span<gpu::Triangle> primitives, const gpu::SceneView& scene,
+                          const EmitterSources& sources);
 
 float triangleArea(const gpu::Triangle& triangle);
 

@@ -11,6 +11,8 @@
 #include "prepare/environment_map.h"
 #include "prepare/gpu_materials.h"
 #include "prepare/gpu_primitives.h"
+#include "prepare/light_tree.h"
+#include "prepare/scene_view.h"
 #include "prepare/two_level_bvh.h"
 #include "shared/albedo_lookup.h"
 
@@ -101,13 +103,20 @@ PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options) {
     const double radius = sceneBoundingRadius(scene);
     double environmentPower = 0.0;
     prepareEnvironment(scene, radius, prepared, environmentPower);
-    EmitterList emitters = buildEmitters(prepared.triangles, prepared.materials,
+    EmitterList emitters = buildEmitters(prepared.triangles, makeSceneView(prepared),
                                          {scene.lights, environmentPower, radius});
     prepared.emitters = std::move(emitters.emitters);
     // The loader's count cannot know which emitting triangles repeat one another.
     prepared.usedFeatures.emitterCount = std::uint32_t(prepared.emitters.size());
     prepared.features.emitterCount = prepared.usedFeatures.emitterCount;
     if (prepared.features.emitterCdf()) prepared.emitterCdf = std::move(emitters.cdf);
+    prepared.usedFeatures.lightTree = options.lightTree && prepared.emitters.size() > 1;
+    prepared.features.lightTree = prepared.usedFeatures.lightTree;
+    if (prepared.features.lightTree) {
+        ScopedPhase lightTreePhase("light BVH");
+        prepared.lightTree = buildLightTree(prepared.emitters, emitters.powers, prepared.triangles,
+                                            prepared.materials);
+    }
     prepared.totalEmittedPower = emitters.totalPower;
     prepared.environment.emitterIndex = findEnvironmentEmitter(prepared.emitters);
     return prepared;

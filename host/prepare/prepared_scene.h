@@ -37,8 +37,9 @@ struct PreparedScene {
     std::vector<std::uint32_t> texels; // every texture's RGBA8 texels, see gpu::TextureInfo
     std::vector<gpu::Emitter> emitters;
     std::vector<float> emitterCdf; // inclusive selection CDF; empty unless features.emitterCdf()
-    gpu::EnvironmentParams environment{};     // emitterIndex NO_EMITTER without an environment
-    std::vector<glm::vec4> environmentTexels; // the map's RGB (w unused), row 0 at the top
+    std::vector<gpu::LightTreeNode> lightTree; // the light BVH; empty unless features.lightTree
+    gpu::EnvironmentParams environment{};      // emitterIndex NO_EMITTER without an environment
+    std::vector<glm::vec4> environmentTexels;  // the map's RGB (w unused), row 0 at the top
     std::vector<float> environmentCdf; // height rows of width conditional entries, then marginal
     // The layered BSDF's albedo tables (shared/albedo_lookup.h); empty unless
     // features.metallicRoughnessMaterials.
@@ -58,6 +59,8 @@ struct PrepareOptions {
     BvhBuildOptions bvh;
     // --general: every array present and every feature on, as if the scene used everything.
     bool general = false;
+    // --light-sampler bvh: several emitters are chosen by the light BVH rather than by power.
+    bool lightTree = false;
 };
 
 PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options = {});
