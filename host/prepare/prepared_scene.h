@@ -59,8 +59,8 @@ struct PrepareOptions {
     BvhBuildOptions bvh;
     // --general: every array present and every feature on, as if the scene used everything.
     bool general = false;
-    // --light-sampler bvh: several emitters are chosen by the light BVH rather than by power.
-    bool lightTree = false;
+    // --light-sampler: several emitters are chosen by the light BVH (the default) or by power.
+    bool lightTree = true;
 };
 
 PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options = {});

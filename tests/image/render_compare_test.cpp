@@ -117,6 +117,16 @@ TEST_F(SameSeed, EmittingSidesMatchTheReference) {
     expectAgreement("emission_sides", "test/emission-sides.gltf", settings);
 }
 
+// Thousands of small emitters chosen by the light BVH, and by power.
+TEST_F(SameSeed, ManyLightsMatchTheReference) {
+    RenderSettings settings = testSettings(32, 8);
+    settings.seed = 7;
+    settings.lightSamples = 2;
+    expectAgreement("many_lights_bvh", "test/many-lights.gltf", settings);
+    expectAgreement("many_lights_power", loadTestScene("test/many-lights.gltf", {{}, false, false}),
+                    settings);
+}
+
 // The scene model's feature test scenes (scenes/test/features: spheres, GGX materials,
 // textures and alpha cut-outs, punctual lights, the environment map), each under the path
 // tracer and both direct estimators.
@@ -163,6 +173,12 @@ TEST_F(DifferentSeeds, QuadLightAgreesPixelByPixelInDistribution) {
     RenderSettings settings = testSettings(24, 32);
     settings.lightSamples = 2;
     expectSameDistribution("z_quad_light", "test/quad-light-floor.gltf", settings);
+}
+
+// The device's walk of the light BVH and its MIS pmf against the reference's, in distribution
+// (tests/render/light_sampler_test.cpp holds the tree against power sampling).
+TEST_F(DifferentSeeds, ManyLightsAgreePixelByPixelInDistribution) {
+    expectSameDistribution("z_many_lights", "test/many-lights.gltf", testSettings(24, 64));
 }
 
 class Determinism : public GpuTest {};
