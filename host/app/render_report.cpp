@@ -110,7 +110,7 @@ void writeFeatures(JsonWriter& json, const RenderReport& r) {
     json.field("pointLights", f.pointLights).field("spotLights", f.spotLights);
     json.field("directionalLights", f.directionalLights);
     json.field("environment", f.environment).field("environmentMap", f.environmentMap);
-    json.field("emitterCount", f.emitterCount);
+    json.field("emitterCount", f.emitterCount).field("lightTree", f.lightTree);
     json.endObject();
 }
 

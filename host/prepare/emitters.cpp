@@ -7,7 +7,7 @@
 #include <cstring>
 #include <map>
 
-#include "prepare/emitter_power.h"
+#include "prepare/emission_mean.h"
 #include "shared/intersect.h"
 #include "shared/sampling.h"
 
@@ -138,9 +138,8 @@ emittingPrimitivesInSceneOrder(std::span<const gpu::Triangle> primitives,
 
 } // namespace
 
-EmitterList buildEmitters(std::span<gpu::Triangle> primitives, const gpu::SceneView& scene,
-                          const EmitterSources& sources) {
-    const std::span<const gpu::Material> materials = scene.materials;
+EmitterList buildEmitters(const Scene& scene, std::span<gpu::Triangle> primitives,
+                          std::span<const gpu::Material> materials, const EmitterSources& sources) {
     ListBuilder builder;
     std::map<SurfaceKey, std::uint32_t> surfaces;
     for (gpu::Triangle& primitive : primitives)
@@ -148,8 +147,8 @@ EmitterList buildEmitters(std::span<gpu::Triangle> primitives, const gpu::SceneV
     for (std::uint32_t i : emittingPrimitivesInSceneOrder(primitives, materials)) {
         gpu::Triangle& primitive = primitives[i];
         const gpu::Material& material = materials[primitive.materialIndex];
-        const double radiance = meanEmittedLuminance(i, scene);
         if (gpu::isSpherePrimitive(primitive)) {
+            const double radiance = luminanceOf(material.emission);
             const double radius = primitive.v1.x;
             const double area = 4.0 * kPi * radius * radius;
             if (!(area > 0.0)) continue;
@@ -160,6 +159,8 @@ EmitterList buildEmitters(std::span<gpu::Triangle> primitives, const gpu::SceneV
         }
         const float area = triangleArea(primitive);
         if (!(area > 0.0f)) continue;
+        const double radiance =
+            luminanceOf(meanTriangleEmission(scene, primitive.sourceIndex & PRIMITIVE_SOURCE_MASK));
         // A repeat of an emitting triangle (same corners, winding and material) shares the
         // first copy's record: light sampling must pick the surface once, as a ray finds it
         // once, and a ray that finds either copy must see the same light pdf.
@@ -169,7 +170,7 @@ EmitterList buildEmitters(std::span<gpu::Triangle> primitives, const gpu::SceneV
         builder.add(surfaceEmitter(EMITTER_TRIANGLE, i, area),
                     kPi * radiance * double(area) * sides(material));
     }
-    for (const SceneLight& light : sources.lights) {
+    for (const SceneLight& light : scene.lights) {
         const double power = punctualPower(light, sources.sceneRadius);
         if (power > 0.0) builder.add(punctualEmitter(light), power);
     }

@@ -12,7 +12,6 @@
 #include "prepare/gpu_materials.h"
 #include "prepare/gpu_primitives.h"
 #include "prepare/light_tree.h"
-#include "prepare/scene_view.h"
 #include "prepare/two_level_bvh.h"
 #include "shared/albedo_lookup.h"
 
@@ -103,8 +102,10 @@ PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options) {
     const double radius = sceneBoundingRadius(scene);
     double environmentPower = 0.0;
     prepareEnvironment(scene, radius, prepared, environmentPower);
-    EmitterList emitters = buildEmitters(prepared.triangles, makeSceneView(prepared),
-                                         {scene.lights, environmentPower, radius});
+    ScopedPhase emitterPhase("emitters");
+    EmitterList emitters =
+        buildEmitters(scene, prepared.triangles, prepared.materials, {environmentPower, radius});
+    emitterPhase.end();
     prepared.emitters = std::move(emitters.emitters);
     // The loader's count cannot know which emitting triangles repeat one another.
     prepared.usedFeatures.emitterCount = std::uint32_t(prepared.emitters.size());
