@@ -8,7 +8,7 @@
 # embree-ref's with the same sampler in the same run (the benchmarks' baseline, tests/bench).
 #
 #   bash tests/bench/light_sampler_bench.sh [BUILD_DIR] [SCENE ...]
-#   (defaults: build/ci; the Cornell box, the many-lights scene, DamagedHelmet and
+#   (defaults: build/ci; both Cornell boxes, the many-lights scene, DamagedHelmet and
 #   EmissiveStrengthTest; 96 × 96 at 64 spp against 2048, depth 16, 3 runs)
 # SPP, REF_SPP, RES, RUNS and PROGRAMS ("vkpt vkpt-ref embree-ref") override the defaults.
 set -euo pipefail
@@ -16,7 +16,8 @@ cd "$(dirname "$0")/../.."
 build="${1:-build/ci}"
 shift || true
 scenes=("$@")
-[ ${#scenes[@]} -gt 0 ] || scenes=(scenes/cornell-box.gltf scenes/test/many-lights.gltf
+[ ${#scenes[@]} -gt 0 ] || scenes=(scenes/cornell-box.gltf ../shared/scenes/CornellBox/cornellBox.gltf
+    scenes/test/many-lights.gltf
     ../shared/scenes/DamagedHelmet/DamagedHelmet.glb
     ../shared/scenes/EmissiveStrengthTest/EmissiveStrengthTest.glb)
 runs="${RUNS:-3}"
