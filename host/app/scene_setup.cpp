@@ -93,11 +93,12 @@ SceneSetup setUpScene(const RenderSettings& settings, const std::string& program
                      describeFeatures(setup.prepared.usedFeatures).c_str(),
                      settings.general ? " (built for all features: --general)" : "");
     if (settings.verbose) {
-        const auto dark = std::count_if(
-            setup.prepared.emitters.begin(), setup.prepared.emitters.end(),
-            [](const gpu::Emitter& e) { return !(e.selectProbability > 0.0f); });
-        std::fprintf(stderr, "%s: %lld of %zu emitters have power 0 (black emissive texture) "
-                             "and are never chosen\n",
+        const auto dark =
+            std::count_if(setup.prepared.emitters.begin(), setup.prepared.emitters.end(),
+                          [](const gpu::Emitter& e) { return !(e.selectProbability > 0.0f); });
+        std::fprintf(stderr,
+                     "%s: %lld of %zu emitters have power 0 (black emissive texture) "
+                     "and are never chosen\n",
                      program.c_str(), static_cast<long long>(dark), setup.prepared.emitters.size());
     }
     if (setup.prepared.emitters.empty() && settings.integrator != Integrator::Normals)
