@@ -34,7 +34,7 @@ export VKPT_NO_PIPELINE_CACHE=1 # every vkpt run compiles its pipelines, as a fi
 binary() { [ "$1" = embree-ref ] && echo "$build/tests/bench/embree-ref" || echo "$build/host/app/$1"; }
 median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 json_number() { grep -o "\"$2\": *[0-9.e+-]*" "$1" | tail -n 1 | sed 's/.*: *//'; }
-process_seconds() { grep -o '"process": *{"seconds": *[0-9.e+-]*' "$1" | sed 's/.*: *//'; }
+process_seconds() { grep -A1 '"process": {' "$1" | grep -o '"seconds": *[0-9.e+-]*' | sed 's/.*: *//'; }
 
 # embree-ref first, so that the others' times can be given over its own.
 ordered="$(printf '%s\n' $programs | grep -x embree-ref || true) $(printf '%s\n' $programs | grep -vx embree-ref || true)"
@@ -46,7 +46,7 @@ for scene in "${scenes[@]}"; do
     name="$(basename "${scene%.*}")"
     reference="$work/$name.reference.pfm"
     "$(binary vkpt-ref)" -q --spp "$ref_spp" --res "$res" "$res" --seed 1000 -o "$reference" \
-        "$scene" 2>/dev/null
+        "$scene" >/dev/null 2>&1
     declare -A embree_seconds=()
     for program in $ordered; do
         for sampler in power bvh; do
