@@ -35,9 +35,10 @@ ToneMap parseToneMap(const std::string& text) {
 }
 
 LightSampler parseLightSampler(const std::string& text) {
+    if (text == "auto") return LightSampler::Auto;
     if (text == "bvh") return LightSampler::Bvh;
     if (text == "power") return LightSampler::Power;
-    throw InputError("option --light-sampler: '" + text + "' is not one of bvh, power");
+    throw InputError("option --light-sampler: '" + text + "' is not one of auto, bvh, power");
 }
 
 LightSampling parseLightSampling(const std::string& text) {
@@ -98,8 +99,8 @@ void addIntegratorOptions(CommandLine& cl, RenderSettings& s) {
     cl.add({"light-sampler",
             {},
             "KIND",
-            "how a light sample chooses its emitter: bvh (default: a light BVH weighing power, "
-            "distance and orientation) or power",
+            "how a light sample chooses its emitter: bvh (a light BVH weighing power, distance "
+            "and orientation), power, or auto (default: bvh from 16 emitters on)",
             [&s](auto v) { s.lightSampler = parseLightSampler(v[0]); }});
     cl.add({"hemisphere", {'H'}, "", "same as --light-sampling hemisphere", [&s](auto) {
                 s.lightSampling = LightSampling::Hemisphere;

@@ -31,7 +31,9 @@ void writeSettings(JsonWriter& json, const RenderSettings& s) {
     json.field("integrator", integratorName(s.integrator));
     json.field("lightSampling", s.lightSampling == LightSampling::Light ? "light" : "hemisphere");
     json.field("lightSamples", s.lightSamples);
-    json.field("lightSampler", s.lightSampler == LightSampler::Bvh ? "bvh" : "power");
+    json.field("lightSampler", s.lightSampler == LightSampler::Auto  ? "auto"
+                               : s.lightSampler == LightSampler::Bvh ? "bvh"
+                                                                     : "power");
     json.field("adaptive", s.adaptive.enabled).field("adaptiveBatch", s.adaptive.batchSize);
     json.field("adaptiveTolerance", s.adaptive.tolerance);
     json.field("adaptiveMinSamples", s.adaptive.minSamples);

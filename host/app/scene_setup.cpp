@@ -73,8 +73,7 @@ SceneSetup setUpScene(const RenderSettings& settings, const std::string& program
     SceneCamera camera = selectCamera(scene, settings.cameraIndex, aspect);
     setup.camera = makeGpuCamera(camera, settings.width, settings.height);
     ScopedPhase preparePhase("prepare");
-    setup.prepared =
-        prepareScene(scene, {{}, settings.general, settings.lightSampler == LightSampler::Bvh});
+    setup.prepared = prepareScene(scene, {{}, settings.general, settings.lightSampler});
     preparePhase.end();
     setup.placedTriangles = scene.placedTriangleCount();
     setup.instances = scene.instances.size();

@@ -66,6 +66,12 @@ void prepareSingleLevel(const Scene& scene, const PrepareOptions& options, bool 
     prepared.tangents = std::move(primitives.tangents);
 }
 
+bool usesLightTree(LightSampler sampler, std::size_t emitters) {
+    if (emitters <= 1) return false; // nothing to choose
+    if (sampler == LightSampler::Auto) return emitters >= kLightTreeMinEmitters;
+    return sampler == LightSampler::Bvh;
+}
+
 } // namespace
 
 double sceneBoundingRadius(const Scene& scene) {
@@ -111,7 +117,7 @@ PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options) {
     prepared.usedFeatures.emitterCount = std::uint32_t(prepared.emitters.size());
     prepared.features.emitterCount = prepared.usedFeatures.emitterCount;
     if (prepared.features.emitterCdf()) prepared.emitterCdf = std::move(emitters.cdf);
-    prepared.usedFeatures.lightTree = options.lightTree && prepared.emitters.size() > 1;
+    prepared.usedFeatures.lightTree = usesLightTree(options.lightSampler, prepared.emitters.size());
     prepared.features.lightTree = prepared.usedFeatures.lightTree;
     if (prepared.features.lightTree) {
         ScopedPhase lightTreePhase("light BVH");

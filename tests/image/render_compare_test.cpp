@@ -123,7 +123,8 @@ TEST_F(SameSeed, ManyLightsMatchTheReference) {
     settings.seed = 7;
     settings.lightSamples = 2;
     expectAgreement("many_lights_bvh", "test/many-lights.gltf", settings);
-    expectAgreement("many_lights_power", loadTestScene("test/many-lights.gltf", {{}, false, false}),
+    expectAgreement("many_lights_power",
+                    loadTestScene("test/many-lights.gltf", {{}, false, LightSampler::Power}),
                     settings);
 }
 
@@ -147,6 +148,21 @@ TEST_F(SameSeed, FeatureTestScenesMatchTheReference) {
         expectAgreement(name + "_direct_light", scene, settings);
         settings.lightSampling = LightSampling::Hemisphere;
         expectAgreement(name + "_direct_hemisphere", scene, settings);
+    }
+}
+
+// The feature scenes whose emitters are of several kinds (spheres, point, spot and directional
+// lights, the environment under the tree's by-power root, textured emitters), chosen by the
+// light BVH whatever their count.
+TEST_F(SameSeed, FeatureTestScenesByTheLightBvhMatchTheReference) {
+    for (const char* name : {"punctual", "spheres", "environment", "textured"}) {
+        SCOPED_TRACE(name);
+        const std::string path = std::string("test/features/") + name + ".gltf";
+        LoadedTestScene scene = loadFeatureTestScene(path, false, LightSampler::Bvh);
+        RenderSettings settings = testSettings(24, 8);
+        settings.seed = 8;
+        settings.lightSamples = 2;
+        expectAgreement(std::string(name) + "_light_bvh", scene, settings);
     }
 }
 

@@ -64,8 +64,8 @@ BatchStatistics renderBatches(const test::LoadedTestScene& scene) {
 
 TEST(LightSampler, LightBvhAndPowerSamplingConvergeToTheSameImageOnManyLights) {
     const BatchStatistics bvh = renderBatches(test::loadTestScene("test/many-lights.gltf"));
-    const BatchStatistics power =
-        renderBatches(test::loadTestScene("test/many-lights.gltf", {{}, false, false}));
+    const BatchStatistics power = renderBatches(
+        test::loadTestScene("test/many-lights.gltf", {{}, false, LightSampler::Power}));
     // Šidák-corrected over the blocks: a family false-alarm rate of 1e-3.
     const double perBlock = 1.0 - std::pow(1.0 - 1e-3, 1.0 / kBlocks);
     double bvhVariance = 0.0, powerVariance = 0.0;

@@ -34,11 +34,11 @@ struct LoadedTestScene {
 };
 
 // What a test may add to a scene file: an environment (--env, --env-color), the general
-// layout (--general) and the light sampler (--light-sampler; the light BVH by default).
+// layout (--general) and the light sampler (--light-sampler).
 struct TestSceneOptions {
     SceneEnvironment environment;
     bool general = false;
-    bool lightTree = true;
+    LightSampler lightSampler = LightSampler::Auto;
 };
 
 inline LoadedTestScene loadTestScene(const std::string& relative,
@@ -48,7 +48,7 @@ inline LoadedTestScene loadTestScene(const std::string& relative,
     LoadedTestScene loaded{loadGltfScene(scenePath(relative), options), {}};
     loaded.scene.environment = sceneOptions.environment;
     loaded.prepared =
-        prepareScene(loaded.scene, {{}, sceneOptions.general, sceneOptions.lightTree});
+        prepareScene(loaded.scene, {{}, sceneOptions.general, sceneOptions.lightSampler});
     return loaded;
 }
 

@@ -191,8 +191,8 @@ TEST(Emitters, SingleEmitterHasNoCdf) {
 // area emitter is their share of the selection probability from the point (the point light
 // takes the rest), by either sampler.
 TEST(Emitters, LightPdfWithASphereIntegratesToTheAreaEmittersShare) {
-    for (bool lightTree : {false, true}) {
-        PreparedScene prepared = prepareScene(mixedEmitterScene(), {{}, false, lightTree});
+    for (LightSampler sampler : {LightSampler::Power, LightSampler::Bvh}) {
+        PreparedScene prepared = prepareScene(mixedEmitterScene(), {{}, false, sampler});
         const glm::vec3 origin(0.1f, 0.05f, -0.3f);
         const gpu::SceneView view = makeSceneView(prepared);
         double areaShare = 0.0;
@@ -200,7 +200,8 @@ TEST(Emitters, LightPdfWithASphereIntegratesToTheAreaEmittersShare) {
             if (prepared.emitters[e].kind != EMITTER_POINT)
                 areaShare += gpu::emitterSelectProbability(e, prepared.emitters[e], origin, view);
         PdfMean m = integrateLightPdf(prepared, origin, 15);
-        EXPECT_NEAR(m.mean, areaShare, 4.42 * m.standardError) << "light BVH " << lightTree;
+        EXPECT_NEAR(m.mean, areaShare, 4.42 * m.standardError)
+            << "light BVH " << prepared.features.lightTree;
     }
 }
 

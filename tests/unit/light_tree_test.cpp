@@ -55,7 +55,7 @@ Scene manyEmitterScene(std::uint32_t triangles, bool allDoubleSided = false) {
 
 PreparedScene prepareWithLightTree(const Scene& scene) {
     PrepareOptions options;
-    options.lightTree = true;
+    options.lightSampler = LightSampler::Bvh;
     return prepareScene(scene, options);
 }
 
@@ -184,7 +184,7 @@ Scene halfBlackTexturedScene() {
 TEST(LightTree, BlackTexturedEmittersHaveNoPowerAndAreNeverChosen) {
     for (bool tree : {false, true}) {
         PrepareOptions options;
-        options.lightTree = tree;
+        options.lightSampler = tree ? LightSampler::Bvh : LightSampler::Power;
         const PreparedScene prepared = prepareScene(halfBlackTexturedScene(), options);
         ASSERT_EQ(prepared.emitters.size(), 4u);
         const gpu::SceneView view = makeSceneView(prepared);
