@@ -630,6 +630,75 @@ def quad_light_floor():
 
 
 # ---------------------------------------------------------------------------------------------
+# 3b. Many lights
+# ---------------------------------------------------------------------------------------------
+
+ML_FLOOR_HALF = 16.0      # the floor: x, z in [-16, 16]
+ML_GRID = 48              # lamps per side: 48 x 48 = 2304 lamps, 4608 emitting triangles
+ML_LAMP_HALF = 0.06       # each lamp a 0.12 m square
+ML_LAMP_HEIGHT = 0.4      # above the floor, facing down
+ML_RADIANCES = (5.0, 20.0, 60.0)  # dim, medium and bright lamps, one material each
+ML_BLOCK_COUNT = 24       # grey blocks between the lamps, casting shadows
+
+
+def ml_hash(i):
+    """A number in [0, 1) from i (an integer hash, the same on every Python)."""
+    x = (i * 2654435761 + 12345) & 0xffffffff
+    x ^= x >> 16
+    x = (x * 0x45d9f3b) & 0xffffffff
+    x ^= x >> 16
+    return x / 4294967296.0
+
+
+def many_lights():
+    """Thousands of small lamps hung low over a large floor: at any point only the few lamps
+    nearby matter, the case a light BVH is for (docs/integrator.md, "Choosing an emitter")."""
+    doc = GltfDocument()
+    floor = MeshBuilder()
+    floor.add_polygon(rectangle((0.0, 0.0, 0.0), (0.0, 0.0, ML_FLOOR_HALF),
+                                (ML_FLOOR_HALF, 0.0, 0.0)))
+    roots = [doc.add_mesh_node("Floor", floor, doc.add_material("Floor", (0.5, 0.5, 0.5)))]
+    lamps = [MeshBuilder() for _ in ML_RADIANCES]
+    step = 2.0 * ML_FLOOR_HALF / ML_GRID
+    for i in range(ML_GRID):
+        for j in range(ML_GRID):
+            k = i * ML_GRID + j
+            x = -ML_FLOOR_HALF + step * (i + 0.2 + 0.6 * ml_hash(3 * k))
+            z = -ML_FLOOR_HALF + step * (j + 0.2 + 0.6 * ml_hash(3 * k + 1))
+            kind = min(int(ml_hash(3 * k + 2) * 10.0), 9)  # 5 dim, 4 medium, 1 bright in 10
+            mesh = lamps[0 if kind < 5 else 1 if kind < 9 else 2]
+            mesh.add_polygon(rectangle((x, ML_LAMP_HEIGHT, z), (ML_LAMP_HALF, 0.0, 0.0),
+                                       (0.0, 0.0, ML_LAMP_HALF)))
+    for n, (mesh, value) in enumerate(zip(lamps, ML_RADIANCES)):
+        roots.append(doc.add_mesh_node(f"Lamps {n}", mesh,
+                                       doc.add_emitter(f"Lamp {n}", value)))
+    blocks = MeshBuilder()
+    for b in range(ML_BLOCK_COUNT):
+        x = -ML_FLOOR_HALF * 0.8 + 1.6 * ML_FLOOR_HALF * ml_hash(7001 + 2 * b)
+        z = -ML_FLOOR_HALF * 0.8 + 1.6 * ML_FLOOR_HALF * ml_hash(7002 + 2 * b)
+        lo, hi = (x - 0.15, 0.0, z - 0.15), (x + 0.15, 0.3, z + 0.15)
+        for axis in range(3):
+            for side, value in ((-1.0, lo[axis]), (1.0, hi[axis])):
+                if axis == 1 and side < 0.0:
+                    continue  # the bottom lies on the floor
+                centre = [(lo[c] + hi[c]) / 2.0 for c in range(3)]
+                centre[axis] = value
+                half_u = [0.0, 0.0, 0.0]
+                half_v = [0.0, 0.0, 0.0]
+                half_u[(axis + 1) % 3] = (hi[(axis + 1) % 3] - lo[(axis + 1) % 3]) / 2.0
+                half_v[(axis + 2) % 3] = (hi[(axis + 2) % 3] - lo[(axis + 2) % 3]) / 2.0
+                normal = [0.0, 0.0, 0.0]
+                normal[axis] = side
+                blocks.add_polygon(facing(rectangle(centre, half_u, half_v), normal))
+    roots.append(doc.add_mesh_node("Blocks", blocks, doc.add_material("Blocks", (0.6, 0.6, 0.6))))
+    eye = (0.0, 5.0, 12.0)
+    camera = doc.add_camera("Camera", math.radians(50.0))
+    roots.append(doc.add_node("Camera", camera=camera, translation=list(eye),
+                              rotation=look_at_rotation(eye, (0.0, 0.0, 2.0))))
+    return doc.to_json("Many lights", roots)
+
+
+# ---------------------------------------------------------------------------------------------
 # 4. Mirror-symmetric box
 # ---------------------------------------------------------------------------------------------
 
@@ -1144,6 +1213,21 @@ def faces(scene, name, direction):
     return all(dot(triangle_normal(c), direction) > 0.999999 for c, _ in triangles)
 
 
+def check_many_lights(scene):
+    scene.expect(faces(scene, "Floor", (0.0, 1.0, 0.0)), "floor does not face up")
+    lamps = 0
+    for n, value in enumerate(ML_RADIANCES):
+        name = f"Lamps {n}"
+        scene.expect(faces(scene, name, (0.0, -1.0, 0.0)), f"{name} do not face down")
+        scene.expect(radiance(scene.material(f"Lamp {n}")) == [value] * 3, f"{name} radiance")
+        for corners, _ in scene.world_triangles(name):
+            scene.expect(all(abs(p[1] - ML_LAMP_HEIGHT) < 1e-6 and
+                             abs(p[0]) < ML_FLOOR_HALF and abs(p[2]) < ML_FLOOR_HALF
+                             for p in corners), f"{name}: a lamp off its plane or the floor")
+            lamps += 1
+    scene.expect(lamps == 2 * ML_GRID * ML_GRID, f"{lamps} lamp triangles")
+
+
 def check_quad_light_floor(scene):
     scene.expect(faces(scene, "Floor", (0.0, 1.0, 0.0)), "floor does not face up")
     scene.expect(faces(scene, "Light", (0.0, -1.0, 0.0)), "light does not face down")
@@ -1389,6 +1473,7 @@ SCENES = [
     ("test/furnace-double-sided.gltf", lambda: furnace(double_sided=True),
      lambda s: check_closed_sphere(s, inward=False)),
     ("test/quad-light-floor.gltf", quad_light_floor, check_quad_light_floor),
+    ("test/many-lights.gltf", many_lights, check_many_lights),
     ("test/symmetric-box.gltf", symmetric_box, check_symmetric_box),
     ("test/emission-sides.gltf", emission_sides, check_emission_sides),
     ("test/single-triangle.gltf", single_triangle, check_single_triangle),

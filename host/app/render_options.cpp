@@ -40,6 +40,13 @@ Sampler parseSampler(const std::string& text) {
     throw InputError("option --sampler: '" + text + "' is not one of sobol, independent");
 }
 
+LightSampler parseLightSampler(const std::string& text) {
+    if (text == "auto") return LightSampler::Auto;
+    if (text == "bvh") return LightSampler::Bvh;
+    if (text == "power") return LightSampler::Power;
+    throw InputError("option --light-sampler: '" + text + "' is not one of auto, bvh, power");
+}
+
 LightSampling parseLightSampling(const std::string& text) {
     if (text == "light") return LightSampling::Light;
     if (text == "hemisphere") return LightSampling::Hemisphere;
@@ -100,6 +107,12 @@ void addIntegratorOptions(CommandLine& cl, RenderSettings& s) {
             "KIND",
             "direct integrator: light (default) or hemisphere",
             [&s](auto v) { s.lightSampling = parseLightSampling(v[0]); }});
+    cl.add({"light-sampler",
+            {},
+            "KIND",
+            "how a light sample chooses its emitter: bvh (a light BVH weighing power, distance "
+            "and orientation), power, or auto (default: bvh from 16 emitters on)",
+            [&s](auto v) { s.lightSampler = parseLightSampler(v[0]); }});
     cl.add({"hemisphere", {'H'}, "", "same as --light-sampling hemisphere", [&s](auto) {
                 s.lightSampling = LightSampling::Hemisphere;
             }});

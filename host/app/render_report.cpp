@@ -32,6 +32,9 @@ void writeSettings(JsonWriter& json, const RenderSettings& s) {
     json.field("sampler", s.sampler == Sampler::Sobol ? "sobol" : "independent");
     json.field("lightSampling", s.lightSampling == LightSampling::Light ? "light" : "hemisphere");
     json.field("lightSamples", s.lightSamples);
+    json.field("lightSampler", s.lightSampler == LightSampler::Auto  ? "auto"
+                               : s.lightSampler == LightSampler::Bvh ? "bvh"
+                                                                     : "power");
     json.field("adaptive", s.adaptive.enabled).field("adaptiveBatch", s.adaptive.batchSize);
     json.field("adaptiveTolerance", s.adaptive.tolerance);
     json.field("adaptiveMinSamples", s.adaptive.minSamples);
@@ -110,7 +113,7 @@ void writeFeatures(JsonWriter& json, const RenderReport& r) {
     json.field("pointLights", f.pointLights).field("spotLights", f.spotLights);
     json.field("directionalLights", f.directionalLights);
     json.field("environment", f.environment).field("environmentMap", f.environmentMap);
-    json.field("emitterCount", f.emitterCount);
+    json.field("emitterCount", f.emitterCount).field("lightTree", f.lightTree);
     json.endObject();
 }
 

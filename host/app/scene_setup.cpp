@@ -1,6 +1,7 @@
 // scene_setup.cpp — load → BVH → layout → camera, logged on stderr.
 #include "app/scene_setup.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <string>
@@ -74,7 +75,7 @@ SceneSetup setUpScene(const RenderSettings& settings, const std::string& program
     setup.camera = makeGpuCamera(camera, settings.width, settings.height);
     if (afterLoad) afterLoad(scene);
     ScopedPhase preparePhase("prepare");
-    setup.prepared = prepareScene(scene, {{}, settings.general});
+    setup.prepared = prepareScene(scene, {{}, settings.general, settings.lightSampler});
     preparePhase.end();
     setup.placedTriangles = scene.placedTriangleCount();
     setup.instances = scene.instances.size();
@@ -92,6 +93,15 @@ SceneSetup setUpScene(const RenderSettings& settings, const std::string& program
         std::fprintf(stderr, "%s: features: %s%s\n", program.c_str(),
                      describeFeatures(setup.prepared.usedFeatures).c_str(),
                      settings.general ? " (built for all features: --general)" : "");
+    if (settings.verbose) {
+        const auto dark =
+            std::count_if(setup.prepared.emitters.begin(), setup.prepared.emitters.end(),
+                          [](const gpu::Emitter& e) { return !(e.selectProbability > 0.0f); });
+        std::fprintf(stderr,
+                     "%s: %lld of %zu emitters have power 0 (black emissive texture) "
+                     "and are never chosen\n",
+                     program.c_str(), static_cast<long long>(dark), setup.prepared.emitters.size());
+    }
     if (setup.prepared.emitters.empty() && settings.integrator != Integrator::Normals)
         std::fprintf(stderr,
                      "%s: %s: the scene has no emitters; the image will be black (light it with "

@@ -9,6 +9,11 @@ namespace vkpt {
 
 enum class Integrator { Path, Direct, Normals };
 enum class LightSampling { Light, Hemisphere };
+// --light-sampler: how next-event estimation chooses an emitter: by the light BVH's importance
+// from the shading point (shared/light_tree.h), in proportion to power alone, or (auto, the
+// default) by the light BVH in scenes with enough emitters for it to pay (kLightTreeMinEmitters,
+// prepare/prepared_scene.h).
+enum class LightSampler : std::uint32_t { Auto = 0, Bvh = 1, Power = 2 };
 enum class PathFilter : std::uint32_t { All = 0, DirectOnly = 1, IndirectOnly = 2 };
 // --instancing: which meshes placed more than once are kept once and walked through a top-level
 // BVH (docs/scene-model.md, "Instancing"): by the measured rule, all meshes, or none (every
@@ -45,6 +50,7 @@ struct RenderSettings {
     Integrator integrator = Integrator::Path;
     LightSampling lightSampling = LightSampling::Light;
     std::uint32_t lightSamples = 1;
+    LightSampler lightSampler = LightSampler::Auto;
     PathFilter pathFilter = PathFilter::All;
     AdaptiveSettings adaptive;
     float exposure = 0.0f;                 // EV applied to 8-bit output only

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <map>
 
+#include "prepare/emission_mean.h"
 #include "shared/intersect.h"
 #include "shared/sampling.h"
 
@@ -91,7 +92,7 @@ class ListBuilder {
 public:
     void add(const gpu::Emitter& emitter, double power) {
         list_.emitters.push_back(emitter);
-        powers_.push_back(power);
+        list_.powers.push_back(power);
         list_.totalPower += power;
     }
     std::uint32_t size() const { return std::uint32_t(list_.emitters.size()); }
@@ -99,10 +100,12 @@ public:
     EmitterList finish() {
         double running = 0.0;
         list_.cdf.resize(list_.emitters.size());
+        // Emitters all of power 0 (black textures) are never chosen: probabilities 0.
+        const double total = list_.totalPower > 0.0 ? list_.totalPower : 1.0;
         for (std::size_t i = 0; i < list_.emitters.size(); ++i) {
-            running += powers_[i];
-            list_.emitters[i].selectProbability = float(powers_[i] / list_.totalPower);
-            list_.cdf[i] = float(running / list_.totalPower);
+            running += list_.powers[i];
+            list_.emitters[i].selectProbability = float(list_.powers[i] / total);
+            list_.cdf[i] = float(running / total);
         }
         // Rounding must not leave u close to 1 without an emitter.
         if (!list_.cdf.empty()) list_.cdf.back() = 1.0f;
@@ -111,7 +114,6 @@ public:
 
 private:
     EmitterList list_;
-    std::vector<double> powers_;
 };
 
 // The emitting primitives in the loaded scene's order (its triangles, then its spheres) rather
@@ -136,7 +138,7 @@ emittingPrimitivesInSceneOrder(std::span<const gpu::Triangle> primitives,
 
 } // namespace
 
-EmitterList buildEmitters(std::span<gpu::Triangle> primitives,
+EmitterList buildEmitters(const Scene& scene, std::span<gpu::Triangle> primitives,
                           std::span<const gpu::Material> materials, const EmitterSources& sources) {
     ListBuilder builder;
     std::map<SurfaceKey, std::uint32_t> surfaces;
@@ -145,8 +147,8 @@ EmitterList buildEmitters(std::span<gpu::Triangle> primitives,
     for (std::uint32_t i : emittingPrimitivesInSceneOrder(primitives, materials)) {
         gpu::Triangle& primitive = primitives[i];
         const gpu::Material& material = materials[primitive.materialIndex];
-        const double radiance = luminanceOf(material.emission);
         if (gpu::isSpherePrimitive(primitive)) {
+            const double radiance = luminanceOf(material.emission);
             const double radius = primitive.v1.x;
             const double area = 4.0 * kPi * radius * radius;
             if (!(area > 0.0)) continue;
@@ -157,6 +159,8 @@ EmitterList buildEmitters(std::span<gpu::Triangle> primitives,
         }
         const float area = triangleArea(primitive);
         if (!(area > 0.0f)) continue;
+        const double radiance =
+            luminanceOf(meanTriangleEmission(scene, primitive.sourceIndex & PRIMITIVE_SOURCE_MASK));
         // A repeat of an emitting triangle (same corners, winding and material) shares the
         // first copy's record: light sampling must pick the surface once, as a ray finds it
         // once, and a ray that finds either copy must see the same light pdf.
@@ -166,7 +170,7 @@ EmitterList buildEmitters(std::span<gpu::Triangle> primitives,
         builder.add(surfaceEmitter(EMITTER_TRIANGLE, i, area),
                     kPi * radiance * double(area) * sides(material));
     }
-    for (const SceneLight& light : sources.lights) {
+    for (const SceneLight& light : scene.lights) {
         const double power = punctualPower(light, sources.sceneRadius);
         if (power > 0.0) builder.add(punctualEmitter(light), power);
     }

@@ -11,6 +11,7 @@
 #include "prepare/environment_map.h"
 #include "prepare/gpu_materials.h"
 #include "prepare/gpu_primitives.h"
+#include "prepare/light_tree.h"
 #include "prepare/two_level_bvh.h"
 #include "shared/albedo_lookup.h"
 
@@ -65,6 +66,12 @@ void prepareSingleLevel(const Scene& scene, const PrepareOptions& options, bool 
     prepared.tangents = std::move(primitives.tangents);
 }
 
+bool usesLightTree(LightSampler sampler, std::size_t emitters) {
+    if (emitters <= 1) return false; // nothing to choose
+    if (sampler == LightSampler::Auto) return emitters >= kLightTreeMinEmitters;
+    return sampler == LightSampler::Bvh;
+}
+
 } // namespace
 
 double sceneBoundingRadius(const Scene& scene) {
@@ -101,13 +108,22 @@ PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options) {
     const double radius = sceneBoundingRadius(scene);
     double environmentPower = 0.0;
     prepareEnvironment(scene, radius, prepared, environmentPower);
-    EmitterList emitters = buildEmitters(prepared.triangles, prepared.materials,
-                                         {scene.lights, environmentPower, radius});
+    ScopedPhase emitterPhase("emitters");
+    EmitterList emitters =
+        buildEmitters(scene, prepared.triangles, prepared.materials, {environmentPower, radius});
+    emitterPhase.end();
     prepared.emitters = std::move(emitters.emitters);
     // The loader's count cannot know which emitting triangles repeat one another.
     prepared.usedFeatures.emitterCount = std::uint32_t(prepared.emitters.size());
     prepared.features.emitterCount = prepared.usedFeatures.emitterCount;
     if (prepared.features.emitterCdf()) prepared.emitterCdf = std::move(emitters.cdf);
+    prepared.usedFeatures.lightTree = usesLightTree(options.lightSampler, prepared.emitters.size());
+    prepared.features.lightTree = prepared.usedFeatures.lightTree;
+    if (prepared.features.lightTree) {
+        ScopedPhase lightTreePhase("light BVH");
+        prepared.lightTree = buildLightTree(prepared.emitters, emitters.powers, prepared.triangles,
+                                            prepared.materials);
+    }
     prepared.totalEmittedPower = emitters.totalPower;
     prepared.environment.emitterIndex = findEnvironmentEmitter(prepared.emitters);
     return prepared;

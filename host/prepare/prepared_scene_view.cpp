@@ -15,6 +15,7 @@ gpu::SceneView makeSceneView(const PreparedScene& scene) {
     view.textureTexels = scene.texels;
     view.emitters = scene.emitters;
     view.emitterCdf = scene.emitterCdf;
+    view.lightTree = scene.lightTree;
     view.environment = scene.environment;
     view.environmentTexels = scene.environmentTexels;
     view.environmentCdf = scene.environmentCdf;

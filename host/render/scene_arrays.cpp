@@ -48,6 +48,7 @@ const SceneArrayDesc kSceneArrays[] = {
     sceneArray<&PreparedScene::tangents>("triangleTangents", BINDING_TRIANGLE_TANGENTS, kTexels),
     sceneArray<&PreparedScene::materials>("materials", BINDING_MATERIALS, kTexels),
     sceneArray<&PreparedScene::emitters>("emitters", BINDING_EMITTERS, kTexels),
+    sceneArray<&PreparedScene::lightTree>("lightTree", BINDING_LIGHT_TREE, kTexels),
     sceneArray<&PreparedScene::instances>("instances", BINDING_INSTANCES, kTexels),
     sceneArray<&PreparedScene::uvs>("triangleUvs", BINDING_TRIANGLE_UVS, kStorage),
     sceneArray<&PreparedScene::textures>("textures", BINDING_TEXTURES, kTexels),

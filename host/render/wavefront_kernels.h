@@ -37,7 +37,7 @@ std::string_view kernelName(WavefrontKernel kernel);
 // its list in lib/kernel_bindings.h.
 std::span<const KernelBinding> kernelBindings(WavefrontKernel kernel);
 
-inline constexpr std::uint32_t kWavefrontBindingCount = 30; // BINDING_COUNT of lib/wavefront.h
+inline constexpr std::uint32_t kWavefrontBindingCount = 31; // BINDING_COUNT of lib/wavefront.h
 
 // Which buffer each binding number refers to, or which chunks for a scene array split across
 // several (lib/scene_arrays.glsl); a kernel's descriptor set takes its bindings from here.

@@ -131,6 +131,7 @@ std::array<bool, FEATURE_COUNT> SceneFeatures::kernelFeatures() const {
     on[FEATURE_CLEARCOAT] = clearcoatMaterials;
     on[FEATURE_SHEEN] = sheenMaterials;
     on[FEATURE_INSTANCES] = instances;
+    on[FEATURE_LIGHT_TREE] = lightTree;
     return on;
 }
 
@@ -167,6 +168,7 @@ SceneFeatures generalFeatures(const SceneFeatures& used) {
     all.pointLights = all.spotLights = all.directionalLights = true;
     all.environment = all.environmentMap = true;
     all.instances = used.instances;
+    all.lightTree = used.lightTree;
     all.emitterCount = used.emitterCount;
     all.general = true;
     return all;
@@ -201,7 +203,8 @@ std::string describeFeatures(const SceneFeatures& features) {
     appendIf(features.environment && !features.environmentMap, "environment colour", names);
     appendIf(features.environmentMap, "environment map", names);
     names.push_back(std::to_string(features.emitterCount) +
-                    (features.emitterCount == 1 ? " emitter" : " emitters"));
+                    (features.emitterCount == 1 ? " emitter" : " emitters") +
+                    (features.lightTree ? " (light BVH)" : ""));
     return joined(names);
 }
 

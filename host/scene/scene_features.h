@@ -44,6 +44,9 @@ struct SceneFeatures {
     bool environmentMap = false;    // --env image.hdr
     std::uint32_t emitterCount = 0; // everything light sampling chooses from
     bool general = false; // --general: all switches on, and the CDF read even for one emitter
+    // --light-sampler bvh with several emitters: they are chosen by the light BVH, not the power
+    // CDF. A choice of the render, not a feature of the scene: --general keeps it from `used`.
+    bool lightTree = false;
 
     bool textures() const {
         return baseColorTextures || metallicRoughnessTextures || emissiveTextures ||

@@ -44,6 +44,8 @@ layout(constant_id = FEATURE_ENVIRONMENT) const bool featureEnvironment = true;
 layout(constant_id = FEATURE_ENVIRONMENT_MAP) const bool featureEnvironmentMap = true;
 // More than one emitter: selection reads the CDF (emitterCdf).
 layout(constant_id = FEATURE_EMITTER_CDF) const bool featureEmitterCdf = true;
+// Emitters are chosen by the light BVH (lightTree) instead of the power CDF.
+layout(constant_id = FEATURE_LIGHT_TREE) const bool featureLightTree = true;
 // Some material is double-sided: emission may leave the back face.
 layout(constant_id = FEATURE_DOUBLE_SIDED) const bool featureDoubleSided = true;
 // Some material has a normal texture: shading reads triangleTangents and bends the normal.

@@ -54,6 +54,7 @@
     TEXELS(BINDING_MATERIALS)                                                                      \
     TEXELS(BINDING_TEXTURES)                                                                       \
     TEXELS(BINDING_EMITTERS)                                                                       \
+    TEXELS(BINDING_LIGHT_TREE)                                                                     \
     TEXELS(BINDING_PATH_STATE_TEXELS)                                                              \
     TEXELS(BINDING_RAY_TEXELS)                                                                     \
     TEXELS(BINDING_HIT_TEXELS)                                                                     \

@@ -1,7 +1,7 @@
 // lights.glsl — next-event estimation in the kernels: shared/lights.h chooses the light and
 // shared/light_connection.h the shadow ray, which becomes a shadow record for trace_shadow.
 // Needs what lib/surface.glsl needs, and emitterCdf, environmentTexels and environmentCdf
-// declared (and binds the emitters texel view).
+// declared (and binds the emitters and lightTree texel views).
 #ifndef VKPT_LIGHTS_GLSL
 #define VKPT_LIGHTS_GLSL
 

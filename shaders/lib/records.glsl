@@ -34,6 +34,7 @@ VKPT_SCENE_TEXELS(BINDING_MATERIALS, materialTexels)
 VKPT_SCENE_TEXELS(BINDING_TEXTURES, textureInfoTexels)
 VKPT_SCENE_TEXELS(BINDING_EMITTERS, emitterTexels)
 VKPT_SCENE_TEXELS(BINDING_INSTANCES, instanceTexels)
+VKPT_SCENE_TEXELS(BINDING_LIGHT_TREE, lightTreeTexels)
 // Work arrays, sized by the host to fit one binding (host/render/work_buffers.cpp).
 VKPT_WORK_TEXELS(BINDING_RAY_TEXELS, rayTexels)
 VKPT_WORK_TEXELS(BINDING_HIT_TEXELS, hitTexels)
@@ -139,6 +140,15 @@ Emitter fetchEmitter(uint i) {
     vec4 d = texelVec4(RECORD_TEXEL(emitterTexels, 4u, i, 3u));
     return Emitter(texelVec3(a), a.w, texelVec3(b), b.w, texelVec3(c), uintBitsToFloat(c.w), d.x,
                    d.y, d.z, d.w);
+}
+
+LightTreeNode fetchLightTreeNode(uint i) {
+    uvec4 a = RECORD_TEXEL(lightTreeTexels, 4u, i, 0u);
+    uvec4 b = RECORD_TEXEL(lightTreeTexels, 4u, i, 1u);
+    uvec4 c = RECORD_TEXEL(lightTreeTexels, 4u, i, 2u);
+    uvec4 d = RECORD_TEXEL(lightTreeTexels, 4u, i, 3u);
+    return LightTreeNode(texelVec3(a), uintBitsToFloat(a.w), texelVec3(b), uintBitsToFloat(b.w),
+                         texelVec3(c), uintBitsToFloat(c.w), d.x, d.y, d.z, d.w);
 }
 
 RayRecord fetchRay(uint i) {

@@ -40,6 +40,10 @@ Emitter sceneEmitter(uint i) {
     return fetchEmitter(i);
 }
 
+LightTreeNode sceneLightTreeNode(uint i) {
+    return fetchLightTreeNode(i);
+}
+
 uint sceneEmitterCount() {
     return frame.emitterCount;
 }
@@ -98,6 +102,10 @@ bool sceneHasSheen() {
 
 bool sceneHasInstances() {
     return featureInstances;
+}
+
+bool sceneHasLightTree() {
+    return featureLightTree;
 }
 
 // trace_closest's record of a hit as the shared code takes it.

@@ -54,11 +54,12 @@ namespace vkpt::gpu {
 // The AOVs (shared/sample_features.h), only in renders whose output or state records them.
 #define BINDING_SAMPLE_FEATURES 28 // SampleFeatures per slot: its camera sample's first hit
 #define BINDING_PIXEL_FEATURES 29  // PixelFeatures per pixel
-#define BINDING_COUNT 30
+#define BINDING_LIGHT_TREE 30      // LightTreeNode, uniform texel buffer (the light BVH)
+#define BINDING_COUNT 31
 
 // Specialisation constant: the render records AOVs (lib/aovs.glsl). A setting of the render,
 // not a feature of the scene, with an id between the scene features' and the chunk constants'.
-#define SPEC_AOVS 14
+#define SPEC_AOVS 15
 
 // A scene array larger than one binding may hold (maxStorageBufferRange, maxTexelBufferElements,
 // maxMemoryAllocationSize) is split into up to SCENE_ARRAY_MAX_CHUNKS buffers of 2^k elements

@@ -296,6 +296,32 @@ struct Emitter {
     float cosOuterCone;
 };
 
+// The light BVH (shared/light_tree.h, host/prepare/light_tree.h): a binary tree over the
+// emitters that a shading point walks from the root, choosing each child by an importance that
+// weighs its power, distance and orientation (Conty Estevez and Kulla 2018; pbrt-v4 section
+// 12.6.3), in place of the power CDF. Node i < emitter count is emitter i's leaf (power 0 and
+// no parent for an emitter that is never chosen), the root is node `emitter count`, the other
+// inner nodes follow it. Parent links let the pmf of a given emitter be recomputed for MIS.
+#define LIGHT_NODE_LEAF 1u      // an emitter; child0 is its index
+#define LIGHT_NODE_TWO_SIDED 2u // some emitter below emits on both sides of its axis
+#define LIGHT_NODE_BY_POWER                                                                        \
+    4u // the children are chosen by power alone (infinite lights, and
+       // the root's split between them and the rest)
+#define NO_LIGHT_NODE 0xffffffffu
+
+struct LightTreeNode {
+    vec3 boundsMin;
+    float power; // Σ of the emitters' powers below (luminance), their selection weight
+    vec3 boundsMax;
+    float cosThetaO; // the cone of emission normals around axis: cos θo
+    vec3 axis;       // unit
+    float cosThetaE; // the spread of emission about each normal: cos θe
+    uint child0;     // inner: the first child; leaf: the emitter
+    uint child1;     // inner: the second child, NO_LIGHT_NODE when there is one
+    uint parent;     // NO_LIGHT_NODE at the root and for emitters outside the tree
+    uint flags;      // LIGHT_NODE_*
+};
+
 // The environment seen by rays that leave the scene: a constant radiance, or an
 // equirectangular map (environmentTexels, width × height RGB, row 0 at the top, +Y up)
 // times `radiance`, importance sampled by the luminance × sin θ CDF in environmentCdf:
@@ -325,8 +351,9 @@ struct EnvironmentParams {
 #define FEATURE_TRANSMISSION 10 // transmission, a volume, or an ior other than 1.5
 #define FEATURE_CLEARCOAT 11
 #define FEATURE_SHEEN 12
-#define FEATURE_INSTANCES 13 // a two-level BVH: meshes placed by instances
-#define FEATURE_COUNT 14
+#define FEATURE_INSTANCES 13  // a two-level BVH: meshes placed by instances
+#define FEATURE_LIGHT_TREE 14 // emitters chosen by the light BVH (lightTree), not the power CDF
+#define FEATURE_COUNT 15
 
 // ---------------------------------------------------------------------------------------------
 // The camera (shared/camera.h). Pixel (0, 0) is the top-left; a sample at (x + u, y + v) has
@@ -387,6 +414,8 @@ static_assert(sizeof(Emitter) == 64 && offsetof(Emitter, direction) == 16 &&
               offsetof(Emitter, primitive) == 28 && offsetof(Emitter, intensity) == 32 &&
               offsetof(Emitter, range) == 44 && offsetof(Emitter, area) == 48 &&
               offsetof(Emitter, cosOuterCone) == 60);
+static_assert(sizeof(LightTreeNode) == 64 && offsetof(LightTreeNode, axis) == 32 &&
+              offsetof(LightTreeNode, child0) == 48 && offsetof(LightTreeNode, flags) == 60);
 static_assert(sizeof(EnvironmentParams) == 32 && offsetof(EnvironmentParams, width) == 12 &&
               offsetof(EnvironmentParams, emitterIndex) == 20);
 static_assert(offsetof(Camera, right) == 16 && offsetof(Camera, up) == 32 &&

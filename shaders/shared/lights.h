@@ -1,5 +1,6 @@
 // lights.h — next-event estimation's choice of a light, for both executors: an emitter chosen
-// by power (through the emitter CDF when there are several), then by its kind a uniform point
+// by the light BVH (light_tree.h) or by power (through the emitter CDF when there are several),
+// then by its kind a uniform point
 // on a triangle, a point in a sphere's visible cone, a punctual light's incidence or a
 // direction from the environment; and the solid-angle pdfs with which that choice reaches an
 // emitter or the environment, for the other half of MIS. Reaches the scene through
@@ -10,6 +11,7 @@
 #include "environment.h"
 #include "host_device.h"
 #include "intersect.h"
+#include "light_tree.h"
 #include "materials.h"
 #include "path_rules.h"
 #include "punctual.h"
@@ -41,6 +43,22 @@ VKPT_FN uint selectEmitter(float u VKPT_SCENE_PARAM) {
     return min(lo, count - 1u);
 }
 
+// The light BVH chooses infinite lights (directional, environment) by power alone, with the
+// probability the power table gives them (host/prepare/light_tree.h); their selectProbability is
+// that probability in both samplers, so that the environment's MIS pdf (scene_environment.h)
+// needs no receiver.
+VKPT_FN bool isInfiniteEmitter(Emitter emitter) {
+    return emitter.kind == EMITTER_DIRECTIONAL || emitter.kind == EMITTER_ENVIRONMENT;
+}
+
+// The probability with which sampleLight chooses emitter `index` from `receiver`.
+VKPT_FN float emitterSelectProbability(uint index, Emitter emitter,
+                                       vec3 receiver VKPT_SCENE_PARAM) {
+    if (!sceneHasLightTree(VKPT_SCENE_ARG_ONLY) || isInfiniteEmitter(emitter))
+        return emitter.selectProbability;
+    return lightTreePmf(index, receiver VKPT_SCENE_ARG);
+}
+
 // Named `light` where it is a variable: `sample` is a GLSL keyword.
 struct LightSample {
     vec3 position;
@@ -70,8 +88,8 @@ VKPT_FN LightSample noLightSample() {
     return light;
 }
 
-VKPT_FN void sampleTriangleLight(VKPT_INOUT(LightSample) light, Emitter emitter, vec3 receiver,
-                                 vec2 u VKPT_SCENE_PARAM) {
+VKPT_FN void sampleTriangleLight(VKPT_INOUT(LightSample) light, Emitter emitter,
+                                 float selectProbability, vec3 receiver, vec2 u VKPT_SCENE_PARAM) {
     Triangle tri = scenePrimitive(emitter.primitive VKPT_SCENE_ARG);
     vec3 b = sampleTriangleBarycentrics(u);
     light.position = b.x * tri.v0 + b.y * tri.v1 + b.z * tri.v2;
@@ -92,12 +110,12 @@ VKPT_FN void sampleTriangleLight(VKPT_INOUT(LightSample) light, Emitter emitter,
     }
     light.towardsReceiver = cosAtLight > 0.0f ? face : -face;
     light.pdfSolidAngle =
-        areaToSolidAnglePdf(emitter.selectProbability / emitter.area, distanceSquared, cosAtLight);
+        areaToSolidAnglePdf(selectProbability / emitter.area, distanceSquared, cosAtLight);
     light.valid = light.pdfSolidAngle > 0.0f;
 }
 
-VKPT_FN void sampleSphereEmitter(VKPT_INOUT(LightSample) light, Emitter emitter, vec3 receiver,
-                                 vec2 u VKPT_SCENE_PARAM) {
+VKPT_FN void sampleSphereEmitter(VKPT_INOUT(LightSample) light, Emitter emitter,
+                                 float selectProbability, vec3 receiver, vec2 u VKPT_SCENE_PARAM) {
     Triangle sphere = scenePrimitive(emitter.primitive VKPT_SCENE_ARG);
     SphereLightSample point = sampleSphereLight(receiver, sphere.v0, sphere.v1.x, u);
     if (!point.valid) return;
@@ -117,17 +135,18 @@ VKPT_FN void sampleSphereEmitter(VKPT_INOUT(LightSample) light, Emitter emitter,
                                                  point.normal VKPT_SCENE_ARG) VKPT_SCENE_ARG);
     }
     light.towardsReceiver = facesReceiver ? point.normal : -point.normal;
-    light.pdfSolidAngle = emitter.selectProbability * point.pdfSolidAngle;
+    light.pdfSolidAngle = selectProbability * point.pdfSolidAngle;
     light.valid = light.pdfSolidAngle > 0.0f;
 }
 
-VKPT_FN void samplePunctualLight(VKPT_INOUT(LightSample) light, Emitter emitter, vec3 receiver) {
+VKPT_FN void samplePunctualLight(VKPT_INOUT(LightSample) light, Emitter emitter,
+                                 float selectProbability, vec3 receiver) {
     PunctualIncidence incidence = punctualIncidence(emitter, receiver);
     if (!incidence.valid) return;
     light.delta = true;
     light.direction = incidence.direction;
     light.radiance = incidence.irradiance;
-    light.pdfSolidAngle = emitter.selectProbability;
+    light.pdfSolidAngle = selectProbability;
     if (emitter.kind == EMITTER_DIRECTIONAL) {
         light.atInfinity = true;
     } else {
@@ -148,20 +167,43 @@ VKPT_FN void sampleEnvironmentLight(VKPT_INOUT(LightSample) light, Emitter emitt
     light.valid = light.pdfSolidAngle > 0.0f;
 }
 
+// The emitter u chooses from `receiver` and the probability of that choice; NO_EMITTER when
+// the light BVH finds no emitter that can reach the receiver.
+struct EmitterChoice {
+    uint index;
+    float probability;
+};
+
+VKPT_FN EmitterChoice chooseEmitter(vec3 receiver, float u VKPT_SCENE_PARAM) {
+    EmitterChoice choice;
+    if (sceneHasLightTree(VKPT_SCENE_ARG_ONLY)) {
+        LightTreeChoice tree = chooseFromLightTree(receiver, u VKPT_SCENE_ARG);
+        choice.index = tree.emitter;
+        choice.probability = tree.probability;
+        return choice;
+    }
+    choice.index = selectEmitter(u VKPT_SCENE_ARG);
+    choice.probability = sceneEmitter(choice.index VKPT_SCENE_ARG).selectProbability;
+    return choice;
+}
+
 // u.x selects the emitter, u.yz the point or direction on it.
 VKPT_FN LightSample sampleLight(vec3 receiver, vec4 u VKPT_SCENE_PARAM) {
     LightSample light = noLightSample();
     if (sceneEmitterCount(VKPT_SCENE_ARG_ONLY) == 0u) return light;
-    Emitter emitter = sceneEmitter(selectEmitter(u.x VKPT_SCENE_ARG) VKPT_SCENE_ARG);
+    EmitterChoice choice = chooseEmitter(receiver, u.x VKPT_SCENE_ARG);
+    if (choice.index == NO_EMITTER) return light;
+    Emitter emitter = sceneEmitter(choice.index VKPT_SCENE_ARG);
+    float probability = isInfiniteEmitter(emitter) ? emitter.selectProbability : choice.probability;
     vec2 uPoint = vec2(u.y, u.z);
     if (emitter.kind == EMITTER_TRIANGLE) {
-        sampleTriangleLight(light, emitter, receiver, uPoint VKPT_SCENE_ARG);
+        sampleTriangleLight(light, emitter, probability, receiver, uPoint VKPT_SCENE_ARG);
     } else if (sceneHasSpheres(VKPT_SCENE_ARG_ONLY) && emitter.kind == EMITTER_SPHERE) {
-        sampleSphereEmitter(light, emitter, receiver, uPoint VKPT_SCENE_ARG);
+        sampleSphereEmitter(light, emitter, probability, receiver, uPoint VKPT_SCENE_ARG);
     } else if (sceneHasEnvironment(VKPT_SCENE_ARG_ONLY) && emitter.kind == EMITTER_ENVIRONMENT) {
         sampleEnvironmentLight(light, emitter, uPoint VKPT_SCENE_ARG);
     } else if (sceneHasPunctualLights(VKPT_SCENE_ARG_ONLY)) {
-        samplePunctualLight(light, emitter, receiver);
+        samplePunctualLight(light, emitter, probability, receiver);
     }
     return light;
 }
@@ -171,15 +213,15 @@ VKPT_FN float lightPdf(SurfacePoint s, vec3 origin VKPT_SCENE_PARAM) {
     Triangle primitive = scenePrimitive(s.triangle VKPT_SCENE_ARG);
     if (primitive.emitterIndex == NO_EMITTER) return 0.0f;
     Emitter emitter = sceneEmitter(primitive.emitterIndex VKPT_SCENE_ARG);
+    float probability =
+        emitterSelectProbability(primitive.emitterIndex, emitter, origin VKPT_SCENE_ARG);
     if (sceneHasSpheres(VKPT_SCENE_ARG_ONLY) && isSpherePrimitive(primitive)) {
-        return emitter.selectProbability *
-               sphereLightPdf(origin, primitive.v0, primitive.v1.x, s.position);
+        return probability * sphereLightPdf(origin, primitive.v0, primitive.v1.x, s.position);
     }
     vec3 toLight = s.position - origin;
     float distanceSquared = dot(toLight, toLight);
     float cosAtLight = dot(s.geometricNormal, toLight) / sqrt(distanceSquared);
-    return areaToSolidAnglePdf(emitter.selectProbability / emitter.area, distanceSquared,
-                               cosAtLight);
+    return areaToSolidAnglePdf(probability / emitter.area, distanceSquared, cosAtLight);
 }
 
 #ifdef __cplusplus

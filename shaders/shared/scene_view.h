@@ -18,12 +18,13 @@
 //   vec2 sceneUv(uint k)  (3 per primitive) Material sceneMaterial(uint i)
 //   TextureInfo sceneTexture(uint i)        uint sceneTextureTexel(uint i) (texture_sampling.h)
 //   Emitter sceneEmitter(uint i)            uint sceneEmitterCount()
-//   float sceneEmitterCdf(uint i)           EnvironmentParams sceneEnvironment()
+//   float sceneEmitterCdf(uint i)           LightTreeNode sceneLightTreeNode(uint i)
+//   EnvironmentParams sceneEnvironment()
 //   vec4 sceneEnvironmentTexel(uint i)      float sceneEnvironmentCdf(uint i) (environment.h)
 //   bool sceneHasMetallicRoughness(), sceneHasTextures(), sceneHasSpheres(),
 //        sceneHasPunctualLights(), sceneHasEnvironment(), sceneHasEmitterCdf(),
 //        sceneHasDoubleSided(), sceneHasNormalMaps(), sceneHasTransmission(),
-//        sceneHasClearcoat(), sceneHasSheen(), sceneHasInstances()
+//        sceneHasClearcoat(), sceneHasSheen(), sceneHasInstances(), sceneHasLightTree()
 #ifndef VKPT_SCENE_VIEW_H
 #define VKPT_SCENE_VIEW_H
 
@@ -48,6 +49,7 @@ struct SceneView {
     std::span<const uint> textureTexels;
     std::span<const Emitter> emitters;
     std::span<const float> emitterCdf;
+    std::span<const LightTreeNode> lightTree; // empty unless FEATURE_LIGHT_TREE
     EnvironmentParams environment;
     std::span<const vec4> environmentTexels;
     std::span<const float> environmentCdf;
@@ -91,6 +93,9 @@ VKPT_FN uint sceneEmitterCount(VKPT_SCENE_PARAM_ONLY) {
 }
 VKPT_FN float sceneEmitterCdf(uint i VKPT_SCENE_PARAM) {
     return scene.emitterCdf[i];
+}
+VKPT_FN LightTreeNode sceneLightTreeNode(uint i VKPT_SCENE_PARAM) {
+    return scene.lightTree[i];
 }
 VKPT_FN EnvironmentParams sceneEnvironment(VKPT_SCENE_PARAM_ONLY) {
     return scene.environment;
@@ -137,6 +142,9 @@ VKPT_FN bool sceneHasSheen(VKPT_SCENE_PARAM_ONLY) {
 }
 VKPT_FN bool sceneHasInstances(VKPT_SCENE_PARAM_ONLY) {
     return scene.features[FEATURE_INSTANCES];
+}
+VKPT_FN bool sceneHasLightTree(VKPT_SCENE_PARAM_ONLY) {
+    return scene.features[FEATURE_LIGHT_TREE];
 }
 
 } // namespace vkpt::gpu

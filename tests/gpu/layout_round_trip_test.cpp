@@ -40,6 +40,7 @@ struct SharedStructs {
     std::vector<PathState> pathStates;
     std::vector<ShadowRay> shadowRays;
     std::vector<PixelState> pixelStates;
+    std::vector<LightTreeNode> lightTreeNodes;
 };
 
 TextureSlot makeTextureSlot(Values& x) {
@@ -118,6 +119,8 @@ SharedStructs makeStructs() {
         s.pathStates.push_back({x.v3(), x.u(), x.v3(), x.u(), x.v3(), x.f(), x.v3(), x.u()});
         s.shadowRays.push_back({x.v3(), x.u(), x.v3(), x.f(), x.v3(), x.f()});
         s.pixelStates.push_back({x.v3(), x.u(), x.v3(), x.u(), x.f(), x.f(), x.u(), x.u()});
+        s.lightTreeNodes.push_back(
+            {x.v3(), x.f(), x.v3(), x.f(), x.v3(), x.f(), x.u(), x.u(), x.u(), x.u()});
     }
     return s;
 }
@@ -143,6 +146,7 @@ std::vector<uint> flatten(const SharedStructs& s) {
     appendWords(words, s.pathStates);
     appendWords(words, s.shadowRays);
     appendWords(words, s.pixelStates);
+    appendWords(words, s.lightTreeNodes);
     return words;
 }
 
@@ -180,10 +184,12 @@ TEST_F(LayoutRoundTrip, DeviceReadsEveryFieldAtItsCppOffset) {
     const Buffer pathStates = structBuffer("pathStates", s.pathStates);
     const Buffer shadowRays = structBuffer("shadowRays", s.shadowRays);
     const Buffer pixelStates = structBuffer("pixelStates", s.pixelStates);
+    const Buffer lightTreeNodes = structBuffer("lightTreeNodes", s.lightTreeNodes);
     const Kernel kernel = makeKernel("read_layouts", LAYOUT_BUFFER_COUNT, 0);
     runKernel(kernel,
               {&bvhNodes, &triangles, &triangleNormals, &materials, &textures, &emitters,
-               &environments, &cameras, &words, &frames, &pathStates, &shadowRays, &pixelStates},
+               &environments, &cameras, &words, &frames, &pathStates, &shadowRays, &pixelStates,
+               &lightTreeNodes},
               LAYOUT_COUNT);
 
     const std::vector<uint> expected = flatten(s);
@@ -212,10 +218,13 @@ TEST_F(LayoutRoundTrip, DeviceWritesEveryFieldAtItsCppOffset) {
     const Buffer pathStates = makeStorageBuffer("pathStates", LAYOUT_COUNT * sizeof(PathState));
     const Buffer shadowRays = makeStorageBuffer("shadowRays", LAYOUT_COUNT * sizeof(ShadowRay));
     const Buffer pixelStates = makeStorageBuffer("pixelStates", LAYOUT_COUNT * sizeof(PixelState));
+    const Buffer lightTreeNodes =
+        makeStorageBuffer("lightTreeNodes", LAYOUT_COUNT * sizeof(LightTreeNode));
     const Kernel kernel = makeKernel("write_layouts", LAYOUT_BUFFER_COUNT, 0);
     runKernel(kernel,
               {&bvhNodes, &triangles, &triangleNormals, &materials, &textures, &emitters,
-               &environments, &cameras, &words, &frames, &pathStates, &shadowRays, &pixelStates},
+               &environments, &cameras, &words, &frames, &pathStates, &shadowRays, &pixelStates,
+               &lightTreeNodes},
               LAYOUT_COUNT);
 
     expectSameBytes(download<WideBvhNode>(context(), bvhNodes, LAYOUT_COUNT), s.bvhNodes,
@@ -237,6 +246,8 @@ TEST_F(LayoutRoundTrip, DeviceWritesEveryFieldAtItsCppOffset) {
                     "pathStates");
     expectSameBytes(download<ShadowRay>(context(), shadowRays, LAYOUT_COUNT), s.shadowRays,
                     "shadowRays");
+    expectSameBytes(download<LightTreeNode>(context(), lightTreeNodes, LAYOUT_COUNT),
+                    s.lightTreeNodes, "lightTreeNodes");
     expectSameBytes(download<PixelState>(context(), pixelStates, LAYOUT_COUNT), s.pixelStates,
                     "pixelStates");
 }

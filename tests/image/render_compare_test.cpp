@@ -125,6 +125,17 @@ TEST_F(SameSeed, EmittingSidesMatchTheReference) {
     expectAgreement("emission_sides", "test/emission-sides.gltf", settings);
 }
 
+// Thousands of small emitters chosen by the light BVH, and by power.
+TEST_F(SameSeed, ManyLightsMatchTheReference) {
+    RenderSettings settings = testSettings(32, 8);
+    settings.seed = 7;
+    settings.lightSamples = 2;
+    expectAgreement("many_lights_bvh", "test/many-lights.gltf", settings);
+    expectAgreement("many_lights_power",
+                    loadTestScene("test/many-lights.gltf", {{}, false, LightSampler::Power}),
+                    settings);
+}
+
 // The scene model's feature test scenes (scenes/test/features: spheres, GGX materials,
 // textures and alpha cut-outs, punctual lights, the environment map), each under the path
 // tracer and both direct estimators.
@@ -145,6 +156,21 @@ TEST_F(SameSeed, FeatureTestScenesMatchTheReference) {
         expectAgreement(name + "_direct_light", scene, settings);
         settings.lightSampling = LightSampling::Hemisphere;
         expectAgreement(name + "_direct_hemisphere", scene, settings);
+    }
+}
+
+// The feature scenes whose emitters are of several kinds (spheres, point, spot and directional
+// lights, the environment under the tree's by-power root, textured emitters), chosen by the
+// light BVH whatever their count.
+TEST_F(SameSeed, FeatureTestScenesByTheLightBvhMatchTheReference) {
+    for (const char* name : {"punctual", "spheres", "environment", "textured"}) {
+        SCOPED_TRACE(name);
+        const std::string path = std::string("test/features/") + name + ".gltf";
+        LoadedTestScene scene = loadFeatureTestScene(path, false, LightSampler::Bvh);
+        RenderSettings settings = testSettings(24, 8);
+        settings.seed = 8;
+        settings.lightSamples = 2;
+        expectAgreement(std::string(name) + "_light_bvh", scene, settings);
     }
 }
 
@@ -171,6 +197,12 @@ TEST_F(DifferentSeeds, QuadLightAgreesPixelByPixelInDistribution) {
     RenderSettings settings = testSettings(24, 32);
     settings.lightSamples = 2;
     expectSameDistribution("z_quad_light", "test/quad-light-floor.gltf", settings);
+}
+
+// The device's walk of the light BVH and its MIS pmf against the reference's, in distribution
+// (tests/render/light_sampler_test.cpp holds the tree against power sampling).
+TEST_F(DifferentSeeds, ManyLightsAgreePixelByPixelInDistribution) {
+    expectSameDistribution("z_many_lights", "test/many-lights.gltf", testSettings(24, 64));
 }
 
 class Determinism : public GpuTest {};

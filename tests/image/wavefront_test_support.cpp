@@ -24,7 +24,8 @@ std::vector<std::string> featureTestScenes() {
     return found;
 }
 
-LoadedTestScene loadFeatureTestScene(const std::string& relative, bool general) {
+LoadedTestScene loadFeatureTestScene(const std::string& relative, bool general,
+                                     LightSampler lightSampler) {
     LoadOptions options;
     options.warnUnsupportedExtensions = false;
     LoadedTestScene loaded{loadGltfScene(scenePath(relative), options), {}};
@@ -37,6 +38,7 @@ LoadedTestScene loadFeatureTestScene(const std::string& relative, bool general) 
         loaded.scene.environment.radiance = glm::vec3(0.5f, 1.0f, 2.0f);
     PrepareOptions prepare;
     prepare.general = general;
+    prepare.lightSampler = lightSampler;
     loaded.prepared = prepareScene(loaded.scene, prepare);
     return loaded;
 }

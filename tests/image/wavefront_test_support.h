@@ -26,7 +26,8 @@ std::vector<std::string> featureTestScenes();
 // A scene as loadTestScene loads it; test/features/environment.gltf gets its environment map
 // (test/features/sky.hdr), which vkpt takes from the command line rather than the file, and
 // glass-ball.gltf and absorbing-slab.gltf a constant one.
-LoadedTestScene loadFeatureTestScene(const std::string& relative, bool general = false);
+LoadedTestScene loadFeatureTestScene(const std::string& relative, bool general = false,
+                                     LightSampler lightSampler = LightSampler::Auto);
 
 // Renders `loaded` on the device with the camera renderTestScene uses, so that both
 // executors see the same rays. Fails the test if a traversal was cut short.

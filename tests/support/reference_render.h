@@ -33,11 +33,12 @@ struct LoadedTestScene {
     PreparedScene prepared;
 };
 
-// What a test may add to a scene file: an environment (--env, --env-color) and the general
-// layout (--general).
+// What a test may add to a scene file: an environment (--env, --env-color), the general
+// layout (--general) and the light sampler (--light-sampler).
 struct TestSceneOptions {
     SceneEnvironment environment;
     bool general = false;
+    LightSampler lightSampler = LightSampler::Auto;
 };
 
 inline LoadedTestScene loadTestScene(const std::string& relative,
@@ -46,7 +47,8 @@ inline LoadedTestScene loadTestScene(const std::string& relative,
     options.warnUnsupportedExtensions = false;
     LoadedTestScene loaded{loadGltfScene(scenePath(relative), options), {}};
     loaded.scene.environment = sceneOptions.environment;
-    loaded.prepared = prepareScene(loaded.scene, {{}, sceneOptions.general});
+    loaded.prepared =
+        prepareScene(loaded.scene, {{}, sceneOptions.general, sceneOptions.lightSampler});
     return loaded;
 }
 

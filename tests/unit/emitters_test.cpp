@@ -188,12 +188,21 @@ TEST(Emitters, SingleEmitterHasNoCdf) {
 }
 
 // With an emitting sphere among the triangles, ∫ p_light dω over the directions that reach an
-// area emitter is their share of the selection probability (the point light takes the rest).
+// area emitter is their share of the selection probability from the point (the point light
+// takes the rest), by either sampler.
 TEST(Emitters, LightPdfWithASphereIntegratesToTheAreaEmittersShare) {
-    PreparedScene prepared = prepareScene(mixedEmitterScene());
-    const double areaShare = 1.0 - double(prepared.emitters[7].selectProbability);
-    PdfMean m = integrateLightPdf(prepared, {0.1f, 0.05f, -0.3f}, 15);
-    EXPECT_NEAR(m.mean, areaShare, 4.42 * m.standardError);
+    for (LightSampler sampler : {LightSampler::Power, LightSampler::Bvh}) {
+        PreparedScene prepared = prepareScene(mixedEmitterScene(), {{}, false, sampler});
+        const glm::vec3 origin(0.1f, 0.05f, -0.3f);
+        const gpu::SceneView view = makeSceneView(prepared);
+        double areaShare = 0.0;
+        for (std::uint32_t e = 0; e < prepared.emitters.size(); ++e)
+            if (prepared.emitters[e].kind != EMITTER_POINT)
+                areaShare += gpu::emitterSelectProbability(e, prepared.emitters[e], origin, view);
+        PdfMean m = integrateLightPdf(prepared, origin, 15);
+        EXPECT_NEAR(m.mean, areaShare, 4.42 * m.standardError)
+            << "light BVH " << prepared.features.lightTree;
+    }
 }
 
 // A light sample's pdf must equal lightPdf() for the same point: the two halves of MIS.

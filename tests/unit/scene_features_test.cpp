@@ -221,8 +221,9 @@ TEST(SceneFeatures, GeneralTurnsEverythingOnAndKeepsTheEmitterCount) {
               "environmentMap | 1");
     EXPECT_TRUE(general.general);
     std::array<bool, FEATURE_COUNT> all{};
-    all.fill(true);                 // the general layout reads a CDF even for one emitter
-    all[FEATURE_INSTANCES] = false; // a layout the scene has or not, kept from `used`
+    all.fill(true);                  // the general layout reads a CDF even for one emitter
+    all[FEATURE_INSTANCES] = false;  // a layout the scene has or not, kept from `used`
+    all[FEATURE_LIGHT_TREE] = false; // a choice of the render, kept from `used`
     EXPECT_EQ(general.kernelFeatures(), all);
     EXPECT_FALSE(used.emitterCdf());
     used.instances = true;

@@ -66,7 +66,7 @@ struct IntersectOutput {
 // lib/wavefront.h flattened to 32-bit words in declaration order, one region per struct type,
 // LAYOUT_COUNT records per region.
 #define LAYOUT_COUNT 5u
-#define LAYOUT_BUFFER_COUNT 13u // one per struct type, and the words (binding 8)
+#define LAYOUT_BUFFER_COUNT 14u // one per struct type, and the words (binding 8)
 #define LAYOUT_WORDS_BVH_NODE 20u
 #define LAYOUT_WORDS_TRIANGLE 12u
 #define LAYOUT_WORDS_TRIANGLE_NORMALS 12u
@@ -79,6 +79,7 @@ struct IntersectOutput {
 #define LAYOUT_WORDS_PATH_STATE 16u
 #define LAYOUT_WORDS_SHADOW_RAY 12u
 #define LAYOUT_WORDS_PIXEL_STATE 12u
+#define LAYOUT_WORDS_LIGHT_TREE_NODE 16u
 #define LAYOUT_OFFSET_BVH_NODES 0u
 #define LAYOUT_OFFSET_TRIANGLES (LAYOUT_OFFSET_BVH_NODES + LAYOUT_COUNT * LAYOUT_WORDS_BVH_NODE)
 #define LAYOUT_OFFSET_TRIANGLE_NORMALS                                                             \
@@ -96,7 +97,10 @@ struct IntersectOutput {
     (LAYOUT_OFFSET_PATH_STATES + LAYOUT_COUNT * LAYOUT_WORDS_PATH_STATE)
 #define LAYOUT_OFFSET_PIXEL_STATES                                                                 \
     (LAYOUT_OFFSET_SHADOW_RAYS + LAYOUT_COUNT * LAYOUT_WORDS_SHADOW_RAY)
-#define LAYOUT_TOTAL_WORDS (LAYOUT_OFFSET_PIXEL_STATES + LAYOUT_COUNT * LAYOUT_WORDS_PIXEL_STATE)
+#define LAYOUT_OFFSET_LIGHT_TREE_NODES                                                             \
+    (LAYOUT_OFFSET_PIXEL_STATES + LAYOUT_COUNT * LAYOUT_WORDS_PIXEL_STATE)
+#define LAYOUT_TOTAL_WORDS                                                                         \
+    (LAYOUT_OFFSET_LIGHT_TREE_NODES + LAYOUT_COUNT * LAYOUT_WORDS_LIGHT_TREE_NODE)
 
 // count_loop_iterations: per invocation, how many iterations each loop really ran.
 struct LoopCounts {
@@ -132,7 +136,8 @@ static_assert(sizeof(WideBvhNode) == 4 * LAYOUT_WORDS_BVH_NODE &&
 static_assert(sizeof(FrameParams) == 4 * LAYOUT_WORDS_FRAME_PARAMS &&
               sizeof(PathState) == 4 * LAYOUT_WORDS_PATH_STATE &&
               sizeof(ShadowRay) == 4 * LAYOUT_WORDS_SHADOW_RAY &&
-              sizeof(PixelState) == 4 * LAYOUT_WORDS_PIXEL_STATE);
+              sizeof(PixelState) == 4 * LAYOUT_WORDS_PIXEL_STATE &&
+              sizeof(LightTreeNode) == 4 * LAYOUT_WORDS_LIGHT_TREE_NODE);
 static_assert(sizeof(LoopCounts) == 16 && sizeof(LoopParams) == 32);
 } // namespace vkpt::gpu::test
 #endif

@@ -22,6 +22,7 @@ VKPT_READONLY_BUFFER(9, FrameParams, frames)
 VKPT_READONLY_BUFFER(10, PathState, pathStates)
 VKPT_READONLY_BUFFER(11, ShadowRay, shadowRays)
 VKPT_READONLY_BUFFER(12, PixelState, pixelStates)
+VKPT_READONLY_BUFFER(13, LightTreeNode, lightTreeNodes)
 
 uint cursor;
 
@@ -220,4 +221,16 @@ void main() {
     putFloat(pixelStates[i].luminanceM2);
     putUint(pixelStates[i].converged);
     putUint(pixelStates[i].unused0);
+
+    cursor = LAYOUT_OFFSET_LIGHT_TREE_NODES + i * LAYOUT_WORDS_LIGHT_TREE_NODE;
+    putVec3(lightTreeNodes[i].boundsMin);
+    putFloat(lightTreeNodes[i].power);
+    putVec3(lightTreeNodes[i].boundsMax);
+    putFloat(lightTreeNodes[i].cosThetaO);
+    putVec3(lightTreeNodes[i].axis);
+    putFloat(lightTreeNodes[i].cosThetaE);
+    putUint(lightTreeNodes[i].child0);
+    putUint(lightTreeNodes[i].child1);
+    putUint(lightTreeNodes[i].parent);
+    putUint(lightTreeNodes[i].flags);
 }

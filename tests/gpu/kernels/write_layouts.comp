@@ -22,6 +22,7 @@ VKPT_WRITEONLY_BUFFER(9, FrameParams, frames)
 VKPT_WRITEONLY_BUFFER(10, PathState, pathStates)
 VKPT_WRITEONLY_BUFFER(11, ShadowRay, shadowRays)
 VKPT_WRITEONLY_BUFFER(12, PixelState, pixelStates)
+VKPT_WRITEONLY_BUFFER(13, LightTreeNode, lightTreeNodes)
 
 uint cursor;
 
@@ -229,4 +230,16 @@ void main() {
     pixelStates[i].luminanceM2 = takeFloat();
     pixelStates[i].converged = takeUint();
     pixelStates[i].unused0 = takeUint();
+
+    cursor = LAYOUT_OFFSET_LIGHT_TREE_NODES + i * LAYOUT_WORDS_LIGHT_TREE_NODE;
+    lightTreeNodes[i].boundsMin = takeVec3();
+    lightTreeNodes[i].power = takeFloat();
+    lightTreeNodes[i].boundsMax = takeVec3();
+    lightTreeNodes[i].cosThetaO = takeFloat();
+    lightTreeNodes[i].axis = takeVec3();
+    lightTreeNodes[i].cosThetaE = takeFloat();
+    lightTreeNodes[i].child0 = takeUint();
+    lightTreeNodes[i].child1 = takeUint();
+    lightTreeNodes[i].parent = takeUint();
+    lightTreeNodes[i].flags = takeUint();
 }
