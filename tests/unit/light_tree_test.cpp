@@ -11,7 +11,7 @@
 #include "../support/scene_builder.h"
 #include "bvh/synthetic_scenes.h"
 #include "prepare/prepared_scene.h"
-#include "prepare/scene_view.h"
+#include "prepare/prepared_scene_view.h"
 #include "shared/lights.h"
 
 namespace vkpt {
