@@ -605,9 +605,12 @@ BvhTree buildBvh(std::span<const Aabb> primitiveBounds, const BvhBuildOptions& o
 std::vector<Aabb> triangleBounds(std::span<const glm::vec3> positions) {
     VKPT_ASSERT(positions.size() % 3 == 0, "three vertices a triangle");
     std::vector<Aabb> bounds(positions.size() / 3);
-    for (std::size_t i = 0; i < bounds.size(); ++i)
-        for (std::size_t k = 0; k < 3; ++k)
-            bounds[i].extend(positions[3 * i + k]);
+    const std::uint32_t threads = bounds.size() >= kParallelMinimum ? resolveThreadCount(0) : 1u;
+    forEachSlice(bounds.size(), threads, [&](std::size_t begin, std::size_t end, std::uint32_t) {
+        for (std::size_t i = begin; i < end; ++i)
+            for (std::size_t k = 0; k < 3; ++k)
+                bounds[i].extend(positions[3 * i + k]);
+    });
     return bounds;
 }
 
