@@ -72,15 +72,16 @@ VKPT_FN uint mortonCode(uint x, uint y) {
 
 // Entry `digit` of the permutation of {0, 1, 2, 3} that `choice` selects: a Fisher–Yates
 // shuffle of four 2-bit fields, drawing its swaps from choice mod 4, mod 3 and mod 2, so the 24
-// permutations are (nearly) equally likely over uniform choices.
+// permutations are (nearly) equally likely over uniform choices. Those three draws depend on
+// choice mod 24 alone (4 · 3 · 2 = 24), so the shuffle is tabulated: the 24 permutations in the
+// order the draws make them, a byte each (field i: where digit i goes), four to a word. The
+// table replaces the three divisions and swaps of every Morton level of every draw (the tests
+// hold the sequence's values, which the table does not change).
 VKPT_FN uint permuteBase4Digit(uint digit, uint choice) {
-    uint fields = 0xe4u; // the identity: field i holds i
-    for (uint i = 3u; i > 0u; --i) {
-        uint j = choice % (i + 1u);
-        choice /= i + 1u;
-        uint differ = ((fields >> (2u * i)) ^ (fields >> (2u * j))) & 3u;
-        fields ^= (differ << (2u * i)) | (differ << (2u * j));
-    }
+    uint r = choice % 24u;
+    uint word = r < 12u ? (r < 4u ? 0xc98d4b39u : (r < 8u ? 0xd293721eu : 0xe1b1632du))
+                        : (r < 16u ? 0xc6874e36u : (r < 20u ? 0xd89c781bu : 0xe4b46c27u));
+    uint fields = (word >> (8u * (r & 3u))) & 0xffu;
     return (fields >> (2u * digit)) & 3u;
 }
 

@@ -186,5 +186,32 @@ TEST(Sampler, LightSampleOrderPutsThePairOnThePoint) {
     EXPECT_EQ(gpu::lightSampleOrder(u), glm::vec4(0.3f, 0.1f, 0.2f, 0.4f));
 }
 
+// The Fisher–Yates shuffle the table holds: swaps drawn from choice mod 4, then mod 3 and mod 2
+// of what is left, on four 2-bit fields that start as the identity.
+std::uint32_t shuffledDigit(std::uint32_t digit, std::uint32_t choice) {
+    std::uint32_t fields = 0xe4u;
+    for (std::uint32_t i = 3; i > 0; --i) {
+        const std::uint32_t j = choice % (i + 1);
+        choice /= i + 1;
+        const std::uint32_t differ = ((fields >> (2 * i)) ^ (fields >> (2 * j))) & 3u;
+        fields ^= (differ << (2 * i)) | (differ << (2 * j));
+    }
+    return (fields >> (2 * digit)) & 3u;
+}
+
+TEST(Sampler, TheDigitPermutationTableIsTheFisherYatesShuffle) {
+    std::mt19937 random(24);
+    for (std::uint32_t n = 0; n < 100000; ++n) {
+        const std::uint32_t choice = n < 48 ? n : std::uint32_t(random());
+        std::uint32_t seen = 0;
+        for (std::uint32_t digit = 0; digit < 4; ++digit) {
+            ASSERT_EQ(gpu::permuteBase4Digit(digit, choice), shuffledDigit(digit, choice))
+                << "choice " << choice << ", digit " << digit;
+            seen |= 1u << gpu::permuteBase4Digit(digit, choice);
+        }
+        ASSERT_EQ(seen, 15u) << "choice " << choice << " is not a permutation";
+    }
+}
+
 } // namespace
 } // namespace vkpt
