@@ -46,6 +46,15 @@ struct Box4 {
     }
     void extend(const Float4& point) { extend(point, point); }
 
+    // Aabb::surfaceArea's expression, in the same order of operations (so the same bits), for
+    // a box that is not empty: the SAH sweep's running unions, which start at a bin the
+    // centroid mapping never leaves empty.
+    float surfaceArea() const {
+        const Float4 d = max - min;
+        const Float4 products = d * __builtin_shufflevector(d, d, 1, 2, 0, 3); // xy, yz, zx
+        return 2.0f * (products[0] + products[1] + products[2]);
+    }
+
     Aabb toAabb() const {
         return Aabb{glm::vec3(min[0], min[1], min[2]), glm::vec3(max[0], max[1], max[2])};
     }
