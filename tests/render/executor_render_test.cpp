@@ -2,7 +2,8 @@
 // executor (tests/support/render_executors.h: vkpt-ref, and vkpt on lavapipe): the white
 // furnace's closed form at each depth, the Cornell box's light, energy, colours and path-filter
 // additivity, independent direct estimators converging to the same image, scenes without
-// lights, and adaptive sampling's savings and error promise.
+// lights, mirror symmetry, the normals integrator, and adaptive sampling's savings and error
+// promise.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -173,6 +174,49 @@ TYPED_TEST(Scenes, SceneWithoutLightsIsBlack) {
     RenderOutput output = this->render(dark, testSettings(8, 2));
     for (const glm::vec3& p : output.image.pixels)
         ASSERT_EQ(p, glm::vec3(0.0f));
+}
+
+// The symmetric box mirrored about its vertical centre line: the left half and the mirrored
+// right half are independent estimates of the same values, compared by the per-pixel z-test.
+TYPED_TEST(Scenes, MirrorSymmetricSceneRendersMirrorSymmetric) {
+    LoadedTestScene box = loadTestScene("test/symmetric-box.gltf");
+    const std::uint32_t size = 32;
+    RenderOutput output = this->render(box, testSettings(size, 32));
+    RenderOutput left, mirrored;
+    for (RenderOutput* half : {&left, &mirrored}) {
+        half->image = Image(size / 2, size);
+        half->sampleCounts.resize(size / 2 * size);
+        half->luminanceMean.resize(size / 2 * size);
+        half->luminanceM2.resize(size / 2 * size);
+    }
+    for (std::uint32_t y = 0; y < size; ++y)
+        for (std::uint32_t x = 0; x < size / 2; ++x) {
+            std::size_t h = y * (size / 2) + x, a = y * size + x, b = y * size + (size - 1 - x);
+            left.image.pixels[h] = output.image.pixels[a];
+            mirrored.image.pixels[h] = output.image.pixels[b];
+            left.sampleCounts[h] = output.sampleCounts[a];
+            mirrored.sampleCounts[h] = output.sampleCounts[b];
+            left.luminanceMean[h] = output.luminanceMean[a];
+            mirrored.luminanceMean[h] = output.luminanceMean[b];
+            left.luminanceM2[h] = output.luminanceM2[a];
+            mirrored.luminanceM2[h] = output.luminanceM2[b];
+        }
+    ZTestResult z = zTestPerPixel(left, mirrored, 0.01);
+    EXPECT_TRUE(z.passed) << z.summary;
+}
+
+TYPED_TEST(Scenes, NormalsIntegratorMapsUnitNormalsIntoTheUnitCube) {
+    LoadedTestScene box = loadTestScene("cornell-box.gltf");
+    RenderSettings settings = testSettings(16, 1);
+    settings.integrator = Integrator::Normals;
+    RenderOutput output = this->render(box, settings);
+    int hits = 0;
+    for (const glm::vec3& p : output.image.pixels) {
+        if (p == glm::vec3(0.0f)) continue;
+        ++hits;
+        EXPECT_NEAR(glm::length(2.0f * p - 1.0f), 1.0f, 1e-4f);
+    }
+    EXPECT_GT(hits, 200);
 }
 
 template <typename Executor> class AdaptiveSampling : public Executor {};

@@ -1,25 +1,20 @@
-// glass_render_test.cpp — glass and volumes against closed forms, on both renderers (vkpt on
-// lavapipe and vkpt-ref): a lossless glass ball in a uniform environment shows exactly the
-// environment, and an absorbing slab transmits e^(−σ·length) along every camera ray.
+// glass_render_test.cpp — glass and volumes against closed forms, one test body run on each
+// executor (tests/support/render_executors.h: vkpt-ref, and vkpt on lavapipe): a lossless glass
+// ball in a uniform environment shows exactly the environment, and an absorbing slab transmits
+// e^(−σ·length) along every camera ray.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
+#include "../support/render_executors.h"
 #include "common/sampler_setup.h"
 #include "shared/camera.h"
 #include "shared/ray_offset.h"
-#include "wavefront_test_support.h"
 
-namespace vkpt {
+namespace vkpt::test {
 namespace {
-
-using test::LoadedTestScene;
-using test::loadTestScene;
-using test::renderOnDevice;
-using test::renderTestScene;
-using test::testSettings;
 
 const glm::vec3 kEnvironment(0.5f, 1.0f, 2.0f);
 
@@ -29,14 +24,8 @@ LoadedTestScene loadInUniformEnvironment(const std::string& relative) {
     return loadTestScene(relative, options);
 }
 
-class Glass : public test::GpuTest {
-protected:
-    // Both renderers' images of `scene`, the device's first.
-    std::array<RenderOutput, 2> renderBoth(const LoadedTestScene& scene,
-                                           const RenderSettings& settings) {
-        return {renderOnDevice(context(), scene, settings), renderTestScene(scene, settings)};
-    }
-};
+template <typename Executor> class Glass : public Executor {};
+TYPED_TEST_SUITE(Glass, Executors);
 
 // Smooth glass of ior 1.5 (the loader's default) in a uniform environment of radiance L:
 // every path that enters the ball leaves it, each crossing weighted (1 − F)/η² in and η²(1 − F')
@@ -46,20 +35,16 @@ protected:
 // the depth limit; 256 scattering events leave a path inside the ball only if it reflected
 // 255 times in a row, which even at F = 0.9 has probability 0.9^255 ≈ 2e-12. Every pixel is
 // then L within 1e-5 relative (about 80 float ulps).
-TEST_F(Glass, LosslessBallShowsExactlyTheUniformEnvironment) {
+TYPED_TEST(Glass, LosslessBallShowsExactlyTheUniformEnvironment) {
     LoadedTestScene ball = loadInUniformEnvironment("test/features/glass-ball.gltf");
     RenderSettings settings = testSettings(32, 8);
     settings.maxDepth = 256;
     settings.rrStartDepth = 256;
-    const char* names[] = {"vkpt", "vkpt-ref"};
-    std::array<RenderOutput, 2> outputs = renderBoth(ball, settings);
-    for (int r = 0; r < 2; ++r) {
-        const Image& image = outputs[size_t(r)].image;
-        for (std::size_t i = 0; i < image.pixels.size(); ++i)
-            for (int c = 0; c < 3; ++c)
-                ASSERT_NEAR(image.pixels[i][c], kEnvironment[c], 1e-5f * kEnvironment[c])
-                    << names[r] << ", pixel " << i % image.width << ", " << i / image.width;
-    }
+    const Image image = this->render(ball, settings).image;
+    for (std::size_t i = 0; i < image.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c)
+            ASSERT_NEAR(image.pixels[i][c], kEnvironment[c], 1e-5f * kEnvironment[c])
+                << "pixel " << i % image.width << ", " << i / image.width;
 }
 
 // The slab of scenes/test/features/absorbing-slab.gltf: ior 1 (no refraction, no reflection),
@@ -76,19 +61,17 @@ constexpr float kSlabCoordinateScale = 1.0f; // its largest vertex coordinate
 // offset 64 float epsilons of the coordinate scale into the slab (shared/ray_offset.h), and
 // the back face, so the optical depth differs by at most σ·offset/|d.z|: that, plus 1e-5 for
 // exp and the float sums, bounds the relative difference of every pixel.
-TEST_F(Glass, AbsorbingSlabTransmitsTheBeerLambertFraction) {
+TYPED_TEST(Glass, AbsorbingSlabTransmitsTheBeerLambertFraction) {
     LoadedTestScene slab = loadInUniformEnvironment("test/features/absorbing-slab.gltf");
     RenderSettings settings = testSettings(16, 4);
     settings.seed = 9;
-    const gpu::Camera camera = makeGpuCamera(selectCamera(slab.scene, settings.cameraIndex),
-                                             settings.width, settings.height);
+    const gpu::Camera camera = testCamera(slab, settings);
     glm::dvec3 sigma;
     for (int c = 0; c < 3; ++c)
         sigma[c] = -std::log(double(kSlabColour[c])) / double(kSlabDistance);
     const double offset =
         double(RAY_OFFSET_EPSILONS) * double(FLOAT_EPSILON) * kSlabCoordinateScale;
-    std::array<RenderOutput, 2> outputs = renderBoth(slab, settings);
-    const char* names[] = {"vkpt", "vkpt-ref"};
+    const Image image = this->render(slab, settings).image;
     // The camera samples the renderers drew (shared/sampler.h).
     const std::uint32_t setup = samplerSetupFor(settings, settings.width, settings.height);
     for (std::uint32_t y = 0; y < settings.height; ++y)
@@ -108,15 +91,14 @@ TEST_F(Glass, AbsorbingSlabTransmitsTheBeerLambertFraction) {
                                    std::exp(-sigma[c] * double(kSlabThickness) / cosine);
             }
             expected /= double(settings.samplesPerPixel);
-            for (int r = 0; r < 2; ++r)
-                for (int c = 0; c < 3; ++c) {
-                    const double tolerance = sigma[c] * offset / smallestCos + 1e-5;
-                    const double value = double(outputs[size_t(r)].image.at(x, y)[c]);
-                    EXPECT_NEAR(value / expected[c], 1.0, tolerance)
-                        << names[r] << ", pixel " << x << ", " << y << ", channel " << c;
-                }
+            for (int c = 0; c < 3; ++c) {
+                const double tolerance = sigma[c] * offset / smallestCos + 1e-5;
+                const double value = double(image.at(x, y)[c]);
+                EXPECT_NEAR(value / expected[c], 1.0, tolerance)
+                    << "pixel " << x << ", " << y << ", channel " << c;
+            }
         }
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::test
