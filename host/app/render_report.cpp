@@ -119,7 +119,7 @@ void writeFeatures(JsonWriter& json, const RenderReport& r) {
 
 void writeDeviceRun(JsonWriter& json, const DeviceRunReport& d) {
     json.key("wavefront").beginObject();
-    json.field("passes", d.passes).field("pathSlots", d.pathSlots);
+    json.field("passes", d.passes).field("pathSlots", d.slotCount);
     json.field("setupSeconds", d.setupSeconds);
     json.field("truncatedTraversals", d.truncatedTraversals).field("interrupted", d.interrupted);
     json.field("pipelineCreationSeconds", d.pipelineCreationSeconds);
@@ -152,7 +152,7 @@ void writeDeviceRun(JsonWriter& json, const DeviceRunReport& d) {
 
 void printDeviceRun(const RenderReport& r, const DeviceRunReport& d) {
     std::printf("  device: %u passes of up to %u path slots, setup %.3f s, peak memory %.1f MiB\n",
-                d.passes, d.pathSlots, d.setupSeconds, double(r.deviceMemoryBytes) / 1048576.0);
+                d.passes, d.slotCount, d.setupSeconds, double(r.deviceMemoryBytes) / 1048576.0);
     std::printf(
         "  pipelines %.3f s %s; scene buffers %.1f KiB in %zu buffers\n", d.pipelineCreationSeconds,
         d.pipelinesCreatedEarly ? "waited for (created while the scene was prepared)" : "to create",

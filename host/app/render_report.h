@@ -18,18 +18,10 @@
 namespace vkpt {
 
 // What only the device executor (vkpt) has to report.
-struct DeviceRunReport {
+struct DeviceRunReport : DeviceRunFigures {
     std::uint32_t passes = 0;
-    std::uint32_t pathSlots = 0;
-    double setupSeconds = 0.0;             // upload, buffers and pipelines, before the first pass
-    std::uint64_t truncatedTraversals = 0; // BVH walks a driver loop limit cut short
-    std::vector<KernelTimeTotal> kernelTimes; // empty unless --stats
-    double pipelineCreationSeconds = 0.0; // wall time of the driver's pipeline compiles (parallel)
-    std::vector<PipelineCreation> pipelineCreations; // per kernel
-    bool pipelinesCreatedEarly = false; // while the scene was prepared: the wait is what is left
-    std::uint64_t sceneBufferBytes = 0; // Σ sceneBuffers
-    std::vector<SceneBufferBytes> sceneBuffers; // vkpt uploads only the arrays the scene has
-    bool interrupted = false;                   // Ctrl-C: the image holds the passes done
+    double setupSeconds = 0.0; // upload, buffers and pipelines, before the first pass
+    bool interrupted = false;  // Ctrl-C: the image holds the passes done
 };
 
 struct RenderReport {

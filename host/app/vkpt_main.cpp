@@ -80,19 +80,7 @@ int printDevices() {
 }
 
 DeviceRunReport deviceRunReport(const WavefrontResult& result, double setupSeconds) {
-    DeviceRunReport d;
-    d.passes = result.passes;
-    d.pathSlots = result.slotCount;
-    d.setupSeconds = setupSeconds;
-    d.truncatedTraversals = result.truncatedTraversals;
-    d.interrupted = result.interrupted;
-    d.kernelTimes = result.kernelTimes;
-    d.pipelineCreationSeconds = result.pipelineCreationSeconds;
-    d.pipelineCreations = result.pipelineCreations;
-    d.pipelinesCreatedEarly = result.pipelinesCreatedEarly;
-    d.sceneBufferBytes = result.sceneBufferBytes;
-    d.sceneBuffers = result.sceneBuffers;
-    return d;
+    return {{result}, result.passes, setupSeconds, result.interrupted};
 }
 
 // A walk the driver cut short means a wrong image, not a slow one: say so loudly.

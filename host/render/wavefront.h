@@ -44,20 +44,8 @@ struct WavefrontOptions : RenderRunOptions {
     EarlyPipelines* earlyPipelines = nullptr;
 };
 
-struct WavefrontResult : RenderRunResult {
-    std::vector<KernelTimeTotal> kernelTimes; // empty unless timeKernels
-    std::uint64_t truncatedTraversals = 0;    // walks a driver loop limit cut short; must be 0
-    std::uint32_t slotCount = 0;
-    // Wall time of creating every kernel's pipeline (vkCreateShaderModule +
-    // vkCreateComputePipelines, on several threads), before the first pass: what specialisation
-    // costs or saves (lavapipe compiles its LLVM code at the first dispatch, so there it
-    // measures the SPIR-V → NIR stage only); each kernel's own time is in pipelineCreations.
-    double pipelineCreationSeconds = 0.0;
-    std::vector<PipelineCreation> pipelineCreations; // per kernel
-    bool pipelinesCreatedEarly = false;              // taken from options.earlyPipelines
-    std::vector<SceneBufferBytes> sceneBuffers;      // the scene's buffers, as uploaded
-    std::uint64_t sceneBufferBytes = 0;              // Σ sceneBuffers
-};
+// What every executor's run gives and the device's own figures.
+struct WavefrontResult : RenderRunResult, DeviceRunFigures {};
 
 // Deterministic: the image depends on the seed, not on scheduling, slot count or chunking.
 // Throws VulkanError when the device cannot hold a buffer (the message names the limit).
