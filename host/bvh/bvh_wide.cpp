@@ -279,20 +279,35 @@ std::uint32_t quantiseHigh(float origin, float hi, float scale) {
     return result;
 }
 
-// The smallest biased exponent whose grid of 255 steps from `origin` reaches past every bound.
-std::uint32_t axisExponent(float origin, float extent, std::span<const float> highs) {
+// One axis of a node's children on its grid: the exponent and each child's bounds' steps.
+struct QuantisedAxis {
+    std::uint32_t exponent = 1;
+    std::array<std::uint32_t, WIDE_BVH_WIDTH> lows{};
+    std::array<std::uint32_t, WIDE_BVH_WIDTH> highs{};
+};
+
+// The smallest biased exponent whose grid of 255 steps from `origin` reaches past every high
+// bound, and the bounds' steps on it; the highs found while searching are the ones kept.
+QuantisedAxis quantiseAxis(float origin, float extent, std::span<const float> lows,
+                           std::span<const float> highs) {
+    QuantisedAxis axis;
     std::uint32_t e = 1;
     if (extent > 0.0f) {
         int exponent = int(std::ceil(std::log2(double(extent) / kQuantisedMax)));
         e = std::uint32_t(std::clamp(exponent + 127, 1, 254));
     }
-    for (; e < 254; ++e) {
+    for (;; ++e) {
         bool fits = true;
-        for (float hi : highs)
-            fits = fits && quantiseHigh(origin, hi, gridScale(e)) <= kQuantisedMax;
-        if (fits) break;
+        for (std::size_t c = 0; c < highs.size(); ++c) {
+            axis.highs[c] = quantiseHigh(origin, highs[c], gridScale(e));
+            fits = fits && axis.highs[c] <= kQuantisedMax;
+        }
+        if (fits || e == 254) break;
     }
-    return e;
+    axis.exponent = e;
+    for (std::size_t c = 0; c < lows.size(); ++c)
+        axis.lows[c] = quantiseLow(origin, lows[c], gridScale(e));
+    return axis;
 }
 
 void setQuantisedByte(gpu::WideBvhNode& node, std::uint32_t bound, std::uint32_t slot,
@@ -300,39 +315,44 @@ void setQuantisedByte(gpu::WideBvhNode& node, std::uint32_t bound, std::uint32_t
     // bound 0..5: lo.x, lo.y, lo.z, hi.x, hi.y, hi.z; two words each, slot s in word s / 4.
     std::uint32_t word = 2 * bound + slot / 4;
     std::uint32_t& target = node.quantised[word / 4][int(word % 4)];
-    target |= value << (8 * (slot % 4));
+    const std::uint32_t shift = 8 * (slot % 4);
+    target = (target & ~(0xffu << shift)) | (value << shift);
 }
 
 void quantiseChildren(const BvhTree& tree, const WideDraftNode& draft, gpu::WideBvhNode& node) {
+    std::array<const Aabb*, WIDE_BVH_WIDTH> boxes{};
+    std::array<std::uint32_t, WIDE_BVH_WIDTH> slots{};
+    std::size_t count = 0;
     Aabb box;
-    for (const WideDraftChild& child : draft.slots)
-        if (child.kind != Kind::Empty) box.extend(tree.nodes[child.binaryNode].bounds);
-    if (box.empty()) box = Aabb{glm::vec3(0.0f), glm::vec3(0.0f)};
-    node.origin = box.min;
-    std::uint32_t exponents[3];
-    for (int axis = 0; axis < 3; ++axis) {
-        std::array<float, WIDE_BVH_WIDTH> highs{};
-        std::size_t count = 0;
-        for (const WideDraftChild& child : draft.slots)
-            if (child.kind != Kind::Empty)
-                highs[count++] = tree.nodes[child.binaryNode].bounds.max[axis];
-        exponents[axis] = axisExponent(box.min[axis], box.max[axis] - box.min[axis],
-                                       std::span<const float>(highs.data(), count));
-    }
-    node.slotsAndExponents |= (exponents[0] << 8) | (exponents[1] << 16) | (exponents[2] << 24);
     for (std::uint32_t slot = 0; slot < WIDE_BVH_WIDTH; ++slot) {
         const WideDraftChild& child = draft.slots[slot];
-        for (int axis = 0; axis < 3; ++axis) {
-            std::uint32_t lo = kQuantisedMax, hi = 0; // an empty slot: lo > hi
-            if (child.kind != Kind::Empty) {
-                const Aabb& b = tree.nodes[child.binaryNode].bounds;
-                const float scale = gridScale(exponents[axis]);
-                lo = quantiseLow(node.origin[axis], b.min[axis], scale);
-                hi = quantiseHigh(node.origin[axis], b.max[axis], scale);
-                VKPT_ASSERT(hi <= kQuantisedMax, "quantised bound within the grid");
-            }
-            setQuantisedByte(node, std::uint32_t(axis), slot, lo);
-            setQuantisedByte(node, std::uint32_t(axis) + 3, slot, hi);
+        if (child.kind == Kind::Empty) continue;
+        boxes[count] = &tree.nodes[child.binaryNode].bounds;
+        slots[count++] = slot;
+        box.extend(*boxes[count - 1]);
+    }
+    if (box.empty()) box = Aabb{glm::vec3(0.0f), glm::vec3(0.0f)};
+    node.origin = box.min;
+    // An empty slot: lo > hi.
+    for (std::uint32_t slot = 0; slot < WIDE_BVH_WIDTH; ++slot)
+        for (std::uint32_t axis = 0; axis < 3; ++axis) {
+            setQuantisedByte(node, axis, slot, kQuantisedMax);
+            setQuantisedByte(node, axis + 3, slot, 0);
+        }
+    for (int axis = 0; axis < 3; ++axis) {
+        std::array<float, WIDE_BVH_WIDTH> lows{}, highs{};
+        for (std::size_t c = 0; c < count; ++c) {
+            lows[c] = boxes[c]->min[axis];
+            highs[c] = boxes[c]->max[axis];
+        }
+        const QuantisedAxis q = quantiseAxis(box.min[axis], box.max[axis] - box.min[axis],
+                                             std::span<const float>(lows.data(), count),
+                                             std::span<const float>(highs.data(), count));
+        node.slotsAndExponents |= q.exponent << (8 * (axis + 1));
+        for (std::size_t c = 0; c < count; ++c) {
+            VKPT_ASSERT(q.highs[c] <= kQuantisedMax, "quantised bound within the grid");
+            setQuantisedByte(node, std::uint32_t(axis), slots[c], q.lows[c]);
+            setQuantisedByte(node, std::uint32_t(axis) + 3, slots[c], q.highs[c]);
         }
     }
 }
