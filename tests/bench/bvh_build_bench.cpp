@@ -35,7 +35,8 @@ namespace {
 
 using vkpt::bench::median;
 
-constexpr int kBuildRuns = 3;
+// Odd, for a median; enough that one run slowed by the shared machine does not move it.
+constexpr int kBuildRuns = 7;
 constexpr int kTimedRuns = 3;
 constexpr std::uint32_t kRays = 200000;
 
@@ -154,50 +155,63 @@ BuiltScene buildScene(const std::vector<glm::vec3>& positions) {
     return s;
 }
 
-// Embree's builder on the same triangles, at its default quality and at embree-ref's.
-void benchEmbreeBuild([[maybe_unused]] const BenchScene& scene,
-                      [[maybe_unused]] std::uint32_t threads) {
+// One round of the parallel build and collapse, and Embree's builder at its default quality on
+// the same triangles and threads right after, so that a ratio compares runs that saw the same
+// load.
+struct BuildRound {
+    double build = 0.0;
+    double collapse = 0.0;
+    double embree = 0.0; // 0 without Embree
+};
+
+BuildRound timeBuildRound(const BenchScene& scene, [[maybe_unused]] std::uint32_t threads) {
+    BuildRound round;
+    auto start = std::chrono::steady_clock::now();
+    BvhTree tree = buildBvh(triangleBounds(scene.positions));
+    round.build = secondsSince(start);
+    start = std::chrono::steady_clock::now();
+    flattenWideBvh(tree);
+    round.collapse = secondsSince(start);
 #ifdef VKPT_HAVE_EMBREE
-    using bench::EmbreeBuildQuality;
-    auto seconds = [&](EmbreeBuildQuality quality) {
-        std::vector<double> runs;
-        for (int i = 0; i < kBuildRuns; ++i)
-            runs.push_back(bench::embreeBuildSeconds(scene.positions, quality, threads));
-        return median(runs);
-    };
-    const double medium = seconds(EmbreeBuildQuality::Medium);
-    const double high = seconds(EmbreeBuildQuality::High);
-    std::printf("  Embree 3 build on %u threads: %.4f s (medium quality, its default), %.4f s "
-                "(high, as embree-ref)\n",
-                threads, medium, high);
+    round.embree =
+        bench::embreeBuildSeconds(scene.positions, bench::EmbreeBuildQuality::Medium, threads);
 #endif
+    return round;
 }
 
 // From triangle positions to the device's nodes, as prepareScene does: bounds, binary build,
-// collapse to 8-wide.
+// collapse to 8-wide; beside Embree's builder at its default quality and at embree-ref's.
 void benchBuild(const BenchScene& scene) {
     const std::uint32_t threads = std::max(1u, std::thread::hardware_concurrency());
     BvhBuildOptions oneThread;
     oneThread.threadCount = 1;
     double serial =
         medianSeconds(kBuildRuns, [&] { buildBvh(triangleBounds(scene.positions), oneThread); });
-    double parallel = medianSeconds(kBuildRuns, [&] { buildBvh(triangleBounds(scene.positions)); });
-    BuiltScene built = buildScene(scene.positions);
-    // The copy a collapse works on is made outside the timed part.
-    std::vector<double> flattenRuns;
+    std::vector<double> builds, collapses, totals, embrees, ratios;
     for (int i = 0; i < kBuildRuns; ++i) {
-        BvhTree copy = built.tree;
-        auto start = std::chrono::steady_clock::now();
-        flattenWideBvh(copy);
-        flattenRuns.push_back(secondsSince(start));
+        const BuildRound round = timeBuildRound(scene, threads);
+        builds.push_back(round.build);
+        collapses.push_back(round.collapse);
+        totals.push_back(round.build + round.collapse);
+        embrees.push_back(round.embree);
+        ratios.push_back(round.embree > 0.0 ? (round.build + round.collapse) / round.embree : 0.0);
     }
-    const double flatten = median(flattenRuns);
+    std::printf("  build from positions: %.4f s on 1 thread, %.4f s on %u threads; collapse to "
+                "8-wide %.4f s; build + collapse %.4f s (medians of %d)\n",
+                serial, median(builds), threads, median(collapses), median(totals), kBuildRuns);
+#ifdef VKPT_HAVE_EMBREE
+    std::vector<double> high;
+    for (int i = 0; i < kBuildRuns; ++i)
+        high.push_back(
+            bench::embreeBuildSeconds(scene.positions, bench::EmbreeBuildQuality::High, threads));
+    std::printf("  Embree 3 build on %u threads: %.4f s (medium quality, its default), %.4f s "
+                "(high, as embree-ref); build + collapse / Embree medium: %.2f (median of the "
+                "runs' ratios, each run beside the other)\n",
+                threads, median(embrees), median(high), median(ratios));
+#endif
+    const BuiltScene built = buildScene(scene.positions);
     BvhStats stats = computeBvhStats(built.tree);
     WideBvhStats wide = computeWideBvhStats(built.nodes);
-    std::printf("  build from positions: %.4f s on 1 thread, %.4f s on %u threads (median of "
-                "%d); collapse to 8-wide %.4f s; build + collapse %.4f s\n",
-                serial, parallel, threads, kBuildRuns, flatten, parallel + flatten);
-    benchEmbreeBuild(scene, threads);
     std::printf("  binary tree: %u nodes, %u leaves, depth %u, max leaf %u, SAH cost %.2f\n",
                 stats.nodeCount, stats.leafCount, stats.maxDepth, stats.maxLeafSize,
                 double(stats.sahCost));
