@@ -4,7 +4,6 @@
 #include "render/wavefront.h"
 
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <functional>
 #include <memory>

@@ -225,8 +225,17 @@ private:
     std::vector<std::optional<std::optional<std::uint32_t>>> meshSlots_;
 };
 
+// Appended piece by piece: `"(" + std::string` trips GCC 12's -Wrestrict at -O3 (a false
+// positive inside libstdc++'s string::replace, reported by many projects).
 std::string formatPoint(const glm::dvec3& p) {
-    return "(" + formatNumber(p.x) + ", " + formatNumber(p.y) + ", " + formatNumber(p.z) + ")";
+    std::string point = "(";
+    point += formatNumber(p.x);
+    point += ", ";
+    point += formatNumber(p.y);
+    point += ", ";
+    point += formatNumber(p.z);
+    point += ")";
+    return point;
 }
 
 std::string plural(std::size_t count, const char* one, const char* many) {
