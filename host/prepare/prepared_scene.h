@@ -13,6 +13,7 @@
 #include "scene/scene.h"
 #include "scene/scene_features.h"
 #include "shared/host_device.h"
+#include "shared/scene_array_table.h"
 
 namespace vkpt {
 
@@ -25,32 +26,22 @@ struct PreparedMesh {
     std::uint32_t primitiveCount = 0;
 };
 
-struct PreparedScene {
+// A template template argument of one parameter (std::vector has two).
+template <class T> using HostArray = std::vector<T>;
+
+// The arrays the device reads are the members of gpu::SceneArrayMembers, one std::vector per row
+// of shared/scene_array_table.h (nodes, triangles, ..., albedoTables), named in its `member`
+// column; the rest is here.
+struct PreparedScene : gpu::SceneArrayMembers<HostArray> {
     BvhTree tree;                         // single-level: for the reference's stack traversal
     BvhStats bvhStats;                    // with the build time (two-level: of all levels)
-    std::vector<gpu::WideBvhNode> nodes;  // the device's 8-wide nodes (flattenWideBvh)
-    std::vector<gpu::Triangle> triangles; // triangles and spheres (PRIMITIVE_SPHERE)
-    std::vector<gpu::TriangleNormals> normals;
-    std::vector<glm::vec2> uvs; // 3 per primitive; empty unless features.textureCoordinates()
-    std::vector<gpu::TriangleTangents> tangents; // empty unless features.tangents()
-    std::vector<gpu::Material> materials;
-    std::vector<gpu::TextureInfo> textures;
-    std::vector<std::uint32_t> texels; // every texture's RGBA8 texels, see gpu::TextureInfo
-    std::vector<gpu::Emitter> emitters;
-    std::vector<float> emitterCdf; // inclusive selection CDF; empty unless features.emitterCdf()
-    std::vector<gpu::LightTreeNode> lightTree; // the light BVH; empty unless features.lightTree
-    gpu::EnvironmentParams environment{};      // emitterIndex NO_EMITTER without an environment
-    std::vector<glm::vec4> environmentTexels;  // the map's RGB (w unused), row 0 at the top
-    std::vector<float> environmentCdf; // height rows of width conditional entries, then marginal
-    // The layered BSDF's albedo tables (shared/albedo_lookup.h); empty unless
-    // features.metallicRoughnessMaterials.
-    std::vector<float> albedoTables;
+    gpu::EnvironmentParams environment{}; // emitterIndex NO_EMITTER without an environment
     // Two-level scenes (features.instances, two_level_bvh.h): the bottom levels (the world's own
     // geometry first when it has any, then Scene::meshes), the top level over the instances'
-    // world boxes, and the instances in its leaf order; `tree` is then empty.
+    // world boxes (the instances array holds the instances in its leaf order); `tree` is then
+    // empty.
     std::vector<PreparedMesh> meshes;
     BvhTree instanceTree;
-    std::vector<gpu::Instance> instances;
     SceneFeatures features;     // what the scene uses (all of it for a general layout)
     SceneFeatures usedFeatures; // what the scene uses, whatever the layout
     double totalEmittedPower = 0.0;

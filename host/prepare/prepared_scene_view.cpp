@@ -5,20 +5,12 @@ namespace vkpt {
 
 gpu::SceneView makeSceneView(const PreparedScene& scene) {
     gpu::SceneView view{};
-    view.primitives = scene.triangles;
-    view.normals = scene.normals;
-    view.tangents = scene.tangents;
-    view.instances = scene.instances;
-    view.uvs = scene.uvs;
-    view.materials = scene.materials;
-    view.textures = scene.textures;
-    view.textureTexels = scene.texels;
-    view.emitters = scene.emitters;
-    view.emitterCdf = scene.emitterCdf;
-    view.lightTree = scene.lightTree;
+#define VKPT_VIEW_OF_SCENE_ARRAY(name, Type, binding, number, access, split, member, reader,       \
+                                 accessor)                                                         \
+    view.member = scene.member;
+    VKPT_SCENE_ARRAYS(VKPT_VIEW_OF_SCENE_ARRAY)
+#undef VKPT_VIEW_OF_SCENE_ARRAY
     view.environment = scene.environment;
-    view.environmentTexels = scene.environmentTexels;
-    view.environmentCdf = scene.environmentCdf;
     // The features the scene's arrays were prepared for, as the kernels are specialised.
     view.features = scene.features.kernelFeatures();
     return view;

@@ -8,6 +8,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "common/errors.h"
 #include "gpu/upload.h"
 #include "gpu/vk_check.h"
 #include "lib/wavefront.h"
@@ -26,7 +27,7 @@ template <auto Member> void releaseArray(PreparedScene& scene) {
 
 template <auto Member>
 constexpr SceneArrayDesc sceneArray(const char* name, std::uint32_t binding,
-                                    SceneArrayAccess access, bool splittable = true) {
+                                    SceneArrayAccess access, bool splittable) {
     using Vector = std::remove_cvref_t<decltype(std::declval<PreparedScene&>().*Member)>;
     const std::uint64_t unit =
         access == SceneArrayAccess::Texels ? kTexelBytes : sizeof(typename Vector::value_type);
@@ -36,30 +37,17 @@ constexpr SceneArrayDesc sceneArray(const char* name, std::uint32_t binding,
 constexpr SceneArrayAccess kTexels = SceneArrayAccess::Texels;
 constexpr SceneArrayAccess kStorage = SceneArrayAccess::Storage;
 
-// Every array the kernels read from the scene, one line each. Records of
-// 16-byte multiples are fetched as texels (lib/records.glsl), the rest read as storage buffers
-// (lib/kernel_bindings.h). A splittable array is declared in GLSL with VKPT_SCENE_TEXELS or a
-// SCENE entry; the last is read by shared code as one array (shared/albedo_lookup.h) and has a
-// fixed size.
-const SceneArrayDesc kSceneArrays[] = {
-    sceneArray<&PreparedScene::nodes>("bvhNodes", BINDING_BVH_NODES, kTexels),
-    sceneArray<&PreparedScene::triangles>("triangles", BINDING_TRIANGLES, kTexels),
-    sceneArray<&PreparedScene::normals>("triangleNormals", BINDING_TRIANGLE_NORMALS, kTexels),
-    sceneArray<&PreparedScene::tangents>("triangleTangents", BINDING_TRIANGLE_TANGENTS, kTexels),
-    sceneArray<&PreparedScene::materials>("materials", BINDING_MATERIALS, kTexels),
-    sceneArray<&PreparedScene::emitters>("emitters", BINDING_EMITTERS, kTexels),
-    sceneArray<&PreparedScene::lightTree>("lightTree", BINDING_LIGHT_TREE, kTexels),
-    sceneArray<&PreparedScene::instances>("instances", BINDING_INSTANCES, kTexels),
-    sceneArray<&PreparedScene::uvs>("triangleUvs", BINDING_TRIANGLE_UVS, kStorage),
-    sceneArray<&PreparedScene::textures>("textures", BINDING_TEXTURES, kTexels),
-    sceneArray<&PreparedScene::emitterCdf>("emitterCdf", BINDING_EMITTER_CDF, kStorage),
-    sceneArray<&PreparedScene::texels>("textureTexels", BINDING_TEXTURE_TEXELS, kStorage),
-    sceneArray<&PreparedScene::environmentTexels>("environmentTexels", BINDING_ENVIRONMENT_TEXELS,
-                                                  kStorage),
-    sceneArray<&PreparedScene::environmentCdf>("environmentCdf", BINDING_ENVIRONMENT_CDF, kStorage),
-    sceneArray<&PreparedScene::albedoTables>("albedoTables", BINDING_ALBEDO_TABLES, kStorage,
-                                             false),
-};
+// Every array the kernels read from the scene: a row of shared/scene_array_table.h each, in its
+// order, with its access and split columns in the host's words.
+#define VKPT_ACCESS_TEXELS kTexels
+#define VKPT_ACCESS_STORAGE kStorage
+#define VKPT_SPLITTABLE_SPLIT true
+#define VKPT_SPLITTABLE_WHOLE false
+#define VKPT_SCENE_ARRAY_DESC(name, Type, binding, number, access, split, member, reader,          \
+                              accessor)                                                            \
+    sceneArray<&PreparedScene::member>(#name, binding, VKPT_ACCESS_##access,                       \
+                                       VKPT_SPLITTABLE_##split),
+const SceneArrayDesc kSceneArrays[] = {VKPT_SCENE_ARRAYS(VKPT_SCENE_ARRAY_DESC)};
 
 constexpr VkDeviceSize kStagingSliceBytes = VkDeviceSize(64) << 20;
 
@@ -104,10 +92,26 @@ std::span<const SceneArrayDesc> sceneArrayList() {
     return kSceneArrays;
 }
 
+const SceneArrayDesc* findSceneArray(std::uint32_t binding) {
+    const auto found =
+        std::find_if(std::begin(kSceneArrays), std::end(kSceneArrays),
+                     [binding](const SceneArrayDesc& d) { return d.binding == binding; });
+    return found == std::end(kSceneArrays) ? nullptr : found;
+}
+
 bool isSplittableSceneBinding(std::uint32_t binding) {
-    return std::any_of(
-        std::begin(kSceneArrays), std::end(kSceneArrays),
-        [binding](const SceneArrayDesc& d) { return d.binding == binding && d.splittable; });
+    const SceneArrayDesc* desc = findSceneArray(binding);
+    return desc != nullptr && desc->splittable;
+}
+
+KernelBinding sceneKernelBinding(std::uint32_t binding) {
+    const SceneArrayDesc* desc = findSceneArray(binding);
+    VKPT_ASSERT(desc != nullptr, "binding " + std::to_string(binding) +
+                                     " of a SCENE entry (lib/kernel_bindings.h) is no scene array");
+    return {binding,
+            desc->access == kTexels ? DescriptorKind::UniformTexelBuffer
+                                    : DescriptorKind::StorageBuffer,
+            desc->splittable ? SCENE_ARRAY_MAX_CHUNKS : 1u};
 }
 
 VkDeviceSize sceneChunkByteLimit(const DeviceLimits& limits, SceneArrayAccess access) {

@@ -1,6 +1,7 @@
-// scene_arrays.h — the list of the scene's device arrays (one entry each: name, binding, how
-// kernels read it, where it lives in PreparedScene) and their upload, split into chunks where an
-// array is larger than one binding may see (lib/scene_arrays.glsl reads the chunks).
+// scene_arrays.h — the list of the scene's device arrays (one entry per row of
+// shared/scene_array_table.h: name, binding, how kernels read it, where it lives in
+// PreparedScene) and their upload, split into chunks where an array is larger than one binding
+// may see (lib/scene_arrays.glsl reads the chunks).
 #pragma once
 
 #include <cstdint>
@@ -12,6 +13,7 @@
 
 #include "gpu/buffer.h"
 #include "gpu/context.h"
+#include "gpu/kernel.h"
 #include "prepare/prepared_scene.h"
 
 namespace vkpt {
@@ -21,10 +23,10 @@ class GpuContext;
 // How kernels read an array: 16-byte texels through uniform texel views, or a storage buffer.
 enum class SceneArrayAccess : std::uint32_t { Texels, Storage };
 
-// One entry of the list in scene_arrays.cpp.
+// One entry of the list in scene_arrays.cpp: a row of shared/scene_array_table.h.
 struct SceneArrayDesc {
     const char* name;      // the buffers' debug name and the GLSL name: "bvhNodes"
-    std::uint32_t binding; // BINDING_* of lib/wavefront.h
+    std::uint32_t binding; // its BINDING_*
     SceneArrayAccess access;
     // Whether the kernels read it through lib/scene_arrays.glsl (a descriptor array of
     // SCENE_ARRAY_MAX_CHUNKS); the others are read as one buffer by shared code and must fit.
@@ -36,9 +38,17 @@ struct SceneArrayDesc {
 
 std::span<const SceneArrayDesc> sceneArrayList();
 
+// The scene array at `binding`; nullptr when that binding is not a scene array's.
+const SceneArrayDesc* findSceneArray(std::uint32_t binding);
+
 // Whether `binding` is a splittable scene array (its kernels declare SCENE_ARRAY_MAX_CHUNKS
 // descriptors there).
 bool isSplittableSceneBinding(std::uint32_t binding);
+
+// How a kernel sees the scene array at `binding` (a SCENE entry of lib/kernel_bindings.h):
+// uniform texel buffers or storage buffers, SCENE_ARRAY_MAX_CHUNKS of them where the array may
+// be split. InternalError when `binding` is not a scene array's.
+KernelBinding sceneKernelBinding(std::uint32_t binding);
 
 // The most bytes one chunk of an array read through `access` may hold on this device: the
 // binding's range (maxTexelBufferElements texels, maxStorageBufferRange) and

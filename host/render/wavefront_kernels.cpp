@@ -21,8 +21,6 @@
 
 namespace vkpt {
 
-static_assert(kWavefrontBindingCount == BINDING_COUNT);
-
 namespace {
 
 struct KernelInfo {
@@ -31,22 +29,15 @@ struct KernelInfo {
     bool specialised = false; // includes lib/features.glsl
 };
 
-// The entries of a lib/kernel_bindings.h list as KernelBindings, in the list's order.
+// The entries of a lib/kernel_bindings.h list as KernelBindings, in the list's order. A scene
+// array's descriptor comes from its row of shared/scene_array_table.h (sceneKernelBinding).
 #define VKPT_UNIFORM_BINDING(binding) {binding, DescriptorKind::UniformBuffer},
-// A splittable scene array is a descriptor array (lib/scene_arrays.glsl): a SCENE storage entry,
-// or a texel entry of the scene array list.
-#define VKPT_TEXEL_BINDING(binding)                                                                \
-    {binding, DescriptorKind::UniformTexelBuffer,                                                  \
-     isSplittableSceneBinding(binding) ? SCENE_ARRAY_MAX_CHUNKS : 1u},
-#define VKPT_DESCRIPTORS_READ 1u
-#define VKPT_DESCRIPTORS_WRITE 1u
-#define VKPT_DESCRIPTORS_READ_WRITE 1u
-#define VKPT_DESCRIPTORS_SCENE SCENE_ARRAY_MAX_CHUNKS
-#define VKPT_STORAGE_BINDING(binding, access, Type, name)                                          \
-    {binding, DescriptorKind::StorageBuffer, VKPT_DESCRIPTORS_##access},
+#define VKPT_SCENE_BINDING(binding) sceneKernelBinding(binding),
+#define VKPT_TEXEL_BINDING(binding) {binding, DescriptorKind::UniformTexelBuffer},
+#define VKPT_STORAGE_BINDING(binding, access, Type, name) {binding, DescriptorKind::StorageBuffer},
 #define VKPT_KERNEL_BINDINGS(LIST)                                                                 \
     std::vector<KernelBinding> {                                                                   \
-        LIST(VKPT_UNIFORM_BINDING, VKPT_TEXEL_BINDING, VKPT_STORAGE_BINDING)                       \
+        LIST(VKPT_UNIFORM_BINDING, VKPT_SCENE_BINDING, VKPT_TEXEL_BINDING, VKPT_STORAGE_BINDING)   \
     }
 
 const std::array<KernelInfo, kWavefrontKernelCount>& kernelTable() {

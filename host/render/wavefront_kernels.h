@@ -12,6 +12,7 @@
 #include "common/device_stats.h"
 #include "gpu/descriptor_set.h"
 #include "gpu/kernel.h"
+#include "lib/wavefront.h"
 #include "scene/scene_features.h"
 
 namespace vkpt {
@@ -37,7 +38,7 @@ std::string_view kernelName(WavefrontKernel kernel);
 // its list in lib/kernel_bindings.h.
 std::span<const KernelBinding> kernelBindings(WavefrontKernel kernel);
 
-inline constexpr std::uint32_t kWavefrontBindingCount = 31; // BINDING_COUNT of lib/wavefront.h
+inline constexpr std::uint32_t kWavefrontBindingCount = BINDING_COUNT; // lib/wavefront.h
 
 // Which buffer each binding number refers to, or which chunks for a scene array split across
 // several (lib/scene_arrays.glsl); a kernel's descriptor set takes its bindings from here.

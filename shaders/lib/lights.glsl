@@ -1,16 +1,12 @@
 // lights.glsl — next-event estimation in the kernels: shared/lights.h chooses the light and
 // shared/light_connection.h the shadow ray, which becomes a shadow record for trace_shadow.
-// Needs what lib/surface.glsl needs, and emitterCdf, environmentTexels and environmentCdf
-// declared (and binds the emitters and lightTree texel views).
+// Reads what lib/surface.glsl reads, and emitters, emitterCdf, lightTree, environmentTexels and
+// environmentCdf (its kernels' SCENE entries).
 #ifndef VKPT_LIGHTS_GLSL
 #define VKPT_LIGHTS_GLSL
 
 #include "lib/environment.glsl"
 #include "lib/surface.glsl"
-
-float sceneEmitterCdf(uint i) {
-    return emitterCdfAt(i);
-}
 
 #include "shared/light_connection.h"
 

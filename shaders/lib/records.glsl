@@ -6,9 +6,11 @@
 // storage-buffer and a texel binding, and a kernel reads an element before it writes it.
 // Every record here is a multiple of 16 bytes (shared/host_device.h, lib/wavefront.h).
 //
-// The texel views are declared here for every includer; a kernel binds those it fetches from
-// (its TEXELS entries in lib/kernel_bindings.h), and one it never fetches from is not
-// statically used.
+// The texel views are declared for every includer, the scene arrays' by lib/scene_arrays.glsl
+// (named as in shared/scene_array_table.h: triangles, materials, ...) and the work arrays' here;
+// a kernel binds those it fetches from (its SCENE and TEXELS entries in lib/kernel_bindings.h),
+// and one it never fetches from is not statically used. A scene array's decoder is
+// fetch<Type>, the name lib/scene_view.glsl's generated accessors call.
 #ifndef VKPT_RECORDS_GLSL
 #define VKPT_RECORDS_GLSL
 
@@ -24,17 +26,6 @@
         return texelFetch(name, int(texel));                                                       \
     }
 
-// Scene arrays, which may be split across several buffers (lib/scene_arrays.glsl); each one
-// here is also an entry of host/render/scene_arrays.cpp's list.
-VKPT_SCENE_TEXELS(BINDING_BVH_NODES, bvhNodes)
-VKPT_SCENE_TEXELS(BINDING_TRIANGLES, triangleTexels)
-VKPT_SCENE_TEXELS(BINDING_TRIANGLE_NORMALS, triangleNormalTexels)
-VKPT_SCENE_TEXELS(BINDING_TRIANGLE_TANGENTS, triangleTangentTexels)
-VKPT_SCENE_TEXELS(BINDING_MATERIALS, materialTexels)
-VKPT_SCENE_TEXELS(BINDING_TEXTURES, textureInfoTexels)
-VKPT_SCENE_TEXELS(BINDING_EMITTERS, emitterTexels)
-VKPT_SCENE_TEXELS(BINDING_INSTANCES, instanceTexels)
-VKPT_SCENE_TEXELS(BINDING_LIGHT_TREE, lightTreeTexels)
 // Work arrays, sized by the host to fit one binding (host/render/work_buffers.cpp).
 VKPT_WORK_TEXELS(BINDING_RAY_TEXELS, rayTexels)
 VKPT_WORK_TEXELS(BINDING_HIT_TEXELS, hitTexels)
@@ -53,22 +44,22 @@ vec4 texelVec4(uvec4 t) {
 #define RECORD_TEXEL(view, texels, i, k) view##At((texels) * (i) + (k))
 
 Triangle fetchTriangle(uint i) {
-    uvec4 a = RECORD_TEXEL(triangleTexels, 3u, i, 0u);
-    uvec4 b = RECORD_TEXEL(triangleTexels, 3u, i, 1u);
-    uvec4 c = RECORD_TEXEL(triangleTexels, 3u, i, 2u);
+    uvec4 a = RECORD_TEXEL(triangles, 3u, i, 0u);
+    uvec4 b = RECORD_TEXEL(triangles, 3u, i, 1u);
+    uvec4 c = RECORD_TEXEL(triangles, 3u, i, 2u);
     return Triangle(texelVec3(a), a.w, texelVec3(b), b.w, texelVec3(c), c.w);
 }
 
 TriangleNormals fetchTriangleNormals(uint i) {
-    return TriangleNormals(texelVec4(RECORD_TEXEL(triangleNormalTexels, 3u, i, 0u)),
-                           texelVec4(RECORD_TEXEL(triangleNormalTexels, 3u, i, 1u)),
-                           texelVec4(RECORD_TEXEL(triangleNormalTexels, 3u, i, 2u)));
+    return TriangleNormals(texelVec4(RECORD_TEXEL(triangleNormals, 3u, i, 0u)),
+                           texelVec4(RECORD_TEXEL(triangleNormals, 3u, i, 1u)),
+                           texelVec4(RECORD_TEXEL(triangleNormals, 3u, i, 2u)));
 }
 
 TriangleTangents fetchTriangleTangents(uint i) {
-    return TriangleTangents(texelVec4(RECORD_TEXEL(triangleTangentTexels, 3u, i, 0u)),
-                            texelVec4(RECORD_TEXEL(triangleTangentTexels, 3u, i, 1u)),
-                            texelVec4(RECORD_TEXEL(triangleTangentTexels, 3u, i, 2u)));
+    return TriangleTangents(texelVec4(RECORD_TEXEL(triangleTangents, 3u, i, 0u)),
+                            texelVec4(RECORD_TEXEL(triangleTangents, 3u, i, 1u)),
+                            texelVec4(RECORD_TEXEL(triangleTangents, 3u, i, 2u)));
 }
 
 #define MATERIAL_TEXELS 29u // sizeof(Material) / 16
@@ -78,28 +69,28 @@ TextureSlot textureSlotFrom(uvec4 a, uvec4 b) {
 }
 
 TextureSlot fetchTextureSlot(uint material, uint first) {
-    return textureSlotFrom(RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, material, first),
-                           RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, material, first + 1u));
+    return textureSlotFrom(RECORD_TEXEL(materials, MATERIAL_TEXELS, material, first),
+                           RECORD_TEXEL(materials, MATERIAL_TEXELS, material, first + 1u));
 }
 
 // Twenty-nine texels, of which the compiler keeps the fetches of the fields a kernel reads.
 // Texels 10–12: the normal texture; 13–16: transmission, ior and volume; 17–28: clearcoat and
 // sheen (read only where FEATURE_CLEARCOAT or FEATURE_SHEEN keeps the code that reads them).
 Material fetchMaterial(uint i) {
-    uvec4 colour = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 0u);
-    uvec4 emission = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 1u);
-    uvec4 factors = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 2u);
-    uvec4 specular = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 3u);
-    vec4 glass = texelVec4(RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 13u));
-    uvec4 volume = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 14u);
-    uvec4 sheen = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 17u);
-    uvec4 clearcoat = RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 18u);
+    uvec4 colour = RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 0u);
+    uvec4 emission = RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 1u);
+    uvec4 factors = RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 2u);
+    uvec4 specular = RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 3u);
+    vec4 glass = texelVec4(RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 13u));
+    uvec4 volume = RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 14u);
+    uvec4 sheen = RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 17u);
+    uvec4 clearcoat = RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 18u);
     return Material(texelVec4(colour), texelVec3(emission), emission.w,
                     uintBitsToFloat(factors.x), uintBitsToFloat(factors.y),
                     uintBitsToFloat(factors.z), factors.w, texelVec3(specular),
                     uintBitsToFloat(specular.w), fetchTextureSlot(i, 4u), fetchTextureSlot(i, 6u),
                     fetchTextureSlot(i, 8u), fetchTextureSlot(i, 10u),
-                    uintBitsToFloat(RECORD_TEXEL(materialTexels, MATERIAL_TEXELS, i, 12u).x), 0u,
+                    uintBitsToFloat(RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 12u).x), 0u,
                     0u, 0u, glass.x, glass.y, glass.z, glass.w, texelVec3(volume), volume.w,
                     fetchTextureSlot(i, 15u), texelVec3(sheen), uintBitsToFloat(sheen.w),
                     uintBitsToFloat(clearcoat.x), uintBitsToFloat(clearcoat.y),
@@ -113,40 +104,40 @@ Material fetchMaterial(uint i) {
 // What a walk reads of an instance: the inverse transform and the mesh's root (texels 0–3); the
 // compiler drops the rest.
 Instance fetchWalkInstance(uint i) {
-    uvec4 flags = RECORD_TEXEL(instanceTexels, INSTANCE_TEXELS, i, 3u);
-    return Instance(texelVec4(RECORD_TEXEL(instanceTexels, INSTANCE_TEXELS, i, 0u)),
-                    texelVec4(RECORD_TEXEL(instanceTexels, INSTANCE_TEXELS, i, 1u)),
-                    texelVec4(RECORD_TEXEL(instanceTexels, INSTANCE_TEXELS, i, 2u)), flags.x,
+    uvec4 flags = RECORD_TEXEL(instances, INSTANCE_TEXELS, i, 3u);
+    return Instance(texelVec4(RECORD_TEXEL(instances, INSTANCE_TEXELS, i, 0u)),
+                    texelVec4(RECORD_TEXEL(instances, INSTANCE_TEXELS, i, 1u)),
+                    texelVec4(RECORD_TEXEL(instances, INSTANCE_TEXELS, i, 2u)), flags.x,
                     flags.y, flags.z, flags.w, vec4(0.0), vec4(0.0), vec4(0.0));
 }
 
 Instance fetchInstance(uint i) {
     Instance x = fetchWalkInstance(i);
-    x.objectToWorld0 = texelVec4(RECORD_TEXEL(instanceTexels, INSTANCE_TEXELS, i, 4u));
-    x.objectToWorld1 = texelVec4(RECORD_TEXEL(instanceTexels, INSTANCE_TEXELS, i, 5u));
-    x.objectToWorld2 = texelVec4(RECORD_TEXEL(instanceTexels, INSTANCE_TEXELS, i, 6u));
+    x.objectToWorld0 = texelVec4(RECORD_TEXEL(instances, INSTANCE_TEXELS, i, 4u));
+    x.objectToWorld1 = texelVec4(RECORD_TEXEL(instances, INSTANCE_TEXELS, i, 5u));
+    x.objectToWorld2 = texelVec4(RECORD_TEXEL(instances, INSTANCE_TEXELS, i, 6u));
     return x;
 }
 
 TextureInfo fetchTextureInfo(uint i) {
-    uvec4 t = textureInfoTexelsAt(i);
+    uvec4 t = texturesAt(i);
     return TextureInfo(t.x, t.y, t.z, t.w);
 }
 
 Emitter fetchEmitter(uint i) {
-    uvec4 a = RECORD_TEXEL(emitterTexels, 4u, i, 0u);
-    uvec4 b = RECORD_TEXEL(emitterTexels, 4u, i, 1u);
-    uvec4 c = RECORD_TEXEL(emitterTexels, 4u, i, 2u);
-    vec4 d = texelVec4(RECORD_TEXEL(emitterTexels, 4u, i, 3u));
+    uvec4 a = RECORD_TEXEL(emitters, 4u, i, 0u);
+    uvec4 b = RECORD_TEXEL(emitters, 4u, i, 1u);
+    uvec4 c = RECORD_TEXEL(emitters, 4u, i, 2u);
+    vec4 d = texelVec4(RECORD_TEXEL(emitters, 4u, i, 3u));
     return Emitter(texelVec3(a), a.w, texelVec3(b), b.w, texelVec3(c), uintBitsToFloat(c.w), d.x,
                    d.y, d.z, d.w);
 }
 
 LightTreeNode fetchLightTreeNode(uint i) {
-    uvec4 a = RECORD_TEXEL(lightTreeTexels, 4u, i, 0u);
-    uvec4 b = RECORD_TEXEL(lightTreeTexels, 4u, i, 1u);
-    uvec4 c = RECORD_TEXEL(lightTreeTexels, 4u, i, 2u);
-    uvec4 d = RECORD_TEXEL(lightTreeTexels, 4u, i, 3u);
+    uvec4 a = RECORD_TEXEL(lightTree, 4u, i, 0u);
+    uvec4 b = RECORD_TEXEL(lightTree, 4u, i, 1u);
+    uvec4 c = RECORD_TEXEL(lightTree, 4u, i, 2u);
+    uvec4 d = RECORD_TEXEL(lightTree, 4u, i, 3u);
     return LightTreeNode(texelVec3(a), uintBitsToFloat(a.w), texelVec3(b), uintBitsToFloat(b.w),
                          texelVec3(c), uintBitsToFloat(c.w), d.x, d.y, d.z, d.w);
 }

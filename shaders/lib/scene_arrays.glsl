@@ -1,6 +1,12 @@
-// scene_arrays.glsl — scene arrays that may be split across several buffers. Each array is a
-// descriptor array of SCENE_ARRAY_MAX_CHUNKS bindings (uniform texel buffers or storage buffers)
-// and one accessor, name##At(i), that every reader goes through. Element i lives in chunk
+// scene_arrays.glsl — the scene's arrays as the kernels declare them, one declaration per row of
+// shared/scene_array_table.h, for every includer: a kernel binds those it reads (its SCENE
+// entries in lib/kernel_bindings.h), and one it never reads is not statically used. Reading an
+// array that the kernel's list leaves out is therefore no compile error but a validation error
+// when the pipeline is made (every GPU test runs with validation on).
+//
+// An array that may be split across several buffers (SPLIT) is a descriptor array of
+// SCENE_ARRAY_MAX_CHUNKS bindings (uniform texel buffers or storage buffers) and one accessor,
+// name##At(i), that every reader goes through. Element i lives in chunk
 // i >> k at index i & (2^k − 1), where the host chooses k so that a chunk fits one binding
 // (host/render/scene_arrays.cpp). Both figures are specialisation constants: with the default
 // of one chunk the accessor folds to one fetch from element 0, so a scene that fits pays
@@ -10,6 +16,7 @@
 #ifndef VKPT_SCENE_ARRAYS_GLSL
 #define VKPT_SCENE_ARRAYS_GLSL
 
+#include "lib/buffers.glsl"
 #include "lib/wavefront.h"
 
 // The chunk count and log2 of elements per chunk of the array at `bindingIndex`.
@@ -51,5 +58,18 @@
     Type name##At(uint i) {                                                                        \
         VKPT_SCENE_ARRAY_SELECT(name, VKPT_STORAGE_CHUNK, i)                                               \
     }
+
+// One row of the table: its access and split choose the declaration. An array read whole is one
+// plain buffer, read as name[i] by its own code (albedoTables, shared/albedo_lookup.h).
+#define VKPT_DECLARE_TEXELS_SPLIT(bindingIndex, Type, name) VKPT_SCENE_TEXELS(bindingIndex, name)
+#define VKPT_DECLARE_STORAGE_SPLIT(bindingIndex, Type, name)                                       \
+    VKPT_SCENE_STORAGE(bindingIndex, Type, name)
+#define VKPT_DECLARE_STORAGE_WHOLE(bindingIndex, Type, name)                                       \
+    VKPT_READONLY_BUFFER(bindingIndex, Type, name)
+#define VKPT_DECLARE_SCENE_ARRAY(name, Type, binding, number, access, split, member, reader,       \
+                                 accessor)                                                         \
+    VKPT_DECLARE_##access##_##split(binding, Type, name)
+
+VKPT_SCENE_ARRAYS(VKPT_DECLARE_SCENE_ARRAY)
 
 #endif // VKPT_SCENE_ARRAYS_GLSL

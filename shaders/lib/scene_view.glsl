@@ -1,10 +1,9 @@
 // scene_view.glsl — the kernels' side of shared/scene_view.h: the accessors through which the
-// shared surface, material and light code reads the scene, as texel fetches of the scene
-// records (lib/records.glsl) and the frame's parameters, and the sceneHas* switches as the
+// shared surface, material and light code reads the scene, and the sceneHas* switches as the
 // kernel's specialisation constants (lib/features.glsl), so that code for a feature the scene
-// lacks folds away. The arrays a kernel declares itself are read where they are needed:
-// triangleUvs and textureTexels in lib/materials.glsl, environmentTexels and environmentCdf in
-// lib/environment.glsl, emitterCdf in lib/lights.glsl.
+// lacks folds away. Each array's accessor is generated from its row of
+// shared/scene_array_table.h: a texel array's decodes element i (fetch<Type> of
+// lib/records.glsl), a storage array's reads it through name##At (lib/scene_arrays.glsl).
 #ifndef VKPT_SCENE_VIEW_GLSL
 #define VKPT_SCENE_VIEW_GLSL
 
@@ -12,37 +11,23 @@
 #include "lib/records.glsl"
 #include "shared/intersect.h"
 
-Triangle scenePrimitive(uint i) {
-    return fetchTriangle(i);
-}
+// One accessor per VIEW row, `Type accessor(uint i)`; an OWN row has its own reader.
+#define VKPT_READ_TEXELS(Type, name, accessor)                                                     \
+    Type accessor(uint i) {                                                                        \
+        return fetch##Type(i);                                                                     \
+    }
+#define VKPT_READ_STORAGE(Type, name, accessor)                                                    \
+    Type accessor(uint i) {                                                                        \
+        return name##At(i);                                                                        \
+    }
+#define VKPT_KERNEL_ACCESSOR_VIEW(access, Type, name, accessor)                                    \
+    VKPT_READ_##access(Type, name, accessor)
+#define VKPT_KERNEL_ACCESSOR_OWN(access, Type, name, accessor)
+#define VKPT_KERNEL_SCENE_ACCESSOR(name, Type, binding, number, access, split, member, reader,     \
+                                   accessor)                                                       \
+    VKPT_KERNEL_ACCESSOR_##reader(access, Type, name, accessor)
 
-TriangleNormals sceneNormals(uint i) {
-    return fetchTriangleNormals(i);
-}
-
-TriangleTangents sceneTangents(uint i) {
-    return fetchTriangleTangents(i);
-}
-
-Material sceneMaterial(uint i) {
-    return fetchMaterial(i);
-}
-
-Instance sceneInstance(uint i) {
-    return fetchInstance(i);
-}
-
-TextureInfo sceneTexture(uint i) {
-    return fetchTextureInfo(i);
-}
-
-Emitter sceneEmitter(uint i) {
-    return fetchEmitter(i);
-}
-
-LightTreeNode sceneLightTreeNode(uint i) {
-    return fetchLightTreeNode(i);
-}
+VKPT_SCENE_ARRAYS(VKPT_KERNEL_SCENE_ACCESSOR)
 
 uint sceneEmitterCount() {
     return frame.emitterCount;

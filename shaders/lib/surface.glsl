@@ -1,5 +1,5 @@
-// surface.glsl — shared/surface.h in the kernels: a hit turned into what shading needs. Needs
-// what lib/materials.glsl needs (and binds triangleNormals).
+// surface.glsl — shared/surface.h in the kernels: a hit turned into what shading needs. Reads
+// what lib/materials.glsl reads, and triangleNormals and triangleTangents.
 #ifndef VKPT_SURFACE_GLSL
 #define VKPT_SURFACE_GLSL
 

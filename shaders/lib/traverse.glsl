@@ -4,7 +4,7 @@
 // leaf's primitives are triangles or spheres (FEATURE_SPHERES); a crossing of an alpha-masked
 // material's cut-out (FEATURE_ALPHA_MASK, shared/materials.h's isCutOut, which the
 // reference's AlphaMaskFilter asks too) is no hit, for every kind of ray, in the same order of
-// crossings. Needs what lib/materials.glsl needs.
+// crossings. Reads what lib/materials.glsl reads, and bvhNodes and instances.
 #ifndef VKPT_TRAVERSE_GLSL
 #define VKPT_TRAVERSE_GLSL
 

@@ -8,54 +8,83 @@
 
 #include "shared/host_device.h"
 #include "shared/sample_features.h"
-
-#ifdef __cplusplus
-namespace vkpt::gpu {
-#endif
+#include "shared/scene_array_table.h"
 
 // ---------------------------------------------------------------------------------------------
-// Bindings of descriptor set 0 (plain ints: GLSL layout qualifiers take them). Each kernel
-// declares only the buffers it uses, and its pipeline layout lists exactly those. A scene
-// array a scene does not have (no textures, one emitter, no environment map) is not
-// uploaded: its bindings get a small placeholder buffer that the specialised kernels never
-// read (host/render/device_scene.h). frameParams is a uniform buffer; the read-only records
-// (scene arrays, and the work arrays where a kernel only reads them) are uniform texel buffers
-// fetched as 16-byte texels (lib/records.glsl); the rest are storage buffers
-// (lib/kernel_bindings.h lists each kernel's; docs/gpu.md).
-#define BINDING_FRAME_PARAMS 0 // uniform buffer
-#define BINDING_BVH_NODES 1    // uniform texel buffer, as all scene records up to 5
-#define BINDING_TRIANGLES 2
-#define BINDING_TRIANGLE_NORMALS 3
-#define BINDING_MATERIALS 4
-#define BINDING_EMITTERS 5
-#define BINDING_PATH_STATES 6
-#define BINDING_RAYS 7
-#define BINDING_HITS 8
-#define BINDING_SHADOW_RAYS 9
-#define BINDING_PIXEL_STATES 10
-#define BINDING_ACTIVE_PIXELS 11
-#define BINDING_QUEUE_COUNTERS 12
-#define BINDING_DISPATCH_ARGS 13
-#define BINDING_TRIANGLE_UVS 14       // vec2, three per primitive (TEXCOORD_0)
-#define BINDING_TEXTURES 15           // TextureInfo, uniform texel buffer
-#define BINDING_TEXTURE_TEXELS 16     // uint, RGBA8 texels of every texture
-#define BINDING_EMITTER_CDF 17        // float, inclusive selection CDF (more than one emitter)
-#define BINDING_ENVIRONMENT_TEXELS 18 // vec4, the environment map
-#define BINDING_ENVIRONMENT_CDF 19    // float, the environment map's sampling CDF
-// The work arrays as uniform texel buffers, for the kernels that read them.
-#define BINDING_RAY_TEXELS 20
-#define BINDING_HIT_TEXELS 21
-#define BINDING_SHADOW_RAY_TEXELS 22
-#define BINDING_PATH_STATE_TEXELS 23
-#define BINDING_TRIANGLE_TANGENTS 24 // TriangleTangents, uniform texel buffer (normal maps)
-#define BINDING_ALBEDO_TABLES 25     // float, the layered BSDF's tables (shared/albedo_lookup.h)
-#define BINDING_INSTANCES 26         // Instance, uniform texel buffer (two-level scenes)
-#define BINDING_HIT_INSTANCES 27     // uint per hit: the instance hit (two-level scenes)
-// The AOVs (shared/sample_features.h), only in renders whose output or state records them.
-#define BINDING_SAMPLE_FEATURES 28 // SampleFeatures per slot: its camera sample's first hit
-#define BINDING_PIXEL_FEATURES 29  // PixelFeatures per pixel
-#define BINDING_LIGHT_TREE 30      // LightTreeNode, uniform texel buffer (the light BVH)
-#define BINDING_COUNT 31
+// Bindings of descriptor set 0. Each kernel declares only the buffers it uses, and its pipeline
+// layout lists exactly those. A scene array a scene does not have (no textures, one emitter, no
+// environment map) is not uploaded: its bindings get a small placeholder buffer that the
+// specialised kernels never read (host/render/device_scene.h). frameParams is a uniform buffer;
+// the read-only records (scene arrays, and the work arrays where a kernel only reads them) are
+// uniform texel buffers fetched as 16-byte texels (lib/records.glsl); the rest are storage
+// buffers (lib/kernel_bindings.h lists each kernel's; docs/gpu.md).
+//
+// X(binding, number): the bindings of the render's own buffers. The scene arrays' are in their
+// table (shared/scene_array_table.h); both lists become the BINDING_* constants below.
+#define VKPT_WORK_BINDINGS(X)                                                                      \
+    X(BINDING_FRAME_PARAMS, 0) /* uniform buffer */                                                \
+    X(BINDING_PATH_STATES, 6)                                                                      \
+    X(BINDING_RAYS, 7)                                                                             \
+    X(BINDING_HITS, 8)                                                                             \
+    X(BINDING_SHADOW_RAYS, 9)                                                                      \
+    X(BINDING_PIXEL_STATES, 10)                                                                    \
+    X(BINDING_ACTIVE_PIXELS, 11)                                                                   \
+    X(BINDING_QUEUE_COUNTERS, 12)                                                                  \
+    X(BINDING_DISPATCH_ARGS, 13)                                                                   \
+    /* The work arrays as uniform texel buffers, for the kernels that read them. */                \
+    X(BINDING_RAY_TEXELS, 20)                                                                      \
+    X(BINDING_HIT_TEXELS, 21)                                                                      \
+    X(BINDING_SHADOW_RAY_TEXELS, 22)                                                               \
+    X(BINDING_PATH_STATE_TEXELS, 23)                                                               \
+    X(BINDING_HIT_INSTANCES, 27) /* uint per hit: the instance hit (two-level scenes) */           \
+    /* The AOVs (shared/sample_features.h), only in renders whose output or state records them */  \
+    X(BINDING_SAMPLE_FEATURES, 28) /* SampleFeatures per slot: its camera sample's first hit */    \
+    X(BINDING_PIXEL_FEATURES, 29)  /* PixelFeatures per pixel */
+
+// The BINDING_* constants: plain ints in GLSL, whose layout qualifiers and specialisation ids
+// take constant expressions; in namespace vkpt in C++, where host/render uses them.
+#ifdef __cplusplus
+#define VKPT_BINDING_CONSTANT(binding, number) inline constexpr std::uint32_t binding = number;
+#else
+#define VKPT_BINDING_CONSTANT(binding, number) const int binding = number;
+#endif
+#define VKPT_SCENE_BINDING_CONSTANT(name, Type, binding, number, access, split, member, reader,    \
+                                    accessor)                                                      \
+    VKPT_BINDING_CONSTANT(binding, number)
+#ifdef __cplusplus
+namespace vkpt {
+#endif
+VKPT_WORK_BINDINGS(VKPT_BINDING_CONSTANT)
+VKPT_SCENE_ARRAYS(VKPT_SCENE_BINDING_CONSTANT)
+#ifdef __cplusplus
+// One more than the highest binding: every number below it is taken, each by one entry of
+// either list (checked below).
+#define VKPT_COUNT_WORK_BINDING(binding, number) +1
+#define VKPT_COUNT_SCENE_BINDING(name, Type, binding, number, access, split, member, reader,       \
+                                 accessor)                                                         \
+    +1
+inline constexpr std::uint32_t BINDING_COUNT =
+    0 VKPT_WORK_BINDINGS(VKPT_COUNT_WORK_BINDING) VKPT_SCENE_ARRAYS(VKPT_COUNT_SCENE_BINDING);
+
+// Whether the two lists number the bindings 0 … BINDING_COUNT − 1, each once: a number given
+// twice would make two buffers one binding.
+constexpr bool bindingsNumberedOnce() {
+#define VKPT_WORK_BINDING_NUMBER(binding, number) number,
+#define VKPT_SCENE_BINDING_NUMBER(name, Type, binding, number, access, split, member, reader,      \
+                                  accessor)                                                        \
+    number,
+    const std::uint32_t numbers[] = {VKPT_WORK_BINDINGS(VKPT_WORK_BINDING_NUMBER)
+                                         VKPT_SCENE_ARRAYS(VKPT_SCENE_BINDING_NUMBER)};
+    bool taken[BINDING_COUNT] = {};
+    for (std::uint32_t number : numbers) {
+        if (number >= BINDING_COUNT || taken[number]) return false;
+        taken[number] = true;
+    }
+    return true;
+}
+static_assert(bindingsNumberedOnce(), "a binding number is used twice or leaves a gap");
+} // namespace vkpt
+#endif
 
 // Specialisation constant: the render records AOVs (lib/aovs.glsl). A setting of the render,
 // not a feature of the scene, with an id between the scene features' and the chunk constants'.
@@ -69,6 +98,10 @@ namespace vkpt::gpu {
 #define SCENE_ARRAY_MAX_CHUNKS 4
 #define SPEC_SCENE_ARRAY_CHUNKS(binding) (16 + 2 * (binding))
 #define SPEC_SCENE_ARRAY_CHUNK_LOG2(binding) (17 + 2 * (binding))
+
+#ifdef __cplusplus
+namespace vkpt::gpu {
+#endif
 
 // ---------------------------------------------------------------------------------------------
 // What every kernel needs to know about the render, uploaded once (buffer frameParams).

@@ -4,9 +4,10 @@
 //
 // The five tables lie end to end in one array of VKPT_ALBEDO_ENTRIES floats. The reference
 // reads albedoTableEntries below; the kernels read the same numbers from the storage buffer
-// albedoTables (BINDING_ALBEDO_TABLES, uploaded from albedoTableEntries), which their binding
-// list declares before this header. As GLSL constants the tables made lavapipe's compiler take
-// minutes and gigabytes per kernel; as a buffer they cost a load each, like any scene array.
+// albedoTables (BINDING_ALBEDO_TABLES, uploaded from albedoTableEntries), which
+// lib/scene_arrays.glsl declares from its row of shared/scene_array_table.h before this
+// header. As GLSL constants the tables made lavapipe's compiler take minutes and gigabytes per
+// kernel; as a buffer they cost a load each, like any scene array.
 #ifndef VKPT_ALBEDO_LOOKUP_H
 #define VKPT_ALBEDO_LOOKUP_H
 

@@ -6,7 +6,7 @@
 //
 // The map is read one element at a time through scene_view.h's accessors: a span of the
 // SceneView on the C++ side, the kernels' arrays, which may be split across several buffers,
-// on the GLSL side (lib/environment.glsl):
+// on the GLSL side (lib/scene_view.glsl):
 //   vec4 sceneEnvironmentTexel(i):  width × height RGB (w unused), row 0 at the top (+Y);
 //   float sceneEnvironmentCdf(i):   height rows of width inclusive conditional entries (each
 //                                   row ends at 1), then height inclusive marginal entries

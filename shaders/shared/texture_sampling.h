@@ -5,7 +5,7 @@
 //
 // Texels are read one at a time through sceneTextureTexel (scene_view.h): a span of the
 // SceneView on the C++ side, the kernels' textureTexels array, which may be split across
-// several buffers, on the GLSL side (lib/materials.glsl).
+// several buffers, on the GLSL side (lib/scene_view.glsl).
 #ifndef VKPT_TEXTURE_SAMPLING_H
 #define VKPT_TEXTURE_SAMPLING_H
 

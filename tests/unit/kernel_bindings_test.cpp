@@ -1,8 +1,8 @@
 // kernel_bindings_test.cpp — the kernels' binding lists (shaders/lib/kernel_bindings.h) as the
 // host builds pipeline layouts from them. What a list can get wrong without the kernel's
 // compiler noticing: a binding given twice, frameParams left out, one binding seen as a
-// different kind of descriptor by two kernels, though one buffer (BufferTable) serves both, or
-// a splittable scene array declared as one descriptor.
+// different kind of descriptor by two kernels, though one buffer (BufferTable) serves both, a
+// splittable scene array declared as one descriptor, or a scene array no kernel reads.
 #include <gtest/gtest.h>
 
 #include <map>
@@ -55,10 +55,10 @@ TEST(KernelBindings, ABindingIsOneKindOfDescriptorInEveryKernel) {
     }
 }
 
-// A scene array the host may split (render/scene_arrays.cpp's list) must be a descriptor
-// array in every kernel that reads it (a SCENE entry, or a texel view of VKPT_SCENE_TEXELS),
-// and nothing else may be one: else a split array's chunks past the first would be unbound, or
-// a whole one bound where the kernel expects chunks.
+// A scene array the host may split (SPLIT in shared/scene_array_table.h) must be a descriptor
+// array in every kernel that reads it (its SCENE entry), and nothing else may be one: else a
+// split array's chunks past the first would be unbound, or a whole one bound where the kernel
+// expects chunks (a TEXELS or BUFFER entry given a scene array's binding).
 TEST(KernelBindings, SplittableSceneArraysAreDescriptorArraysEverywhere) {
     for (std::size_t i = 0; i < kWavefrontKernelCount; ++i) {
         for (const KernelBinding& binding : kernelBindings(kernelAt(i))) {
@@ -68,6 +68,17 @@ TEST(KernelBindings, SplittableSceneArraysAreDescriptorArraysEverywhere) {
                 << nameOf(kernelAt(i)) << ": binding " << binding.binding;
         }
     }
+}
+
+// A row of the scene array table that no kernel's list names is uploaded for nothing: the
+// array's SCENE entry is missing from the kernels that read it, or the row is left over.
+TEST(KernelBindings, EverySceneArrayIsReadBySomeKernel) {
+    std::set<std::uint32_t> bound;
+    for (std::size_t i = 0; i < kWavefrontKernelCount; ++i)
+        for (const KernelBinding& binding : kernelBindings(kernelAt(i)))
+            bound.insert(binding.binding);
+    for (const SceneArrayDesc& desc : sceneArrayList())
+        EXPECT_TRUE(bound.contains(desc.binding)) << desc.name;
 }
 
 } // namespace

@@ -60,12 +60,12 @@ struct TinyScene {
 
     SceneView view() const {
         SceneView v{};
-        v.primitives = primitives;
+        v.triangles = primitives;
         v.normals = normals;
         v.uvs = uvs;
         v.materials = materials;
         v.textures = textures;
-        v.textureTexels = texels;
+        v.texels = texels;
         v.emitters = emitters;
         v.emitterCdf = emitterCdf;
         v.environment = {vec3(0.0f), 0u, 0u, NO_EMITTER, 0u, 0u};

@@ -30,7 +30,7 @@ gpu::TextureInfo textureInfo(std::uint32_t offset, std::uint32_t width, std::uin
 // The shared code reads texels through a SceneView; these tests need nothing else in it.
 gpu::SceneView texelView(const std::vector<std::uint32_t>& texels) {
     gpu::SceneView view{};
-    view.textureTexels = texels;
+    view.texels = texels;
     return view;
 }
 
