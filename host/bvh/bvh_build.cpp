@@ -5,10 +5,10 @@
 // other of two arrays (a node at depth d reads array d % 2), keeping each side's order. The
 // children's boxes come from the winning split's bins, their centroid bounds from the
 // partition, and the left side's size from the bins' counts, so no pass measures a range
-// again and the partition needs no branch (Wald 2007, section 3; Embree's builders do the
-// same). The top levels' passes are split across threads by slices of the range, each slice
-// binned apart and written at the offsets its bins' counts give; the subtrees below are built
-// on worker threads. A stable partition gives every slicing the same order, so neither the
+// again and the partition knows where the right side starts (Wald 2007, section 3; Embree's
+// builders do the same). The top levels' passes are split across threads by slices of the range,
+// each slice binned apart and written at the offsets its bins' counts give; the subtrees below are
+// built on worker threads. A stable partition gives every slicing the same order, so neither the
 // tree nor its numbering depends on the thread count.
 #include "bvh/bvh_build.h"
 
