@@ -87,7 +87,7 @@ void BufferTable::setChunks(std::uint32_t binding, const std::vector<Buffer>& ch
 
 std::vector<SpecializationConstant> chunkConstants(const BufferTable& table) {
     std::vector<SpecializationConstant> constants;
-    for (std::uint32_t binding = 0; binding < kWavefrontBindingCount; ++binding) {
+    for (std::uint32_t binding = 0; binding < BINDING_COUNT; ++binding) {
         const auto chunks = static_cast<std::uint32_t>(table.buffers[binding].size());
         if (chunks <= 1) continue;
         constants.push_back({SPEC_SCENE_ARRAY_CHUNKS(binding), chunks});

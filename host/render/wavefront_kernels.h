@@ -38,13 +38,11 @@ std::string_view kernelName(WavefrontKernel kernel);
 // its list in lib/kernel_bindings.h.
 std::span<const KernelBinding> kernelBindings(WavefrontKernel kernel);
 
-inline constexpr std::uint32_t kWavefrontBindingCount = BINDING_COUNT; // lib/wavefront.h
-
 // Which buffer each binding number refers to, or which chunks for a scene array split across
 // several (lib/scene_arrays.glsl); a kernel's descriptor set takes its bindings from here.
 struct BufferTable {
-    std::array<std::vector<const Buffer*>, kWavefrontBindingCount> buffers{};
-    std::array<std::uint32_t, kWavefrontBindingCount> chunkLog2{}; // elements per chunk, log2
+    std::array<std::vector<const Buffer*>, BINDING_COUNT> buffers{};
+    std::array<std::uint32_t, BINDING_COUNT> chunkLog2{}; // elements per chunk, log2
 
     void set(std::uint32_t binding, const Buffer& buffer) { buffers.at(binding) = {&buffer}; }
     void setChunks(std::uint32_t binding, const std::vector<Buffer>& chunks,
