@@ -42,7 +42,7 @@ else
     [ -x "$build/host/app/vkpt" ] || bash ci/build.sh release
     bin="$root/$build/host/app"
     mapfile -t tests < <(find "$build/tests/gpu" "$build/tests/image" "$build/tests/extremes" \
-        -maxdepth 1 -type f -executable -name '*_test' | sort)
+        -maxdepth 1 -type f -executable -name '*_tests' | sort)
     for bench in "$build"/tests/bench/*; do [ -x "$bench" ] && ln -sf "$root/$bench" "$bin/"; done
     built_from=$(git rev-parse HEAD 2>/dev/null || echo unknown)
 fi

@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-    build-essential cmake pkg-config ccache
+    build-essential cmake ninja-build pkg-config ccache
     libvulkan-dev libvulkan-volk-dev mesa-vulkan-drivers vulkan-validationlayers
     glslang-tools glslang-dev spirv-tools
     libglm-dev libstb-dev libtinygltf-dev

@@ -4,26 +4,45 @@
 # slurm, study) on lavapipe with validation on; then the fuzz build (clang, preset fuzz) and its
 # short fuzz run over the glTF loader (label fuzz, about a minute). Last, whether it all left
 # the checkout as it found it (ci/check_clean_tree.sh): tests write only into their own folders.
+# At the end, pass or fail, it prints where the time went: the builds, the tests and the ten
+# slowest tests (docs/testing.md says how to look into one).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-# The checkout's state before the run, kept outside it; checked at exit, failed run or not.
-status_before=$(mktemp)
-git status --porcelain --untracked-files=all >"$status_before"
+# The checkout's state before the run and the tests' timings, kept outside it.
+scratch=$(mktemp -d)
+git status --porcelain --untracked-files=all >"$scratch/status_before"
+declare -A seconds=()
+timed() { # timed NAME COMMAND...: runs the command and records its wall seconds under NAME
+    local name=$1 start=$SECONDS
+    shift
+    "$@" || { seconds[$name]=$((SECONDS - start)); return 1; }
+    seconds[$name]=$((SECONDS - start))
+}
+report_times() {
+    local line="test.sh: time:"
+    for name in build format tests fuzz-build fuzz-tests; do
+        [ -n "${seconds[$name]:-}" ] && line+=" $name ${seconds[$name]} s,"
+    done
+    echo "${line%,}; ${SECONDS} s in all"
+    [ -s "$scratch/tests.xml" ] && python3 ci/test_times.py "$scratch/tests.xml" 10
+    return 0
+}
 finish() {
     local status=$?
-    bash ci/check_clean_tree.sh "$status_before" || status=1
-    rm -f "$status_before"
+    report_times || true
+    bash ci/check_clean_tree.sh "$scratch/status_before" || status=1
+    rm -rf "$scratch"
     exit "$status"
 }
 trap finish EXIT
 
-bash ci/build.sh ci
-bash ci/format_check.sh
+timed build bash ci/build.sh ci
+timed format bash ci/format_check.sh
 source ci/lavapipe_env.sh
 # Tests write only into their own folders: the programs they run leave the user's pipeline cache
 # (~/.cache/vkpt) alone; tests/gpu/pipeline_cache_test.cpp covers the cache with its own files.
 export VKPT_NO_PIPELINE_CACHE=1
-ctest --preset ci "$@"
-bash ci/build.sh fuzz
-ctest --preset fuzz
+timed tests ctest --preset ci --output-junit "$scratch/tests.xml" "$@"
+timed fuzz-build bash ci/build.sh fuzz
+timed fuzz-tests ctest --preset fuzz

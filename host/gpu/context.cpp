@@ -101,6 +101,7 @@ GpuContext::GpuContext(const GpuOptions& options)
 GpuContext::~GpuContext() {
     // Nothing may still run when its pool and device go; vkpt waits on fences, so this is cheap.
     vkDeviceWaitIdle(device_);
+    kernelMemo_->clear();
     pipelineCache_.reset();
     vkDestroyCommandPool(device_, commandPool_, nullptr);
     vkDestroyDevice(device_, nullptr);

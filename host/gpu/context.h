@@ -5,6 +5,7 @@
 #include "gpu/debug_utils.h"
 #include "gpu/device_list.h"
 #include "gpu/instance.h"
+#include "gpu/kernel_memo.h"
 #include "gpu/memory.h"
 #include "gpu/pipeline_cache.h"
 
@@ -88,6 +89,9 @@ public:
     // Every kernel's pipeline goes through it; a file-backed one when GpuOptions asked.
     PipelineCache& pipelineCache() const { return *pipelineCache_; }
 
+    // The pipelines renders on this device have made, for the next render that needs them.
+    KernelMemo& kernelMemo() const { return *kernelMemo_; }
+
     MemoryAccounting& memoryAccounting() { return memoryAccounting_; }
     const MemoryStats& memoryStats() const { return memoryAccounting_.stats(); }
 
@@ -104,6 +108,7 @@ private:
     VkQueue queue_ = VK_NULL_HANDLE;
     VkCommandPool commandPool_ = VK_NULL_HANDLE;
     std::unique_ptr<PipelineCache> pipelineCache_;
+    std::unique_ptr<KernelMemo> kernelMemo_ = std::make_unique<KernelMemo>();
     MemoryAccounting memoryAccounting_;
 };
 

@@ -63,6 +63,7 @@ public:
     Kernel& operator=(const Kernel&) = delete;
 
     const GpuContext& context() const { return *context_; }
+    const KernelDesc& desc() const { return desc_; }
     const std::string& name() const { return desc_.name; }
     const std::vector<KernelBinding>& bindings() const { return desc_.bindings; }
     std::uint32_t pushConstantSize() const { return desc_.pushConstantSize; }

@@ -41,7 +41,7 @@ EarlyPipelines::~EarlyPipelines() {
     if (kernels_.valid()) kernels_.wait();
 }
 
-std::optional<std::vector<Kernel>>
+std::optional<WavefrontKernelSet>
 EarlyPipelines::take(const SceneFeatures& features,
                      const std::vector<SpecializationConstant>& constants, KernelBuilds builds) {
     if (!kernels_.valid() || builds != builds_ || !sameConstants(constants, constants_) ||

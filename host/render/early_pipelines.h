@@ -21,7 +21,7 @@ public:
     // array split into chunks, which holds for every scene whose arrays each fit one binding.
     EarlyPipelines(const GpuContext& context, const SceneFeatures& features, bool aovs,
                    KernelBuilds builds);
-    // Waits for the workers; kernels not taken are destroyed.
+    // Waits for the workers; what they made stays in the device's memo, taken or not.
     ~EarlyPipelines();
     EarlyPipelines(const EarlyPipelines&) = delete;
     EarlyPipelines& operator=(const EarlyPipelines&) = delete;
@@ -30,15 +30,15 @@ public:
     // a failed creation is rethrown, as creating them again would fail too). None when the
     // inputs differ — a scene array split into chunks, or features the prepared scene settled
     // otherwise, such as its emitter count — and the caller then creates its own.
-    std::optional<std::vector<Kernel>> take(const SceneFeatures& features,
-                                            const std::vector<SpecializationConstant>& constants,
-                                            KernelBuilds builds);
+    std::optional<WavefrontKernelSet> take(const SceneFeatures& features,
+                                           const std::vector<SpecializationConstant>& constants,
+                                           KernelBuilds builds);
 
 private:
     SceneFeatures features_;
     std::vector<SpecializationConstant> constants_;
     KernelBuilds builds_;
-    std::future<std::vector<Kernel>> kernels_;
+    std::future<WavefrontKernelSet> kernels_;
 };
 
 } // namespace vkpt

@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "common/errors.h"
+#include "gpu/context.h"
 #include "lib/kernel_bindings.h"
 #include "lib/wavefront.h"
 #include "render/early_pipelines.h"
@@ -141,10 +142,9 @@ std::span<const std::uint32_t> kernelSpirv(WavefrontKernel kernel, const SceneFe
     return kernels::findKernel(name).spirv;
 }
 
-Kernel makeWavefrontKernel(const GpuContext& context, WavefrontKernel kernel,
-                           const SceneFeatures& features,
-                           const std::vector<SpecializationConstant>& renderConstants,
-                           KernelBuilds builds) {
+KernelDesc wavefrontKernelDesc(WavefrontKernel kernel, const SceneFeatures& features,
+                               const std::vector<SpecializationConstant>& renderConstants,
+                               KernelBuilds builds) {
     KernelDesc desc;
     desc.name = std::string(kernelName(kernel));
     desc.spirv = kernelSpirv(kernel, features, builds);
@@ -155,7 +155,14 @@ Kernel makeWavefrontKernel(const GpuContext& context, WavefrontKernel kernel,
     // VkSpecializationMapEntry), so every kernel gets the same render constants.
     desc.specializationConstants.insert(desc.specializationConstants.end(), renderConstants.begin(),
                                         renderConstants.end());
-    return Kernel(context, std::move(desc));
+    return desc;
+}
+
+Kernel makeWavefrontKernel(const GpuContext& context, WavefrontKernel kernel,
+                           const SceneFeatures& features,
+                           const std::vector<SpecializationConstant>& renderConstants,
+                           KernelBuilds builds) {
+    return Kernel(context, wavefrontKernelDesc(kernel, features, renderConstants, builds));
 }
 
 DescriptorSet bindWavefrontKernel(const Kernel& kernel, WavefrontKernel id,
@@ -172,33 +179,29 @@ DescriptorSet bindWavefrontKernel(const Kernel& kernel, WavefrontKernel id,
 
 namespace {
 
-// Creates every kernel's pipeline on up to `threads` threads, the largest modules first, so
+// Creates the pipelines of `descs` on up to `threads` threads, the largest modules first, so
 // that the longest compile (shade_hits) starts at once and the others fill the other cores:
 // the wait is about the longest compile instead of the sum. vkCreateComputePipelines may be
 // called from several threads at once, and a pipeline cache created without
 // VK_PIPELINE_CACHE_CREATE_EXTERNALLY_SYNCHRONIZED_BIT synchronises itself (Vulkan's threading
 // rules).
 std::vector<Kernel> createKernelsInParallel(const GpuContext& context,
-                                            const SceneFeatures& features,
-                                            const std::vector<SpecializationConstant>& constants,
-                                            KernelBuilds builds, unsigned threads) {
-    std::array<std::size_t, kWavefrontKernelCount> order{};
+                                            const std::vector<KernelDesc>& descs,
+                                            unsigned threads) {
+    std::vector<std::size_t> order(descs.size());
     for (std::size_t i = 0; i < order.size(); ++i)
         order[i] = i;
-    const auto bytes = [&](std::size_t i) {
-        return kernelSpirv(static_cast<WavefrontKernel>(i), features, builds).size();
-    };
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::size_t a, std::size_t b) { return bytes(a) > bytes(b); });
-    std::vector<std::optional<Kernel>> made(kWavefrontKernelCount);
-    std::vector<std::exception_ptr> errors(kWavefrontKernelCount);
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return descs[a].spirv.size() > descs[b].spirv.size();
+    });
+    std::vector<std::optional<Kernel>> made(descs.size());
+    std::vector<std::exception_ptr> errors(descs.size());
     std::atomic<std::size_t> next{0};
     const auto work = [&] {
         for (std::size_t k = next++; k < order.size(); k = next++) {
             const std::size_t i = order[k];
             try {
-                made[i].emplace(makeWavefrontKernel(context, static_cast<WavefrontKernel>(i),
-                                                    features, constants, builds));
+                made[i].emplace(context, descs[i]);
             } catch (...) {
                 errors[i] = std::current_exception();
             }
@@ -211,8 +214,8 @@ std::vector<Kernel> createKernelsInParallel(const GpuContext& context,
     for (std::thread& worker : workers)
         worker.join();
     std::vector<Kernel> kernels;
-    kernels.reserve(kWavefrontKernelCount);
-    for (std::size_t i = 0; i < kWavefrontKernelCount; ++i) {
+    kernels.reserve(descs.size());
+    for (std::size_t i = 0; i < descs.size(); ++i) {
         if (errors[i]) std::rethrow_exception(errors[i]);
         kernels.push_back(std::move(*made[i]));
     }
@@ -221,11 +224,29 @@ std::vector<Kernel> createKernelsInParallel(const GpuContext& context,
 
 } // namespace
 
-std::vector<Kernel> createWavefrontKernels(const GpuContext& context, const SceneFeatures& features,
-                                           const std::vector<SpecializationConstant>& constants,
-                                           KernelBuilds builds) {
-    return createKernelsInParallel(context, features, constants, builds,
-                                   std::max(1u, std::thread::hardware_concurrency()));
+WavefrontKernelSet createWavefrontKernels(const GpuContext& context, const SceneFeatures& features,
+                                          const std::vector<SpecializationConstant>& constants,
+                                          KernelBuilds builds) {
+    WavefrontKernelSet set;
+    set.kernels.resize(kWavefrontKernelCount);
+    set.created.assign(kWavefrontKernelCount, false);
+    std::vector<std::size_t> missing;
+    std::vector<KernelDesc> descs;
+    for (std::size_t i = 0; i < kWavefrontKernelCount; ++i) {
+        KernelDesc desc =
+            wavefrontKernelDesc(static_cast<WavefrontKernel>(i), features, constants, builds);
+        set.kernels[i] = context.kernelMemo().find(desc);
+        if (set.kernels[i]) continue;
+        missing.push_back(i);
+        descs.push_back(std::move(desc));
+    }
+    std::vector<Kernel> made =
+        createKernelsInParallel(context, descs, std::max(1u, std::thread::hardware_concurrency()));
+    for (std::size_t k = 0; k < missing.size(); ++k) {
+        set.kernels[missing[k]] = context.kernelMemo().keep(std::move(made[k]));
+        set.created[missing[k]] = true;
+    }
+    return set;
 }
 
 // The render constants are the chunked arrays' (chunkConstants) followed by the AOV switch,
@@ -236,7 +257,7 @@ WavefrontPipelines::WavefrontPipelines(const GpuContext& context, const BufferTa
     const auto start = std::chrono::steady_clock::now();
     std::vector<SpecializationConstant> constants = chunkConstants(table);
     constants.push_back(aovConstant(aovs));
-    std::optional<std::vector<Kernel>> made =
+    std::optional<WavefrontKernelSet> made =
         early ? early->take(features, constants, builds) : std::nullopt;
     createdEarly_ = made.has_value();
     kernels_ =
@@ -248,15 +269,20 @@ WavefrontPipelines::WavefrontPipelines(const GpuContext& context, const BufferTa
     for (std::size_t i = 0; i < kWavefrontKernelCount; ++i) {
         const auto id = static_cast<WavefrontKernel>(i);
         spirvBytes_.push_back(kernelSpirv(id, features, builds).size_bytes());
-        sets_.push_back(bindWavefrontKernel(kernels_[i], id, table));
+        sets_.push_back(bindWavefrontKernel(kernel(id), id, table));
     }
 }
 
 std::vector<PipelineCreation> WavefrontPipelines::creations() const {
     std::vector<PipelineCreation> result;
-    for (std::size_t i = 0; i < kernels_.size(); ++i)
-        result.push_back({std::string(kernelName(static_cast<WavefrontKernel>(i))), spirvBytes_[i],
-                          std::chrono::duration<double>(kernels_[i].creationTime()).count()});
+    for (std::size_t i = 0; i < kWavefrontKernelCount; ++i) {
+        const double seconds =
+            kernels_.created[i]
+                ? std::chrono::duration<double>(kernels_.kernels[i]->creationTime()).count()
+                : 0.0;
+        result.push_back(
+            {std::string(kernelName(static_cast<WavefrontKernel>(i))), spirvBytes_[i], seconds});
+    }
     return result;
 }
 

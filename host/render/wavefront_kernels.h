@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -76,6 +77,9 @@ std::span<const std::uint32_t> kernelSpirv(WavefrontKernel kernel, const SceneFe
 // (what the scene uses, or generalFeatures for the --general pipelines) and for the render:
 // how the scene's arrays are split (chunkConstants), whether it records AOVs (aovConstant);
 // empty: no array is split and no AOVs.
+KernelDesc wavefrontKernelDesc(WavefrontKernel kernel, const SceneFeatures& features,
+                               const std::vector<SpecializationConstant>& renderConstants = {},
+                               KernelBuilds builds = KernelBuilds::ForFeatureSet);
 Kernel makeWavefrontKernel(const GpuContext& context, WavefrontKernel kernel,
                            const SceneFeatures& features,
                            const std::vector<SpecializationConstant>& renderConstants = {},
@@ -85,10 +89,16 @@ Kernel makeWavefrontKernel(const GpuContext& context, WavefrontKernel kernel,
 DescriptorSet bindWavefrontKernel(const Kernel& kernel, WavefrontKernel id,
                                   const BufferTable& table);
 
-// Every kernel's pipeline, in WavefrontKernel order, created on one thread per core.
-std::vector<Kernel> createWavefrontKernels(const GpuContext& context, const SceneFeatures& features,
-                                           const std::vector<SpecializationConstant>& constants,
-                                           KernelBuilds builds);
+// Every kernel's pipeline, in WavefrontKernel order: those an earlier render on the device made
+// are taken from its memo (gpu/kernel_memo.h), the others created on one thread per core and
+// kept there for the next render.
+struct WavefrontKernelSet {
+    std::vector<std::shared_ptr<const Kernel>> kernels;
+    std::vector<bool> created; // made by this call, else taken from the memo
+};
+WavefrontKernelSet createWavefrontKernels(const GpuContext& context, const SceneFeatures& features,
+                                          const std::vector<SpecializationConstant>& constants,
+                                          KernelBuilds builds);
 
 class EarlyPipelines;
 
@@ -100,20 +110,21 @@ public:
                        const SceneFeatures& features, bool aovs, KernelBuilds builds,
                        EarlyPipelines* early = nullptr);
 
-    const Kernel& kernel(WavefrontKernel id) const { return kernels_[index(id)]; }
+    const Kernel& kernel(WavefrontKernel id) const { return *kernels_.kernels[index(id)]; }
     const DescriptorSet& set(WavefrontKernel id) const { return sets_[index(id)]; }
     // Wall seconds from the first pipeline's creation to the last's: what the render waited for
     // (they are created in parallel, so less than Σ Kernel::creationTime()); with pipelines
     // created early, the wait for them, if any.
     double creationSeconds() const;
     bool createdEarly() const { return createdEarly_; }
-    // Each kernel's SPIR-V size and creation time, in dispatch order.
+    // Each kernel's SPIR-V size and creation time, in dispatch order; 0 s for a pipeline an
+    // earlier render on the device made.
     std::vector<PipelineCreation> creations() const;
 
 private:
     static std::size_t index(WavefrontKernel id) { return static_cast<std::size_t>(id); }
 
-    std::vector<Kernel> kernels_;
+    WavefrontKernelSet kernels_;
     std::vector<std::uint64_t> spirvBytes_;
     double wallSeconds_ = 0.0;
     bool createdEarly_ = false;

@@ -1,7 +1,10 @@
 // early_pipelines_test.cpp — pipelines created while the scene is prepared are taken only when
 // they were made for what the render needs (the kernels' features and build, the AOV switch,
 // no array split into chunks), and a render that takes them gives the image of pipelines
-// created after the upload, bit for bit.
+// created after the upload, bit for bit. Later renders on the same device take the pipelines
+// earlier ones made (gpu/kernel_memo.h).
+#include <algorithm>
+
 #include "lib/wavefront.h"
 #include "render/early_pipelines.h"
 #include "wavefront_test_support.h"
@@ -47,11 +50,43 @@ TEST_F(EarlyPipelinesTest, RefusedForAnythingButTheInputsTheyWereMadeFor) {
     layered.metallicRoughnessMaterials = true;
     EXPECT_FALSE(taken(layered, plain, KernelBuilds::ForFeatureSet)) << "other features";
     EXPECT_FALSE(taken(features, plain, KernelBuilds::Full)) << "the full build";
-    const std::optional<std::vector<Kernel>> kernels =
+    const std::optional<WavefrontKernelSet> kernels =
         early.take(features, plain, KernelBuilds::ForFeatureSet);
     ASSERT_TRUE(kernels.has_value());
-    EXPECT_EQ(kernels->size(), kWavefrontKernelCount);
+    EXPECT_EQ(kernels->kernels.size(), kWavefrontKernelCount);
     EXPECT_FALSE(taken(features, plain, KernelBuilds::ForFeatureSet)) << "taken twice";
+}
+
+class KernelMemoTest : public GpuTest {};
+
+// A second render on the same device takes every pipeline the first made (no creation time, the
+// same image bit for bit); a render with other features or the full build makes its own, once.
+TEST_F(KernelMemoTest, RendersOnOneDeviceCreateEachPipelineOnce) {
+    const LoadedTestScene box = loadTestScene("cornell-box.gltf");
+    RenderSettings settings = testSettings(16, 4);
+    const gpu::Camera camera =
+        makeGpuCamera(selectCamera(box.scene, 0), settings.width, settings.height);
+    const auto createdCount = [](const WavefrontResult& result) {
+        return std::count_if(result.pipelineCreations.begin(), result.pipelineCreations.end(),
+                             [](const PipelineCreation& p) { return p.seconds > 0.0; });
+    };
+    const WavefrontResult first = renderWavefront(context(), box.prepared, camera, settings);
+    EXPECT_EQ(createdCount(first), std::ptrdiff_t(kWavefrontKernelCount));
+    EXPECT_EQ(context().kernelMemo().size(), kWavefrontKernelCount);
+    const WavefrontResult second = renderWavefront(context(), box.prepared, camera, settings);
+    EXPECT_EQ(createdCount(second), 0);
+    EXPECT_EQ(first.output.image.pixels, second.output.image.pixels);
+
+    WavefrontOptions full;
+    full.kernelBuilds = KernelBuilds::Full;
+    const WavefrontResult whole = renderWavefront(context(), box.prepared, camera, settings, full);
+    EXPECT_GT(createdCount(whole), 0) << "shade_hits' full build is another pipeline";
+    EXPECT_LT(createdCount(whole), std::ptrdiff_t(kWavefrontKernelCount))
+        << "the kernels whose one build serves both are taken";
+    EXPECT_EQ(first.output.image.pixels, whole.output.image.pixels);
+    const std::size_t kept = context().kernelMemo().size();
+    renderWavefront(context(), box.prepared, camera, settings, full);
+    EXPECT_EQ(context().kernelMemo().size(), kept) << "nothing made twice";
 }
 
 } // namespace

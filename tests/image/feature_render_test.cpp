@@ -71,31 +71,36 @@ protected:
     LoadedTestScene scene_;
 };
 
-TEST_P(FeatureScenes, PathTracerMatchesTheReference) {
-    RenderSettings settings = testSettings(24, 8);
-    settings.seed = 21;
-    settings.lightSamples = 2;
-    expectSameSeedAgreement("path", settings);
-}
-
-TEST_P(FeatureScenes, DirectIntegratorsMatchTheReference) {
-    RenderSettings settings = testSettings(20, 4);
-    settings.seed = 22;
-    settings.integrator = Integrator::Direct;
-    settings.lightSamples = 3;
-    expectSameSeedAgreement("direct_light", settings);
-    settings.lightSampling = LightSampling::Hemisphere;
-    expectSameSeedAgreement("direct_hemisphere", settings);
-}
-
-TEST_P(FeatureScenes, NormalsMatchTheReference) {
-    RenderSettings settings = testSettings(20, 1);
-    settings.integrator = Integrator::Normals;
-    expectSameSeedAgreement("normals", settings);
-}
-
-// Specialisation removes only code the scene cannot reach: same seed, same image, every pixel.
-TEST_P(FeatureScenes, SpecialisedKernelsGiveTheGeneralImage) {
+// Every check of a scene runs on one device, so that the scene's pipelines are created once for
+// the path tracer, both direct estimators and the normals (the integrator is a push constant, not
+// a specialisation) and once more for the general kernels.
+TEST_P(FeatureScenes, EveryIntegratorMatchesTheReferenceAndTheGeneralKernels) {
+    {
+        SCOPED_TRACE("path tracer");
+        RenderSettings settings = testSettings(24, 8);
+        settings.seed = 21;
+        settings.lightSamples = 2;
+        expectSameSeedAgreement("path", settings);
+    }
+    {
+        SCOPED_TRACE("direct integrators");
+        RenderSettings settings = testSettings(20, 4);
+        settings.seed = 22;
+        settings.integrator = Integrator::Direct;
+        settings.lightSamples = 3;
+        expectSameSeedAgreement("direct_light", settings);
+        settings.lightSampling = LightSampling::Hemisphere;
+        expectSameSeedAgreement("direct_hemisphere", settings);
+    }
+    {
+        SCOPED_TRACE("normals");
+        RenderSettings settings = testSettings(20, 1);
+        settings.integrator = Integrator::Normals;
+        expectSameSeedAgreement("normals", settings);
+    }
+    // Specialisation removes only code the scene cannot reach: same seed, same image, every
+    // pixel.
+    SCOPED_TRACE("specialised against general kernels");
     LoadedTestScene general = prepareTestScene(scene_.scene, true);
     RenderSettings settings = testSettings(20, 4);
     settings.seed = 23;
