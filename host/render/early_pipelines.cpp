@@ -51,3 +51,18 @@ EarlyPipelines::take(const SceneFeatures& features,
 }
 
 } // namespace vkpt
+
+namespace vkpt {
+
+bool EarlyPipelines::serves(const SceneFeatures& features, bool aovs, KernelBuilds builds) const {
+    return builds == builds_ && sameConstants({aovConstant(aovs)}, constants_) &&
+           sameKernels(features, features_, builds);
+}
+
+void EarlyPipelines::keep(std::vector<Kernel> kernels) {
+    std::promise<std::vector<Kernel>> ready;
+    ready.set_value(std::move(kernels));
+    kernels_ = ready.get_future();
+}
+
+} // namespace vkpt

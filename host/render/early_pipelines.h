@@ -34,6 +34,14 @@ public:
                                             const std::vector<SpecializationConstant>& constants,
                                             KernelBuilds builds);
 
+    // Whether these are the pipelines for `features` and the AOV switch: the next frame of an
+    // animation then renders with them instead of creating its own (docs/distributed.md,
+    // "Animations").
+    bool serves(const SceneFeatures& features, bool aovs, KernelBuilds builds) const;
+    // The kernels a render took, handed back when it ends (WavefrontPipelines), for the next
+    // render to take again.
+    void keep(std::vector<Kernel> kernels);
+
 private:
     SceneFeatures features_;
     std::vector<SpecializationConstant> constants_;

@@ -239,6 +239,7 @@ WavefrontPipelines::WavefrontPipelines(const GpuContext& context, const BufferTa
     std::optional<std::vector<Kernel>> made =
         early ? early->take(features, constants, builds) : std::nullopt;
     createdEarly_ = made.has_value();
+    if (createdEarly_) handBack_ = early;
     kernels_ =
         made ? std::move(*made) : createWavefrontKernels(context, features, constants, builds);
     wallSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -250,6 +251,18 @@ WavefrontPipelines::WavefrontPipelines(const GpuContext& context, const BufferTa
         spirvBytes_.push_back(kernelSpirv(id, features, builds).size_bytes());
         sets_.push_back(bindWavefrontKernel(kernels_[i], id, table));
     }
+}
+
+// The descriptor sets have pools of their own (descriptor_set.h): the kernels outlive them.
+WavefrontPipelines::~WavefrontPipelines() {
+    if (handBack_ != nullptr) handBack_->keep(std::move(kernels_));
+}
+
+WavefrontPipelines::WavefrontPipelines(WavefrontPipelines&& other) noexcept
+    : kernels_(std::move(other.kernels_)), spirvBytes_(std::move(other.spirvBytes_)),
+      wallSeconds_(other.wallSeconds_), createdEarly_(other.createdEarly_),
+      handBack_(other.handBack_), sets_(std::move(other.sets_)) {
+    other.handBack_ = nullptr;
 }
 
 std::vector<PipelineCreation> WavefrontPipelines::creations() const {

@@ -93,12 +93,16 @@ std::vector<Kernel> createWavefrontKernels(const GpuContext& context, const Scen
 class EarlyPipelines;
 
 // Every kernel's pipeline and descriptor set, created together — or taken from `early`, when
-// it made them for the same features and constants.
+// it made them for the same features and constants, and then handed back to it at the end, for
+// the next render (an animation's next frame) to take again.
 class WavefrontPipelines {
 public:
     WavefrontPipelines(const GpuContext& context, const BufferTable& table,
                        const SceneFeatures& features, bool aovs, KernelBuilds builds,
                        EarlyPipelines* early = nullptr);
+    ~WavefrontPipelines();
+    WavefrontPipelines(WavefrontPipelines&& other) noexcept;
+    WavefrontPipelines& operator=(WavefrontPipelines&&) = delete;
 
     const Kernel& kernel(WavefrontKernel id) const { return kernels_[index(id)]; }
     const DescriptorSet& set(WavefrontKernel id) const { return sets_[index(id)]; }
@@ -117,6 +121,7 @@ private:
     std::vector<std::uint64_t> spirvBytes_;
     double wallSeconds_ = 0.0;
     bool createdEarly_ = false;
+    EarlyPipelines* handBack_ = nullptr; // where the kernels came from, when early
     std::vector<DescriptorSet> sets_;
 };
 

@@ -1,7 +1,7 @@
 // early_pipelines_test.cpp — pipelines created while the scene is prepared are taken only when
 // they were made for what the render needs (the kernels' features and build, the AOV switch,
-// no array split into chunks), and a render that takes them gives the image of pipelines
-// created after the upload, bit for bit.
+// no array split into chunks), a render that takes them gives the image of pipelines created
+// after the upload, bit for bit, and hands them back for the next render to take.
 #include "lib/wavefront.h"
 #include "render/early_pipelines.h"
 #include "wavefront_test_support.h"
@@ -26,6 +26,27 @@ TEST_F(EarlyPipelinesTest, ARenderTakesThemAndGivesTheSameImage) {
     EXPECT_FALSE(created.pipelinesCreatedEarly);
     EXPECT_TRUE(taken.pipelinesCreatedEarly);
     EXPECT_EQ(created.output.image.pixels, taken.output.image.pixels);
+}
+
+// An animation's frames: the kernels a render took come back when it ends, and the next render
+// of the same features takes them again and gives the same image.
+TEST_F(EarlyPipelinesTest, ARenderHandsThemBackForTheNext) {
+    const LoadedTestScene box = loadTestScene("cornell-box.gltf");
+    RenderSettings settings = testSettings(16, 4);
+    EarlyPipelines early(context(), box.prepared.features, false, KernelBuilds::ForFeatureSet);
+    EXPECT_TRUE(early.serves(box.prepared.features, false, KernelBuilds::ForFeatureSet));
+    EXPECT_FALSE(early.serves(box.prepared.features, true, KernelBuilds::ForFeatureSet));
+    WavefrontOptions options;
+    options.earlyPipelines = &early;
+    const gpu::Camera camera =
+        makeGpuCamera(selectCamera(box.scene, 0), settings.width, settings.height);
+    const WavefrontResult first =
+        renderWavefront(context(), box.prepared, camera, settings, options);
+    const WavefrontResult second =
+        renderWavefront(context(), box.prepared, camera, settings, options);
+    EXPECT_TRUE(first.pipelinesCreatedEarly);
+    EXPECT_TRUE(second.pipelinesCreatedEarly);
+    EXPECT_EQ(first.output.image.pixels, second.output.image.pixels);
 }
 
 // A refusal leaves them to be taken by the render they were made for.
