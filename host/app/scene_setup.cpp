@@ -78,7 +78,8 @@ void listAnimations(const Scene& scene, const RenderSettings& settings,
 } // namespace
 
 SceneSetup setUpScene(const RenderSettings& settings, const std::string& program,
-                      const std::function<void(const Scene&)>& afterLoad) {
+                      const std::function<void(const Scene&)>& afterLoad,
+                      std::optional<GltfSceneSource>* source) {
     SceneSetup setup;
     auto start = std::chrono::steady_clock::now();
     ScopedPhase loadPhase("load");
@@ -86,7 +87,10 @@ SceneSetup setUpScene(const RenderSettings& settings, const std::string& program
     loadOptions.instancing = settings.instancing;
     loadOptions.time = settings.animationTime;
     loadOptions.animation = settings.animation;
-    Scene scene = loadGltfScene(settings.scenePath, loadOptions);
+    std::optional<GltfSceneSource> once;
+    std::optional<GltfSceneSource>& read = source != nullptr ? *source : once;
+    if (!read) read.emplace(settings.scenePath);
+    Scene scene = read->pose(loadOptions);
     if (settings.verbose) listAnimations(scene, settings, program);
     scene.environment = loadEnvironment(settings);
     lightIfUnlit(scene, settings, program);

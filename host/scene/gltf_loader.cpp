@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -366,22 +367,47 @@ gltf::NodeWorlds nodeWorlds(const tinygltf::Model& model, int sceneIndex, const 
     return worlds;
 }
 
-Scene buildScene(const std::string& path, const LoadOptions& options) {
-    const tinygltf::Model model = gltf::parseGltfFile(path);
+} // namespace
+
+// What every pose of the file shares: the parsed document, its decoded textures and converted
+// materials, and its checked animations.
+struct GltfSceneSource::Parsed {
+    std::string path;
+    tinygltf::Model model;
+    Scene base; // sourcePath, textures, images, materials, animations
+    gltf::Texcoords texcoords = gltf::Texcoords::Skip;
+    int sceneIndex = 0;
+    std::vector<gltf::Animation> animations;
+};
+
+namespace {
+
+std::unique_ptr<GltfSceneSource::Parsed> parse(const std::string& path) {
+    auto parsed = std::make_unique<GltfSceneSource::Parsed>();
+    parsed->path = path;
+    parsed->model = gltf::parseGltfFile(path);
+    const tinygltf::Model& model = parsed->model;
     gltf::checkBufferViews(model);
-    Scene scene;
+    Scene& scene = parsed->base;
     scene.sourcePath = path;
     gltf::TextureTable textures(model, scene.textures, scene.images);
     scene.materials = gltf::convertMaterials(model, textures);
     // TEXCOORD_0 is read only to look textures up.
-    const gltf::Texcoords texcoords =
-        scene.textures.empty() ? gltf::Texcoords::Skip : gltf::Texcoords::Read;
-    const int sceneIndex = gltf::defaultSceneIndex(model);
-    const std::vector<gltf::Animation> animations = gltf::readAnimations(model);
-    scene.animations = summarise(animations);
-    const std::vector<std::size_t> playing = gltf::selectAnimations(animations, options.animation);
+    parsed->texcoords = scene.textures.empty() ? gltf::Texcoords::Skip : gltf::Texcoords::Read;
+    parsed->sceneIndex = gltf::defaultSceneIndex(model);
+    parsed->animations = gltf::readAnimations(model);
+    scene.animations = summarise(parsed->animations);
+    return parsed;
+}
+
+Scene buildScene(const GltfSceneSource::Parsed& parsed, const LoadOptions& options) {
+    const tinygltf::Model& model = parsed.model;
+    const int sceneIndex = parsed.sceneIndex;
+    Scene scene = parsed.base;
+    const std::vector<std::size_t> playing =
+        gltf::selectAnimations(parsed.animations, options.animation);
     std::optional<gltf::ScenePose> pose;
-    if (options.time) pose = gltf::poseAt(model, animations, playing, *options.time);
+    if (options.time) pose = gltf::poseAt(model, parsed.animations, playing, *options.time);
     const gltf::ScenePose* posed = pose ? &*pose : nullptr;
     const gltf::InstancingPlan plan = gltf::planInstancing(model, sceneIndex, options.instancing);
     // First the scene's extent in double, so that a far-away scene is recentred before its
@@ -391,7 +417,7 @@ Scene buildScene(const std::string& path, const LoadOptions& options) {
     scene.worldOrigin = extent ? gltf::chooseWorldOrigin(*extent) : glm::dvec3(0.0);
     const glm::dmat4 root = glm::translate(glm::dmat4(1.0), -scene.worldOrigin);
     const gltf::NodeWorlds worlds = nodeWorlds(model, sceneIndex, root, posed);
-    SceneBuilder builder(model, scene, texcoords, plan, posed, worlds);
+    SceneBuilder builder(model, scene, parsed.texcoords, plan, posed, worlds);
     gltf::walkSceneNodes(
         model, sceneIndex,
         [&](int node, const glm::dmat4& world) { builder.visitNode(node, world); }, root, posed);
@@ -402,18 +428,37 @@ Scene buildScene(const std::string& path, const LoadOptions& options) {
     for (const std::string& note : geometryNotes(scene, extent))
         notes.push_back(note);
     for (const std::string& note : notes)
-        std::cerr << path << ": " << note << '\n';
+        std::cerr << parsed.path << ": " << note << '\n';
     return scene;
 }
 
 } // namespace
 
-Scene loadGltfScene(const std::string& path, const LoadOptions& options) {
+GltfSceneSource::GltfSceneSource(const std::string& path) {
     try {
-        return buildScene(path, options);
+        parsed_ = parse(path);
     } catch (const GltfProblem& problem) {
         throw InputError(path + ": " + problem.what());
     }
+}
+
+GltfSceneSource::~GltfSceneSource() = default;
+GltfSceneSource::GltfSceneSource(GltfSceneSource&&) noexcept = default;
+
+const std::string& GltfSceneSource::path() const {
+    return parsed_->path;
+}
+
+Scene GltfSceneSource::pose(const LoadOptions& options) const {
+    try {
+        return buildScene(*parsed_, options);
+    } catch (const GltfProblem& problem) {
+        throw InputError(parsed_->path + ": " + problem.what());
+    }
+}
+
+Scene loadGltfScene(const std::string& path, const LoadOptions& options) {
+    return GltfSceneSource(path).pose(options);
 }
 
 } // namespace vkpt

@@ -2,6 +2,7 @@
 // will index.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -34,5 +35,26 @@ struct LoadOptions {
 // (orthographic cameras, unsupported extensions in extensionsUsed, KHR_materials_specular textures)
 // it notes on stderr, one line each, and only once the load has succeeded.
 Scene loadGltfScene(const std::string& path, const LoadOptions& options = {});
+
+// A file read once and posed many times: an animation's frames share the parsed document, the
+// decoded textures, the materials and the checked animations, and each pose walks, morphs and
+// skins the nodes anew. loadGltfScene(path, options) is GltfSceneSource(path).pose(options).
+class GltfSceneSource {
+public:
+    // Parses and checks the file, decodes its textures; throws InputError like loadGltfScene.
+    explicit GltfSceneSource(const std::string& path);
+    ~GltfSceneSource();
+    GltfSceneSource(GltfSceneSource&&) noexcept;
+    GltfSceneSource& operator=(GltfSceneSource&&) = delete;
+
+    const std::string& path() const;
+    // The scene as options.time and options.animation pose it (the other options too).
+    Scene pose(const LoadOptions& options) const;
+
+    struct Parsed;
+
+private:
+    std::unique_ptr<Parsed> parsed_;
+};
 
 } // namespace vkpt

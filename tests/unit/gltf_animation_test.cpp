@@ -210,6 +210,26 @@ TEST(GltfMorphLoading, AWeightsChannelReplacesTheStoredWeights) {
     expectTriangle(scene, 1, {{2, 0, 1}, {3, 0, 0}, {2, 1, 0}}); // not animated
 }
 
+// --- One file read once, posed many times ---------------------------------------------------
+
+TEST(GltfSceneSourcePoses, EachPoseEqualsALoadAtItsTime) {
+    // As an animation's frames use it: the same triangles and cameras as separate loads, in
+    // either order (a pose leaves the source as it was).
+    const GltfSceneSource source(kSkinScene);
+    for (const double time : {1.5, 0.0, 0.25}) {
+        SCOPED_TRACE("time " + std::to_string(time));
+        LoadOptions options;
+        options.time = time;
+        const Scene posed = source.pose(options);
+        const Scene loaded = loadAt(kSkinScene, time);
+        EXPECT_EQ(posed.positions, loaded.positions);
+        EXPECT_EQ(posed.normals, loaded.normals);
+        ASSERT_EQ(posed.cameras.size(), 1u);
+        EXPECT_EQ(posed.cameras[0].position, loaded.cameras[0].position);
+        EXPECT_EQ(posed.materials.size(), loaded.materials.size());
+    }
+}
+
 // --- The Khronos sample assets -----------------------------------------------------------------
 
 bool sharedScenesPresent() {
