@@ -684,18 +684,33 @@ def add_animation(gltf, name, channels):
     return gltf.add("animations", animation)
 
 
+def add_normal_map(gltf, prim, tangents):
+    """A material with a normal texture (the 3 x 2 PNG) on `prim`, which gets TANGENT and
+    TEXCOORD_0, so that the loader keeps the frames it moves."""
+    gltf.doc["images"] = [{"uri": data_uri(TEXTURE_PNG, "image/png")}]
+    gltf.doc["textures"] = [{"source": 0}]
+    gltf.doc["materials"] = [{"name": "bumpy", "normalTexture": {"index": 0},
+                              "pbrMetallicRoughness": {"metallicFactor": 0}}]
+    prim["material"] = 0
+    prim["attributes"]["TEXCOORD_0"] = gltf.texcoords([(0, 0)] * len(tangents))
+    prim["attributes"]["TANGENT"] = gltf.accessor(
+        gltf.view(floats(tangents), target=ARRAY_BUFFER), FLOAT, len(tangents), "VEC4")
+
+
 def skin():
     # Joint 0 (node 1) lifts everything by z = 1; joint 1 (node 2, its child at y = 1) turns the
     # quad's top 90 degrees about Z. Vertex 1's single weight of 0.5 is renormalised to 1 (with a
     # note); vertex 3 hangs half on each joint. The skinned node's own translation (5, 0, 0)
     # must be ignored. "bend" turns joint 1 from 0 to 180 degrees over a second (slerp);
-    # "lift" steps joint 0 from z = 1 to z = 3 at t = 1; a camera rides on joint 0.
+    # "lift" steps joint 0 from z = 1 to z = 3 at t = 1; a camera rides on joint 0. Every
+    # TANGENT is (1, 0, 0, 1), under a normal-mapped material, so that skinning turns them too.
     gltf = Gltf()
     gltf.doc["cameras"] = [{"type": "perspective", "perspective": {"yfov": 0.7, "znear": 0.1}}]
     prim = primitive(gltf.positions(SKIN_POSITIONS), gltf.normals([(0, 0, 1)] * 4),
                      gltf.indices(SKIN_INDICES))
     add_skin_attributes(gltf, prim, [(0, 0, 0, 0), (0, 0, 0, 0), (1, 0, 0, 0), (0, 1, 0, 0)],
                         [(1, 0, 0, 0), (0.5, 0, 0, 0), (1, 0, 0, 0), (0.5, 0.5, 0, 0)])
+    add_normal_map(gltf, prim, [(1, 0, 0, 1)] * 4)
     mesh = gltf.mesh([prim])
     inverse_bind = floats(IDENTITY_MATRIX + [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -1, 0, 1])
     matrices = gltf.accessor(gltf.view(inverse_bind), FLOAT, 2, "MAT4")
@@ -715,16 +730,20 @@ def morph():
     # One triangle with two morph targets placed three times: by the mesh's weights (0.5, 0.25),
     # by node weights (1, 0) at x = 2 and by node weights (0, 0) at x = 4. Target 0 lifts
     # vertex 0 by z = 1 and tilts its normal by (1, 0, -1); target 1 lifts vertex 1 by z = 2.
-    # "pulse" moves the first node's weights from (0, 0) to (1, 1) over a second.
+    # "pulse" moves the first node's weights from (0, 0) to (1, 1) over a second. TANGENT is
+    # (1, 0, 0, -1) under a normal-mapped material; target 0 adds (0, 1, 0) to vertex 0's.
     gltf = Gltf()
     prim = primitive(gltf.positions(TRIANGLE_POSITIONS), gltf.normals([(0, 0, 1)] * 3))
+    add_normal_map(gltf, prim, [(1, 0, 0, -1)] * 3)
+    turn_0 = gltf.normals([(0, 1, 0), (0, 0, 0), (0, 0, 0)])
     lift_0 = gltf.normals([(0, 0, 1), (0, 0, 0), (0, 0, 0)])
     tilt_0 = gltf.normals([(1, 0, -1), (0, 0, 0), (0, 0, 0)])
     # Target 1 is sparse without a buffer view, as exporters store morph targets: zeros but
     # for its element 1.
     lift_1 = gltf.accessor(None, FLOAT, 3, "VEC3")
     make_sparse(gltf, lift_1, [1], [(0, 0, 2)])
-    prim["targets"] = [{"POSITION": lift_0, "NORMAL": tilt_0}, {"POSITION": lift_1}]
+    prim["targets"] = [{"POSITION": lift_0, "NORMAL": tilt_0, "TANGENT": turn_0},
+                       {"POSITION": lift_1}]
     mesh = gltf.mesh([prim])
     gltf.doc["meshes"][mesh]["weights"] = [0.5, 0.25]
     by_mesh = gltf.node(name="mesh_weights", mesh=mesh)

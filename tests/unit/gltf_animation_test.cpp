@@ -133,6 +133,17 @@ TEST(GltfSkinLoading, RestPoseBendsTheTopAndIgnoresTheSkinnedNodesTransform) {
     expectTriangle(scene, 1, {{0, 0, 1}, {0, 2, 1}, {-1, 1, 1}});
     for (const glm::vec3& normal : scene.normals)
         expectNear(normal, {0, 0, 1}); // turning about Z keeps the quad's normal
+    // Tangents (1, 0, 0) turn with their joints: v2's by R90 to (0, 1, 0); v3's by the blend
+    // (I + R90) / 2 to (1, 1, 0) / 2, unit (√½, √½, 0). Corners: v0 v1 v3, v0 v3 v2.
+    const auto h = static_cast<float>(kSqrtHalf);
+    ASSERT_EQ(scene.tangents.size(), 6u);
+    const glm::vec3 expectedTangents[6] = {{1, 0, 0}, {1, 0, 0}, {h, h, 0},
+                                           {1, 0, 0}, {h, h, 0}, {0, 1, 0}};
+    for (std::size_t i = 0; i < 6; ++i) {
+        SCOPED_TRACE("corner " + std::to_string(i));
+        expectNear(glm::vec3(scene.tangents[i]), expectedTangents[i]);
+        EXPECT_EQ(scene.tangents[i].w, 1.0f);
+    }
     // v1's single weight of 0.5 counts as 1, and says so.
     EXPECT_EQ(scene.repairs.renormalisedSkinWeights, 1u);
     EXPECT_NE(notes.find("1 skinned vertex has weights that do not sum to one; they are "
@@ -186,8 +197,9 @@ TEST(GltfSkinLoading, RejectsAnAnimationThatDoesNotExist) {
 }
 
 // --- morph.gltf: weighted displacements by hand ---------------------------------------------
-// Target 0 lifts v0 by z = 1 and adds (1, 0, −1) to its normal (0, 0, 1); target 1 lifts v1 by
-// z = 2. Nodes: the mesh's weights (0.5, 0.25); node weights (1, 0) at x = 2; (0, 0) at x = 4.
+// Target 0 lifts v0 by z = 1, adds (1, 0, −1) to its normal (0, 0, 1) and (0, 1, 0) to its
+// tangent (1, 0, 0); target 1 (sparse) lifts v1 by z = 2. Nodes: the mesh's weights (0.5, 0.25);
+// node weights (1, 0) at x = 2; (0, 0) at x = 4.
 
 TEST(GltfMorphLoading, MeshWeightsApplyInAStillAndNodeWeightsOverrideThem) {
     const Scene scene = loadGltfScene(kMorphScene);
@@ -201,6 +213,14 @@ TEST(GltfMorphLoading, MeshWeightsApplyInAStillAndNodeWeightsOverrideThem) {
     expectNear(scene.normals[0], {h, 0, h});
     expectNear(scene.normals[3], {1, 0, 0});
     expectNear(scene.normals[6], {0, 0, 1});
+    // v0's tangent (1, 0, 0) plus w0 (0, 1, 0): (1, 0.5, 0) / √1.25, then (1, 1, 0) / √2, then as
+    // stored; the bitangent sign −1 kept.
+    ASSERT_EQ(scene.tangents.size(), 9u);
+    const float a = 1.0f / std::sqrt(1.25f);
+    expectNear(glm::vec3(scene.tangents[0]), {a, 0.5f * a, 0});
+    expectNear(glm::vec3(scene.tangents[3]), {h, h, 0});
+    expectNear(glm::vec3(scene.tangents[6]), {1, 0, 0});
+    EXPECT_EQ(scene.tangents[0].w, -1.0f);
 }
 
 TEST(GltfMorphLoading, AWeightsChannelReplacesTheStoredWeights) {
