@@ -631,6 +631,129 @@ def glass():
     return gltf
 
 
+def make_sparse(gltf, accessor, indices, values):
+    """Makes `accessor` sparse: its elements `indices` replaced by `values`."""
+    gltf.doc["accessors"][accessor]["sparse"] = {
+        "count": len(indices),
+        "indices": {"bufferView": gltf.view(unsigned(indices, UNSIGNED_SHORT)),
+                    "componentType": UNSIGNED_SHORT},
+        "values": {"bufferView": gltf.view(floats(values))}}
+
+
+def sparse():
+    # The unit triangle's POSITION with vertex 1 replaced by (2, 0, 0) through a sparse
+    # substitution on top of its buffer view.
+    gltf = Gltf()
+    position = gltf.positions(TRIANGLE_POSITIONS)
+    make_sparse(gltf, position, [1], [(2, 0, 0)])
+    gltf.scene([gltf.node(mesh=gltf.mesh([primitive(position)]))])
+    return gltf
+
+
+# Skins, morph targets and animations: small enough that every posed vertex is computed by hand
+# in tests/unit/gltf_animation_test.cpp.
+
+IDENTITY_MATRIX = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]
+# A quad 1 wide and 2 high whose upper corners hang on a second joint at y = 1.
+SKIN_POSITIONS = [(0, 0, 0), (1, 0, 0), (0, 2, 0), (1, 2, 0)]
+SKIN_INDICES = [0, 1, 3, 0, 3, 2]
+
+
+def add_skin_attributes(gltf, prim, joints, weights):
+    data = bytes(c for j in joints for c in j)
+    prim["attributes"]["JOINTS_0"] = gltf.accessor(gltf.view(data, target=ARRAY_BUFFER),
+                                                   UNSIGNED_BYTE, len(joints), "VEC4")
+    prim["attributes"]["WEIGHTS_0"] = gltf.accessor(
+        gltf.view(floats(weights), target=ARRAY_BUFFER), FLOAT, len(weights), "VEC4")
+
+
+def add_animation(gltf, name, channels):
+    """channels: (node, path, interpolation, times, flat output values)."""
+    samplers, targets = [], []
+    for node, path, interpolation, times, values in channels:
+        width = {"translation": 3, "scale": 3, "rotation": 4}.get(path, 1)
+        type_ = {1: "SCALAR", 3: "VEC3", 4: "VEC4"}[width]
+        input_ = gltf.accessor(gltf.view(floats(times)), FLOAT, len(times), "SCALAR",
+                               min=[min(times)], max=[max(times)])
+        output = gltf.accessor(gltf.view(floats(values)), FLOAT, len(values) // width, type_)
+        targets.append({"sampler": len(samplers), "target": {"node": node, "path": path}})
+        samplers.append({"input": input_, "output": output, "interpolation": interpolation})
+    animation = {"channels": targets, "samplers": samplers}
+    if name:
+        animation["name"] = name
+    return gltf.add("animations", animation)
+
+
+def add_normal_map(gltf, prim, tangents):
+    """A material with a normal texture (the 3 x 2 PNG) on `prim`, which gets TANGENT and
+    TEXCOORD_0, so that the loader keeps the frames it moves."""
+    gltf.doc["images"] = [{"uri": data_uri(TEXTURE_PNG, "image/png")}]
+    gltf.doc["textures"] = [{"source": 0}]
+    gltf.doc["materials"] = [{"name": "bumpy", "normalTexture": {"index": 0},
+                              "pbrMetallicRoughness": {"metallicFactor": 0}}]
+    prim["material"] = 0
+    prim["attributes"]["TEXCOORD_0"] = gltf.texcoords([(0, 0)] * len(tangents))
+    prim["attributes"]["TANGENT"] = gltf.accessor(
+        gltf.view(floats(tangents), target=ARRAY_BUFFER), FLOAT, len(tangents), "VEC4")
+
+
+def skin():
+    # Joint 0 (node 1) lifts everything by z = 1; joint 1 (node 2, its child at y = 1) turns the
+    # quad's top 90 degrees about Z. Vertex 1's single weight of 0.5 is renormalised to 1 (with a
+    # note); vertex 3 hangs half on each joint. The skinned node's own translation (5, 0, 0)
+    # must be ignored. "bend" turns joint 1 from 0 to 180 degrees over a second (slerp);
+    # "lift" steps joint 0 from z = 1 to z = 3 at t = 1; a camera rides on joint 0. Every
+    # TANGENT is (1, 0, 0, 1), under a normal-mapped material, so that skinning turns them too.
+    gltf = Gltf()
+    gltf.doc["cameras"] = [{"type": "perspective", "perspective": {"yfov": 0.7, "znear": 0.1}}]
+    prim = primitive(gltf.positions(SKIN_POSITIONS), gltf.normals([(0, 0, 1)] * 4),
+                     gltf.indices(SKIN_INDICES))
+    add_skin_attributes(gltf, prim, [(0, 0, 0, 0), (0, 0, 0, 0), (1, 0, 0, 0), (0, 1, 0, 0)],
+                        [(1, 0, 0, 0), (0.5, 0, 0, 0), (1, 0, 0, 0), (0.5, 0.5, 0, 0)])
+    add_normal_map(gltf, prim, [(1, 0, 0, 1)] * 4)
+    mesh = gltf.mesh([prim])
+    inverse_bind = floats(IDENTITY_MATRIX + [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -1, 0, 1])
+    matrices = gltf.accessor(gltf.view(inverse_bind), FLOAT, 2, "MAT4")
+    skinned = gltf.node(name="skinned", mesh=mesh, skin=0, translation=[5, 0, 0])
+    bent = gltf.node(name="bent_joint", translation=[0, 1, 0], rotation=[0, 0, S45, S45])
+    camera = gltf.node(name="rider", camera=0, translation=[0, 0, 5])
+    root = gltf.node(name="root_joint", translation=[0, 0, 1], children=[bent, camera])
+    gltf.doc["skins"] = [{"joints": [root, bent], "inverseBindMatrices": matrices,
+                          "skeleton": root}]
+    add_animation(gltf, "bend", [(bent, "rotation", "LINEAR", [0, 1], [0, 0, 0, 1, 0, 0, 1, 0])])
+    add_animation(gltf, "lift", [(root, "translation", "STEP", [0, 1], [0, 0, 1, 0, 0, 3])])
+    gltf.scene([skinned, root])
+    return gltf
+
+
+def morph():
+    # One triangle with two morph targets placed three times: by the mesh's weights (0.5, 0.25),
+    # by node weights (1, 0) at x = 2 and by node weights (0, 0) at x = 4. Target 0 lifts
+    # vertex 0 by z = 1 and tilts its normal by (1, 0, -1); target 1 lifts vertex 1 by z = 2.
+    # "pulse" moves the first node's weights from (0, 0) to (1, 1) over a second. TANGENT is
+    # (1, 0, 0, -1) under a normal-mapped material; target 0 adds (0, 1, 0) to vertex 0's.
+    gltf = Gltf()
+    prim = primitive(gltf.positions(TRIANGLE_POSITIONS), gltf.normals([(0, 0, 1)] * 3))
+    add_normal_map(gltf, prim, [(1, 0, 0, -1)] * 3)
+    turn_0 = gltf.normals([(0, 1, 0), (0, 0, 0), (0, 0, 0)])
+    lift_0 = gltf.normals([(0, 0, 1), (0, 0, 0), (0, 0, 0)])
+    tilt_0 = gltf.normals([(1, 0, -1), (0, 0, 0), (0, 0, 0)])
+    # Target 1 is sparse without a buffer view, as exporters store morph targets: zeros but
+    # for its element 1.
+    lift_1 = gltf.accessor(None, FLOAT, 3, "VEC3")
+    make_sparse(gltf, lift_1, [1], [(0, 0, 2)])
+    prim["targets"] = [{"POSITION": lift_0, "NORMAL": tilt_0, "TANGENT": turn_0},
+                       {"POSITION": lift_1}]
+    mesh = gltf.mesh([prim])
+    gltf.doc["meshes"][mesh]["weights"] = [0.5, 0.25]
+    by_mesh = gltf.node(name="mesh_weights", mesh=mesh)
+    by_node = gltf.node(name="node_weights", mesh=mesh, weights=[1, 0], translation=[2, 0, 0])
+    at_rest = gltf.node(name="zero_weights", mesh=mesh, weights=[0, 0], translation=[4, 0, 0])
+    add_animation(gltf, "pulse", [(by_mesh, "weights", "LINEAR", [0, 1], [0, 0, 1, 1])])
+    gltf.scene([by_mesh, by_node, at_rest])
+    return gltf
+
+
 VALID_SCENES = [
     # (file, builder, writer, what it exercises)
     ("indices_u8.gltf", lambda: quad(UNSIGNED_BYTE), write_embedded,
@@ -671,6 +794,12 @@ VALID_SCENES = [
     ("specular.gltf", specular, write_embedded, "KHR_materials_specular factors and a texture"),
     ("glass.gltf", glass, write_embedded,
      "KHR_materials_transmission, KHR_materials_ior and KHR_materials_volume"),
+    ("skin.gltf", skin, write_embedded,
+     "a quad skinned to two joints, one bent 90 degrees; two animations and a camera on a joint"),
+    ("morph.gltf", morph, write_embedded,
+     "a triangle with two morph targets (one sparse) under mesh weights, node weights and a "
+     "weights animation"),
+    ("sparse.gltf", sparse, write_embedded, "a triangle whose sparse POSITION moves vertex 1"),
     ("instancing.gltf", instancing, write_embedded,
      "a triangle mesh placed by two nodes, a mirrored node and three EXT_mesh_gpu_instancing "
      "instances; an emissive quad mesh placed twice"),
@@ -819,13 +948,9 @@ def no_position():
     return embedded_text(gltf)
 
 
-def sparse_accessor():
+def sparse_index_out_of_range():
     gltf = triangle(normal=None, indices=None)
-    sparse_indices = gltf.view(unsigned([1], UNSIGNED_SHORT))
-    sparse_values = gltf.view(floats([(2, 0, 0)]))
-    gltf.doc["accessors"][0]["sparse"] = {
-        "count": 1, "indices": {"bufferView": sparse_indices, "componentType": UNSIGNED_SHORT},
-        "values": {"bufferView": sparse_values}}
+    make_sparse(gltf, 0, [5], [(2, 0, 0)])
     return embedded_text(gltf)
 
 
@@ -1018,6 +1143,50 @@ def instancing_rotation_unsigned():
     return embedded_text(gltf)
 
 
+def skinned_triangle(joints=((0, 0, 0, 0),) * 3, weights=((1, 0, 0, 0),) * 3, joint_nodes=(1, 2),
+                     matrices=2, attributes=True):
+    """triangle() skinned by skin 0, whose joints are the empty nodes 1 and 2 (unless told)."""
+    gltf = triangle()
+    if attributes:
+        add_skin_attributes(gltf, gltf.doc["meshes"][0]["primitives"][0], joints, weights)
+    gltf.doc["nodes"][0]["skin"] = 0
+    gltf.doc["nodes"] += [{"name": "joint_a"}, {"name": "joint_b"}]
+    gltf.doc["scenes"][0]["nodes"] = [0, 1, 2]
+    inverse_bind = gltf.accessor(gltf.view(floats(IDENTITY_MATRIX * matrices)), FLOAT, matrices,
+                                 "MAT4")
+    gltf.doc["skins"] = [{"joints": list(joint_nodes), "inverseBindMatrices": inverse_bind}]
+    return gltf
+
+
+def skin_missing():
+    gltf = skinned_triangle()
+    gltf.doc["nodes"][0]["skin"] = 4
+    return embedded_text(gltf)
+
+
+def morph_weight_count():
+    gltf = triangle()
+    lift = gltf.normals([(0, 0, 1)] * 3)
+    gltf.doc["meshes"][0]["primitives"][0]["targets"] = [{"POSITION": lift}, {"POSITION": lift}]
+    gltf.doc["meshes"][0]["weights"] = [0.5, 0.5, 0.5]
+    return embedded_text(gltf)
+
+
+def animated_triangle(path="translation", interpolation="LINEAR", times=(0, 1),
+                      values=(0, 0, 0, 1, 0, 0), node=0):
+    """triangle() with one animation of one channel, and a second, empty node."""
+    gltf = triangle()
+    gltf.doc["nodes"].append({"name": "empty"})
+    add_animation(gltf, None, [(node, path, interpolation, list(times), list(values))])
+    return gltf
+
+
+def animation_matrix_node():
+    gltf = animated_triangle()
+    gltf.doc["nodes"][0]["matrix"] = IDENTITY_MATRIX
+    return embedded_text(gltf)
+
+
 def write_invalid_scenes():
     good_glb = glb_of(triangle())
     files = [
@@ -1042,7 +1211,8 @@ def write_invalid_scenes():
         ("position_not_float.gltf", position_not_float(), "UNSIGNED_SHORT positions"),
         ("indices_not_integer.gltf", indices_not_integer(), "FLOAT indices"),
         ("no_position.gltf", no_position(), "a primitive without POSITION"),
-        ("sparse_accessor.gltf", sparse_accessor(), "a sparse POSITION accessor"),
+        ("sparse_index_out_of_range.gltf", sparse_index_out_of_range(),
+         "a sparse POSITION accessor that replaces element 5 of 3"),
         ("no_triangles.gltf", no_triangles(), "a scene whose only node has no mesh"),
         ("required_extension.gltf", required_extension(),
          "requires two extensions vkpt does not implement"),
@@ -1056,6 +1226,35 @@ def write_invalid_scenes():
         ("instancing_rotation_unsigned.gltf", instancing_rotation_unsigned(),
          "EXT_mesh_gpu_instancing ROTATION of normalized UNSIGNED_BYTE"),
         ("missing_node.gltf", missing_node(), "the scene lists node 7 of 2"),
+        ("skin_joint_out_of_range.gltf",
+         embedded_text(skinned_triangle(joints=((0, 0, 0, 0), (3, 0, 0, 0), (0, 0, 0, 0)))),
+         "a vertex weighted on joint 3 of a 2-joint skin"),
+        ("skin_joint_not_a_node.gltf", embedded_text(skinned_triangle(joint_nodes=(1, 9))),
+         "a skin whose second joint is node 9 of 3"),
+        ("skin_bind_matrix_count.gltf",
+         embedded_text(skinned_triangle(joint_nodes=(1, 2, 0), matrices=2)),
+         "2 inverse bind matrices for 3 joints"),
+        ("skin_without_joints.gltf", embedded_text(skinned_triangle(attributes=False)),
+         "a skinned node whose primitive has no JOINTS_0 and WEIGHTS_0"),
+        ("skin_zero_weights.gltf", embedded_text(skinned_triangle(
+            weights=((1, 0, 0, 0), (1, 0, 0, 0), (0, 0, 0, 0)))),
+         "a skinned vertex whose weights are all zero"),
+        ("skin_missing.gltf", skin_missing(), "a node with skin 4 of 1"),
+        ("morph_weight_count.gltf", morph_weight_count(), "3 mesh weights for 2 morph targets"),
+        ("animation_times_decrease.gltf",
+         embedded_text(animated_triangle(times=(0, 1, 0.5), values=(0,) * 9)),
+         "an animation sampler whose input times go back"),
+        ("animation_output_count.gltf", embedded_text(animated_triangle(values=(0,) * 9)),
+         "3 translations for 2 keyframes"),
+        ("animation_interpolation.gltf", embedded_text(animated_triangle(interpolation="SMOOTH")),
+         "a sampler with interpolation SMOOTH"),
+        ("animation_matrix_node.gltf", animation_matrix_node(),
+         "a translation channel on a node with a matrix"),
+        ("animation_missing_node.gltf", embedded_text(animated_triangle(node=5)),
+         "a channel targeting node 5 of 2"),
+        ("animation_weights_without_targets.gltf",
+         embedded_text(animated_triangle(path="weights", values=(0, 1))),
+         "a weights channel on a mesh without morph targets"),
         ("missing_material.gltf", missing_material(), "material 3 of 2"),
         ("partial_triangle.gltf", partial_triangle(), "4 indices"),
         ("normal_count_mismatch.gltf", normal_count_mismatch(), "2 normals for 3 positions"),

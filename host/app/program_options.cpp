@@ -16,6 +16,7 @@ void parseProgramOptions(const ProgramCommandLine& program, ProgramOptions& opti
     addRenderOptions(commandLine, options.settings);
     addConvergenceOptions(commandLine, options.convergence);
     addFarmOptions(commandLine, options.farm);
+    addFrameOptions(commandLine, options.frames);
     if (program.addOwnOptions) program.addOwnOptions(commandLine);
     commandLine.add({"help", {'h'}, "", "show this help", [&](auto) { options.showHelp = true; }});
     std::vector<std::string> arguments(argv + 1, argv + argc);
@@ -29,6 +30,7 @@ void parseProgramOptions(const ProgramCommandLine& program, ProgramOptions& opti
     if (!positional.empty()) options.settings.scenePath = positional[0];
     validateRenderSettings(options.settings);
     validateFarmSettings(options.farm, options.settings);
+    validateFrameSettings(options.frames, options.settings);
 }
 
 } // namespace vkpt

@@ -8,6 +8,7 @@
 #include "app/command_line.h"
 #include "app/convergence_options.h"
 #include "app/farm_options.h"
+#include "app/frame_options.h"
 #include "common/render_settings.h"
 
 namespace vkpt {
@@ -16,6 +17,7 @@ struct ProgramOptions {
     RenderSettings settings;
     ConvergenceSettings convergence;
     FarmSettings farm;
+    FrameSettings frames;
     bool showHelp = false;
 };
 

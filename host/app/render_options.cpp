@@ -1,6 +1,8 @@
 // render_options.cpp — option table: long names and CS184's short forms.
 #include "app/render_options.h"
 
+#include <cmath>
+
 #include "common/errors.h"
 #include "shared/rng.h"
 
@@ -167,9 +169,25 @@ void addSceneOptions(CommandLine& cl, RenderSettings& s) {
             "meshes placed many times kept once under a top-level BVH: auto (default: large "
             "scenes), on (every mesh), off (all flattened)",
             [&s](auto v) { s.instancing = parseInstancing(v[0]); }});
-    cl.add({"verbose", {'v'}, "", "print the scene's feature set and setup details", [&s](auto) {
-                s.verbose = true;
+    cl.add({"time",
+            {},
+            "T",
+            "pose the scene by its animations at T seconds (default: at rest, as stored)",
+            [&s](auto v) {
+                const float time = parseFloat("time", v[0]);
+                if (!std::isfinite(time)) throw InputError("option --time: T must be finite");
+                s.animationTime = double(time);
             }});
+    cl.add({"animation",
+            {},
+            "N|NAME",
+            "with --time: play only this animation, by index or name (default: all together)",
+            [&s](auto v) { s.animation = v[0]; }});
+    cl.add({"verbose",
+            {'v'},
+            "",
+            "print the scene's feature set, animations and setup details",
+            [&s](auto) { s.verbose = true; }});
 }
 
 void addRunOptions(CommandLine& cl, RenderSettings& s) {

@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <optional>
 
 #include "app/convergence_options.h"
@@ -58,10 +59,11 @@ std::optional<ConvergenceReport> convergenceReport(const ConvergenceSettings& co
     return ConvergenceReport{convergence, stop, tracker.targetReached(), tracker.curve()};
 }
 
-} // namespace
-
-int runRenderProgram(const std::string& program, const ProgramOptions& invocation,
-                     ProgramExecutor& executor) {
+// One image: the whole program without frames, one frame of a sequence with them (the executor
+// then started once, before the first).
+int renderImage(const std::string& program, const ProgramOptions& invocation,
+                ProgramExecutor& executor, bool startExecutor,
+                std::optional<GltfSceneSource>* source = nullptr) {
     const RenderSettings& settings = invocation.settings;
     // Every output path and a resumed state first: a typo costs a second, not the render.
     checkOutputPaths(settings);
@@ -71,9 +73,9 @@ int runRenderProgram(const std::string& program, const ProgramOptions& invocatio
     installStopHandlers();
     // The --reference image next: like the outputs, a wrong file costs a second.
     const std::optional<Image> reference = loadReferenceFor(invocation.convergence, settings);
-    executor.start();
-    SceneSetup setup = setUpScene(settings, program,
-                                  [&](const Scene& scene) { executor.sceneLoaded(scene, part); });
+    if (startExecutor) executor.start();
+    SceneSetup setup = setUpScene(
+        settings, program, [&](const Scene& scene) { executor.sceneLoaded(scene, part); }, source);
     part.attachScene(setup);
     RenderReport report = sceneReport(program, settings, setup);
     ConvergenceTracker tracker(reference ? &*reference : nullptr,
@@ -92,6 +94,53 @@ int runRenderProgram(const std::string& program, const ProgramOptions& invocatio
     writeRenderReport(report);
     executor.afterReport(result);
     return result.interrupted ? exitCodeForStop() : 0;
+}
+
+// The frames in order, each posed at frame / fps, with the executor's device (and pipelines)
+// kept from one to the next, and the file read once (docs/distributed.md, "Animations"). Run
+// again with the same command, a sequence stopped part way (killed, preempted) continues where
+// it stopped: a frame whose image exists is skipped (images are written atomically, so one that
+// exists is whole), and a frame that left its state (a stopped frame does; .exr outputs are
+// their state, and --checkpoint leaves one) resumes from it, the state beside an image removed
+// once the frame is whole. Each frame's statistics JSON holds its own phases.
+int renderFrames(const std::string& program, const ProgramOptions& invocation,
+                 ProgramExecutor& executor) {
+    bool started = false;
+    std::optional<GltfSceneSource> source; // the file, read by the first frame rendered
+    for (const std::uint32_t frame : framesToRender(invocation.frames)) {
+        ProgramOptions each = invocation;
+        each.settings = frameSettings(invocation.settings, invocation.frames, frame);
+        const std::string state = statePathFor(each.settings.outputPath);
+        const bool leftState = std::filesystem::exists(state) && invocation.farm.resumePath.empty();
+        if (std::filesystem::exists(each.settings.outputPath) && !leftState) {
+            std::fprintf(stderr, "%s: frame %u: %s exists; skipped\n", program.c_str(), frame,
+                         each.settings.outputPath.c_str());
+            continue;
+        }
+        if (leftState) each.farm.resumePath = state;
+        if (started) processPhases().clear();
+        std::fprintf(stderr, "%s: frame %u at %.6g s -> %s\n", program.c_str(), frame,
+                     *each.settings.animationTime, each.settings.outputPath.c_str());
+        const int code = renderImage(program, each, executor, !started, &source);
+        started = true;
+        if (code != 0) return code;
+        // The frame is whole now: the state it resumed from would only make the next run
+        // render it again (unless the state is the output itself, or checkpoints keep one).
+        if (leftState && !stopRequested() && state != each.settings.outputPath &&
+            invocation.farm.checkpointSeconds == 0.0)
+            std::filesystem::remove(state);
+        // A stop that came as a frame ended: that frame is whole, the rest wait for the next run.
+        if (stopRequested()) return exitCodeForStop();
+    }
+    return 0;
+}
+
+} // namespace
+
+int runRenderProgram(const std::string& program, const ProgramOptions& invocation,
+                     ProgramExecutor& executor) {
+    if (invocation.frames.any()) return renderFrames(program, invocation, executor);
+    return renderImage(program, invocation, executor, true);
 }
 
 } // namespace vkpt

@@ -43,6 +43,8 @@ void writeSettings(JsonWriter& json, const RenderSettings& s) {
     json.field("instancing", s.instancing == Instancing::Auto ? "auto"
                              : s.instancing == Instancing::On ? "on"
                                                               : "off");
+    if (s.animationTime) json.field("time", *s.animationTime);
+    json.field("animation", s.animation); // "" all of them
     json.endObject();
 }
 

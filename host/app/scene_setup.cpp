@@ -55,16 +55,43 @@ std::string instancingNote(const Scene& scene) {
            (scene.instances.size() == 1 ? " instance)" : " instances)");
 }
 
+// One line per animation of the file, with its time range, and which of them pose the scene.
+void listAnimations(const Scene& scene, const RenderSettings& settings,
+                    const std::string& program) {
+    for (std::size_t a = 0; a < scene.animations.size(); ++a) {
+        const SceneAnimation& animation = scene.animations[a];
+        std::fprintf(stderr,
+                     "%s: animation %zu '%s': %zu channels, %.3f s (from %.3f s to %.3f s)\n",
+                     program.c_str(), a, animation.name.c_str(), animation.channels,
+                     animation.end - animation.start, animation.start, animation.end);
+    }
+    if (scene.animations.empty()) return;
+    if (!settings.animationTime) {
+        std::fprintf(stderr, "%s: the scene is at rest (--time T poses it)\n", program.c_str());
+        return;
+    }
+    std::fprintf(stderr, "%s: posed at %.3f s by %s\n", program.c_str(), *settings.animationTime,
+                 settings.animation.empty() ? "every animation"
+                                            : ("animation " + settings.animation).c_str());
+}
+
 } // namespace
 
 SceneSetup setUpScene(const RenderSettings& settings, const std::string& program,
-                      const std::function<void(const Scene&)>& afterLoad) {
+                      const std::function<void(const Scene&)>& afterLoad,
+                      std::optional<GltfSceneSource>* source) {
     SceneSetup setup;
     auto start = std::chrono::steady_clock::now();
     ScopedPhase loadPhase("load");
     LoadOptions loadOptions;
     loadOptions.instancing = settings.instancing;
-    Scene scene = loadGltfScene(settings.scenePath, loadOptions);
+    loadOptions.time = settings.animationTime;
+    loadOptions.animation = settings.animation;
+    std::optional<GltfSceneSource> once;
+    std::optional<GltfSceneSource>& read = source != nullptr ? *source : once;
+    if (!read) read.emplace(settings.scenePath);
+    Scene scene = read->pose(loadOptions);
+    if (settings.verbose) listAnimations(scene, settings, program);
     scene.environment = loadEnvironment(settings);
     lightIfUnlit(scene, settings, program);
     loadPhase.end();

@@ -3,10 +3,12 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "common/render_settings.h"
 #include "prepare/prepared_scene.h"
+#include "scene/gltf_loader.h"
 #include "scene/scene.h"
 
 namespace vkpt {
@@ -21,9 +23,11 @@ struct SceneSetup {
 };
 
 // `afterLoad`, when given, sees the loaded scene before it is prepared (vkpt starts creating its
-// pipelines there, while the BVH builds).
+// pipelines there, while the BVH builds). With `source`, the file is read into it the first
+// time and posed from it every time (an animation's frames read their file once).
 SceneSetup setUpScene(const RenderSettings& settings, const std::string& program,
-                      const std::function<void(const Scene&)>& afterLoad = {});
+                      const std::function<void(const Scene&)>& afterLoad = {},
+                      std::optional<GltfSceneSource>* source = nullptr);
 
 // main()'s one catch: one line on stderr and the exit code of DESIGN's error contract
 // (1 bad input, 2 Vulkan or device failure, 3 internal error).

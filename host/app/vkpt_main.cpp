@@ -106,12 +106,13 @@ public:
     }
 
     // The pipelines need the scene's features alone: the driver compiles them while the BVH
-    // builds and the scene uploads.
+    // builds and the scene uploads. An animation's next frame of the same features takes the
+    // pipelines the last one made from the device's memo (gpu/kernel_memo.h), at once.
     void sceneLoaded(const Scene& scene, const RenderPart& part) override {
         const SceneFeatures used = analyseScene(scene);
-        earlyPipelines_.emplace(*context_,
-                                invocation_.settings.general ? generalFeatures(used) : used,
-                                part.needsAovs(), KernelBuilds::ForFeatureSet);
+        const SceneFeatures features = invocation_.settings.general ? generalFeatures(used) : used;
+        earlyPipelines_.reset();
+        earlyPipelines_.emplace(*context_, features, part.needsAovs(), KernelBuilds::ForFeatureSet);
     }
 
     // Everything that reads the host's copy of the scene has run before the render frees the

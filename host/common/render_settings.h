@@ -67,7 +67,10 @@ struct RenderSettings {
     DefaultLight defaultLight = DefaultLight::Auto;
     bool general = false; // --general: the all-features pipelines and buffers
     Instancing instancing = Instancing::Auto;
-    bool verbose = false; // --verbose: the scene's feature set and more on stderr
+    // --time T: the scene posed by its animations at T seconds; nullopt: at rest.
+    std::optional<double> animationTime;
+    std::string animation; // --animation N|NAME: the one that plays; "" all of them
+    bool verbose = false;  // --verbose: the scene's feature set and more on stderr
     std::string statsJsonPath;
     bool quiet = false; // no progress bar
     // --preview S: the image so far written to the output path every S seconds (0: never).

@@ -76,9 +76,12 @@ LightingDecision decideSceneLighting(const Scene& scene, const LightingRequest& 
     return decision;
 }
 
+// The map is made once per process (60 ms) and copied: an animation's frames each need it.
 LightingDecision applyDefaultLighting(Scene& scene, const LightingRequest& request) {
     const LightingDecision decision = decideSceneLighting(scene, request);
-    if (decision.useStudio) scene.environment = makeStudioEnvironment();
+    if (!decision.useStudio) return decision;
+    static const SceneEnvironment studio = makeStudioEnvironment();
+    scene.environment = studio;
     return decision;
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstring>
 #include <initializer_list>
+#include <memory>
 #include <optional>
 
 #include "scene/gltf_document.h"
@@ -13,11 +14,13 @@ namespace vkpt::gltf {
 namespace {
 
 // Where an accessor's elements lie; everything in it has been checked against the buffer.
+// A sparse accessor's elements are first gathered into `dense`, which `first` then points into.
 struct Elements {
     const unsigned char* first = nullptr;
     std::size_t count = 0;
     std::size_t stride = 0;
     std::size_t componentSize = 0;
+    std::shared_ptr<const std::vector<unsigned char>> dense;
 };
 
 std::string componentTypeName(int componentType) {
@@ -102,10 +105,6 @@ void requireLayout(const tinygltf::Accessor& accessor, int index, int type,
 const tinygltf::BufferView& findBufferView(const tinygltf::Model& model,
                                            const tinygltf::Accessor& accessor, int index,
                                            const std::string& where) {
-    if (accessor.sparse.isSparse) {
-        throw GltfProblem(where + ": " + accessorName(index) +
-                          " is sparse, which vkpt does not support");
-    }
     const int view = accessor.bufferView;
     if (view < 0) throw GltfProblem(where + ": " + accessorName(index) + " has no buffer view");
     if (static_cast<std::size_t>(view) >= model.bufferViews.size()) {
@@ -163,8 +162,27 @@ void checkElementsInView(const tinygltf::BufferView& view, const tinygltf::Acces
                       " bytes, the view has " + std::to_string(view.byteLength));
 }
 
-Elements locateElements(const tinygltf::Model& model, const tinygltf::Accessor& accessor, int index,
-                        const std::string& where) {
+// Where a tightly packed run of `count` elements of `elementSize` bytes lies, checked against
+// its view: a sparse accessor's indices and values (glTF 2.0, section 3.6.2.3).
+const unsigned char* locatePacked(const tinygltf::Model& model, int viewIndex,
+                                  std::size_t byteOffset, std::size_t count,
+                                  std::size_t elementSize, const std::string& what) {
+    if (viewIndex < 0 || static_cast<std::size_t>(viewIndex) >= model.bufferViews.size()) {
+        throw GltfProblem(what + ": buffer view " + std::to_string(viewIndex) + " does not exist");
+    }
+    const tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(viewIndex)];
+    const std::optional<std::size_t> end = elementsEnd(byteOffset, count, elementSize, elementSize);
+    if (!end || *end > view.byteLength) {
+        throw GltfProblem(what + " reads past the end of buffer view " + std::to_string(viewIndex));
+    }
+    const auto& buffer = model.buffers[static_cast<std::size_t>(view.buffer)];
+    return buffer.data.data() + view.byteOffset + byteOffset;
+}
+
+std::uint32_t readIndex(const unsigned char* bytes, std::size_t componentSize);
+
+Elements locateDenseElements(const tinygltf::Model& model, const tinygltf::Accessor& accessor,
+                             int index, const std::string& where) {
     const tinygltf::BufferView& view = findBufferView(model, accessor, index, where);
     const std::size_t stride = strideOf(view, accessor, index, where);
     if (accessor.count == 0) return {};
@@ -174,7 +192,61 @@ Elements locateElements(const tinygltf::Model& model, const tinygltf::Accessor& 
     const auto componentSize = static_cast<std::size_t>(
         tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(accessor.componentType)));
     return {buffer.data.data() + view.byteOffset + accessor.byteOffset, accessor.count, stride,
-            componentSize};
+            componentSize, nullptr};
+}
+
+// A sparse accessor: its buffer view's elements (zeros without one), then each listed element
+// replaced by its value, gathered tightly packed.
+Elements locateSparseElements(const tinygltf::Model& model, const tinygltf::Accessor& accessor,
+                              int index, const std::string& where) {
+    const std::size_t elementSize = elementSizeOf(accessor);
+    const std::string what = where + ": " + accessorName(index) + ": sparse";
+    auto dense = std::make_shared<std::vector<unsigned char>>(accessor.count * elementSize, 0);
+    if (accessor.bufferView >= 0) {
+        const Elements base = locateDenseElements(model, accessor, index, where);
+        for (std::size_t i = 0; i < base.count; ++i)
+            std::memcpy(dense->data() + i * elementSize, base.first + i * base.stride, elementSize);
+    }
+    const int indexType = accessor.sparse.indices.componentType;
+    if (indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+        indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+        indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) {
+        throw GltfProblem(what + " indices are " + componentTypeName(indexType) +
+                          ", expected UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
+    }
+    if (accessor.sparse.count < 0 || accessor.sparse.indices.byteOffset < 0 ||
+        accessor.sparse.values.byteOffset < 0) {
+        throw GltfProblem(what + " has a negative count or byteOffset");
+    }
+    const auto count = static_cast<std::size_t>(accessor.sparse.count);
+    const auto componentSize = static_cast<std::size_t>(
+        tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(accessor.componentType)));
+    if (count == 0) return {dense->data(), accessor.count, elementSize, componentSize, dense};
+    const auto indexSize = static_cast<std::size_t>(
+        tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(indexType)));
+    const unsigned char* indices =
+        locatePacked(model, accessor.sparse.indices.bufferView,
+                     static_cast<std::size_t>(accessor.sparse.indices.byteOffset), count, indexSize,
+                     what + " indices");
+    const unsigned char* values =
+        locatePacked(model, accessor.sparse.values.bufferView,
+                     static_cast<std::size_t>(accessor.sparse.values.byteOffset), count,
+                     elementSize, what + " values");
+    for (std::size_t i = 0; i < count; ++i) {
+        const std::uint32_t element = readIndex(indices + i * indexSize, indexSize);
+        if (element >= accessor.count) {
+            throw GltfProblem(what + " index " + std::to_string(element) + " >= count " +
+                              std::to_string(accessor.count));
+        }
+        std::memcpy(dense->data() + element * elementSize, values + i * elementSize, elementSize);
+    }
+    return {dense->data(), accessor.count, elementSize, componentSize, std::move(dense)};
+}
+
+Elements locateElements(const tinygltf::Model& model, const tinygltf::Accessor& accessor, int index,
+                        const std::string& where) {
+    return accessor.sparse.isSparse ? locateSparseElements(model, accessor, index, where)
+                                    : locateDenseElements(model, accessor, index, where);
 }
 
 template <typename T> T readValue(const unsigned char* bytes) {
@@ -336,6 +408,52 @@ std::vector<glm::vec2> readTexcoords(const tinygltf::Model& model, int accessorI
         requireNormalizedIntegers(accessor, accessorIndex, "texture coordinates", where);
     }
     return readVectors<2>(model, accessor, accessorIndex, where);
+}
+
+std::vector<float> readFloatComponents(const tinygltf::Model& model, int accessorIndex, int type,
+                                       bool normalizedIntegers, const std::string& where) {
+    const tinygltf::Accessor& accessor = findAccessor(model, accessorIndex, where);
+    if (normalizedIntegers) {
+        requireLayout(accessor, accessorIndex, type, kQuantizedTypes, where);
+        requireNormalizedIntegers(accessor, accessorIndex, "these values", where);
+    } else {
+        requireLayout(accessor, accessorIndex, type, kFloatOnly, where);
+    }
+    const Elements elements = locateElements(model, accessor, accessorIndex, where);
+    const auto components = static_cast<std::size_t>(
+        tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(accessor.type)));
+    std::vector<float> values(elements.count * components);
+    for (std::size_t i = 0; i < elements.count; ++i) {
+        const unsigned char* element = elements.first + i * elements.stride;
+        for (std::size_t c = 0; c < components; ++c) {
+            values[i * components + c] = readComponent(element + c * elements.componentSize,
+                                                       accessor.componentType, accessor.normalized);
+        }
+    }
+    return values;
+}
+
+std::vector<glm::uvec4> readJoints(const tinygltf::Model& model, int accessorIndex,
+                                   const std::string& where) {
+    const tinygltf::Accessor& accessor = findAccessor(model, accessorIndex, where);
+    requireLayout(accessor, accessorIndex, TINYGLTF_TYPE_VEC4,
+                  {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
+                  where);
+    const Elements elements = locateElements(model, accessor, accessorIndex, where);
+    std::vector<glm::uvec4> joints(elements.count);
+    for (std::size_t i = 0; i < elements.count; ++i) {
+        const unsigned char* element = elements.first + i * elements.stride;
+        for (int c = 0; c < 4; ++c) {
+            joints[i][c] = readIndex(element + std::size_t(c) * elements.componentSize,
+                                     elements.componentSize);
+        }
+    }
+    return joints;
+}
+
+std::size_t accessorElementCount(const tinygltf::Model& model, int accessorIndex,
+                                 const std::string& where) {
+    return findAccessor(model, accessorIndex, where).count;
 }
 
 std::vector<std::uint32_t> readIndices(const tinygltf::Model& model, int accessorIndex,

@@ -20,7 +20,8 @@ void checkBufferViews(const tinygltf::Model& model);
 bool allowsQuantizedAttributes(const tinygltf::Model& model);
 
 // `where` names the use, e.g. "mesh 0, primitive 1: POSITION", and starts every message.
-// Sparse accessors are rejected: no scene we know uses them for geometry.
+// Sparse accessors are read too: their buffer view's elements (zeros without one) with the
+// listed elements replaced (glTF 2.0, section 3.6.2.3).
 
 // POSITION: VEC3 of FLOAT; with KHR_mesh_quantization also of BYTE, UNSIGNED_BYTE, SHORT or
 // UNSIGNED_SHORT, normalized or not (the node transform then carries the dequantisation, as the
@@ -46,6 +47,21 @@ std::vector<glm::vec4> readRotations(const tinygltf::Model& model, int accessorI
 // BYTE and SHORT, and all four integer types unnormalized (KHR_texture_transform then scales).
 std::vector<glm::vec2> readTexcoords(const tinygltf::Model& model, int accessorIndex,
                                      const std::string& where);
+
+// Animation and skinning data, every component as a float, element after element (`components`
+// per element): a FLOAT accessor of `type`, or with `normalizedIntegers` also one of normalized
+// BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT (glTF 2.0, section 3.11: animation outputs of
+// rotations and weights, and WEIGHTS_n, may be stored so).
+std::vector<float> readFloatComponents(const tinygltf::Model& model, int accessorIndex, int type,
+                                       bool normalizedIntegers, const std::string& where);
+
+// JOINTS_n: VEC4 of UNSIGNED_BYTE or UNSIGNED_SHORT, widened.
+std::vector<glm::uvec4> readJoints(const tinygltf::Model& model, int accessorIndex,
+                                   const std::string& where);
+
+// How many elements the accessor declares, without reading them.
+std::size_t accessorElementCount(const tinygltf::Model& model, int accessorIndex,
+                                 const std::string& where);
 
 // Indices of any glTF index type (UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT), widened.
 std::vector<std::uint32_t> readIndices(const tinygltf::Model& model, int accessorIndex,

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -14,6 +15,7 @@
 
 #include "common/errors.h"
 #include "scene/gltf_accessors.h"
+#include "scene/gltf_animation.h"
 #include "scene/gltf_cameras.h"
 #include "scene/gltf_document.h"
 #include "scene/gltf_extensions.h"
@@ -21,10 +23,12 @@
 #include "scene/gltf_lights.h"
 #include "scene/gltf_materials.h"
 #include "scene/gltf_mesh_instancing.h"
+#include "scene/gltf_morph.h"
 #include "scene/gltf_nodes.h"
 #include "scene/gltf_origin.h"
 #include "scene/gltf_primitives.h"
 #include "scene/gltf_shapes.h"
+#include "scene/gltf_skins.h"
 #include "scene/gltf_textures.h"
 
 namespace vkpt {
@@ -61,8 +65,10 @@ bool canInstance(const glm::dmat4& transform) {
 class SceneBuilder {
 public:
     SceneBuilder(const tinygltf::Model& model, Scene& scene, gltf::Texcoords texcoords,
-                 const gltf::InstancingPlan& plan)
-        : model_(model), scene_(scene), texcoords_(texcoords), plan_(plan),
+                 const gltf::InstancingPlan& plan, const gltf::ScenePose* pose,
+                 const gltf::NodeWorlds& worlds)
+        : model_(model), scene_(scene), texcoords_(texcoords), plan_(plan), pose_(pose),
+          worlds_(worlds), skinJoints_(model.skins.size()),
           withTangents_(std::any_of(scene.materials.begin(), scene.materials.end(),
                                     [](const SceneMaterial& m) { return m.hasNormalMap(); })),
           meshSlots_(model.meshes.size()) {}
@@ -89,19 +95,59 @@ private:
                               std::to_string(meshIndex) + " does not exist (the file has " +
                               std::to_string(model_.meshes.size()) + " meshes)");
         }
+        const gltf::Deformation deformation = deformationOf(nodeIndex);
+        if (deformation.joints != nullptr) {
+            // The skin places the vertices; the node's own transform is ignored (glTF 2.0,
+            // section 3.7.3.1), and its instances too: one skinned copy.
+            appendPrimitives(meshIndex, glm::dmat4(1.0), PrimitiveKinds::All, scene_, deformation);
+            return;
+        }
         const std::optional<std::vector<glm::dmat4>> local =
             gltf::meshInstanceTransforms(model_, nodeIndex);
         if (!local) {
-            placeMesh(meshIndex, world);
+            placeMesh(meshIndex, world, deformation);
             return;
         }
         for (const glm::dmat4& transform : *local)
-            placeMesh(meshIndex, world * transform);
+            placeMesh(meshIndex, world * transform, deformation);
     }
 
-    void placeMesh(int meshIndex, const glm::dmat4& placement) {
-        if (!plan_.isInstanced(meshIndex) || !canInstance(placement)) {
-            appendPrimitives(meshIndex, placement, PrimitiveKinds::All, scene_);
+    // The node's morph weights and skin; a mesh moved by either is flattened at this placement
+    // (its instanced copy, if any, is the one the file stores).
+    gltf::Deformation deformationOf(int nodeIndex) {
+        gltf::Deformation deformation;
+        const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(nodeIndex)];
+        const tinygltf::Mesh& mesh = model_.meshes[static_cast<std::size_t>(node.mesh)];
+        const bool morphs = std::any_of(mesh.primitives.begin(), mesh.primitives.end(),
+                                        [](const auto& p) { return !p.targets.empty(); });
+        if (morphs) deformation.morphWeights = gltf::morphWeights(model_, nodeIndex, pose_);
+        if (node.skin != -1) deformation.joints = &skinJoints(node.skin, nodeIndex);
+        return deformation;
+    }
+
+    const std::vector<glm::dmat4>& skinJoints(int skinIndex, int nodeIndex) {
+        if (skinIndex < 0 || static_cast<std::size_t>(skinIndex) >= model_.skins.size()) {
+            const std::size_t count = model_.skins.size();
+            throw GltfProblem("node " + std::to_string(nodeIndex) + ": skin " +
+                              std::to_string(skinIndex) + " does not exist (the file has " +
+                              std::to_string(count) + (count == 1 ? " skin)" : " skins)"));
+        }
+        std::optional<std::vector<glm::dmat4>>& joints =
+            skinJoints_[static_cast<std::size_t>(skinIndex)];
+        if (!joints) joints = gltf::jointMatrices(model_, skinIndex, worlds_);
+        return *joints;
+    }
+
+    static bool moves(const gltf::Deformation& deformation) {
+        return deformation.joints != nullptr ||
+               std::any_of(deformation.morphWeights.begin(), deformation.morphWeights.end(),
+                           [](double w) { return w != 0.0; });
+    }
+
+    void placeMesh(int meshIndex, const glm::dmat4& placement,
+                   const gltf::Deformation& deformation) {
+        if (!plan_.isInstanced(meshIndex) || !canInstance(placement) || moves(deformation)) {
+            appendPrimitives(meshIndex, placement, PrimitiveKinds::All, scene_, deformation);
             return;
         }
         // Emitters stay in world space at every placement (light sampling lists each one).
@@ -151,7 +197,7 @@ private:
     enum class PrimitiveKinds { All, Emitting, NotEmitting };
 
     void appendPrimitives(int meshIndex, const glm::dmat4& transform, PrimitiveKinds kinds,
-                          TriangleSoup& soup) {
+                          TriangleSoup& soup, const gltf::Deformation& deformation = {}) {
         const tinygltf::Mesh& mesh = model_.meshes[static_cast<std::size_t>(meshIndex)];
         for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
             const std::string where =
@@ -163,7 +209,8 @@ private:
                 (kinds == PrimitiveKinds::NotEmitting && emitting))
                 continue;
             gltf::appendPrimitiveTriangles(model_, primitive, transform, material, texcoords_,
-                                           tangentsFor(material), where, soup, scene_.repairs);
+                                           tangentsFor(material), where, soup, scene_.repairs,
+                                           deformation);
         }
     }
 
@@ -219,6 +266,9 @@ private:
     Scene& scene_;
     gltf::Texcoords texcoords_;
     const gltf::InstancingPlan& plan_;
+    const gltf::ScenePose* pose_; // nullptr: at rest
+    const gltf::NodeWorlds& worlds_;
+    std::vector<std::optional<std::vector<glm::dmat4>>> skinJoints_; // per skin, when first used
     bool withTangents_; // some material has a normal texture
     std::optional<std::uint32_t> defaultMaterial_;
     // Per glTF mesh: not read yet, or its slot in Scene::meshes (nullopt: nothing to keep).
@@ -263,6 +313,11 @@ std::vector<std::string> geometryNotes(const Scene& scene,
         notes.push_back(plural(repairs.invalidNormals, "vertex normal was", "vertex normals were") +
                         " zero or not finite; the triangles' face normals are used there");
     }
+    if (repairs.renormalisedSkinWeights > 0) {
+        notes.push_back(
+            plural(repairs.renormalisedSkinWeights, "skinned vertex has", "skinned vertices have") +
+            " weights that do not sum to one; they are renormalised");
+    }
     return notes;
 }
 
@@ -286,27 +341,86 @@ std::string noTrianglesMessage(const Scene& scene) {
            plural(skipped, "triangle", "triangles") + " of zero area)";
 }
 
-Scene buildScene(const std::string& path, const LoadOptions& options) {
-    const tinygltf::Model model = gltf::parseGltfFile(path);
+std::vector<SceneAnimation> summarise(const std::vector<gltf::Animation>& animations) {
+    std::vector<SceneAnimation> summaries;
+    for (const gltf::Animation& animation : animations)
+        summaries.push_back(
+            {animation.name, animation.start, animation.end, animation.channels.size()});
+    return summaries;
+}
+
+// Every node's world transform, for the joints of skins (a skinned mesh may come before its
+// joints in the walk); nothing to walk for a file without skins.
+gltf::NodeWorlds nodeWorlds(const tinygltf::Model& model, int sceneIndex, const glm::dmat4& root,
+                            const gltf::ScenePose* pose) {
+    gltf::NodeWorlds worlds;
+    if (model.skins.empty()) return worlds;
+    worlds.transforms.assign(model.nodes.size(), glm::dmat4(1.0));
+    worlds.placed.assign(model.nodes.size(), 0);
+    gltf::walkSceneNodes(
+        model, sceneIndex,
+        [&](int node, const glm::dmat4& world) {
+            worlds.transforms[static_cast<std::size_t>(node)] = world;
+            worlds.placed[static_cast<std::size_t>(node)] = 1;
+        },
+        root, pose);
+    return worlds;
+}
+
+} // namespace
+
+// What every pose of the file shares: the parsed document, its decoded textures and converted
+// materials, and its checked animations.
+struct GltfSceneSource::Parsed {
+    std::string path;
+    tinygltf::Model model;
+    Scene base; // sourcePath, textures, images, materials, animations
+    gltf::Texcoords texcoords = gltf::Texcoords::Skip;
+    int sceneIndex = 0;
+    std::vector<gltf::Animation> animations;
+};
+
+namespace {
+
+std::unique_ptr<GltfSceneSource::Parsed> parse(const std::string& path) {
+    auto parsed = std::make_unique<GltfSceneSource::Parsed>();
+    parsed->path = path;
+    parsed->model = gltf::parseGltfFile(path);
+    const tinygltf::Model& model = parsed->model;
     gltf::checkBufferViews(model);
-    Scene scene;
+    Scene& scene = parsed->base;
     scene.sourcePath = path;
     gltf::TextureTable textures(model, scene.textures, scene.images);
     scene.materials = gltf::convertMaterials(model, textures);
     // TEXCOORD_0 is read only to look textures up.
-    const gltf::Texcoords texcoords =
-        scene.textures.empty() ? gltf::Texcoords::Skip : gltf::Texcoords::Read;
-    const int sceneIndex = gltf::defaultSceneIndex(model);
+    parsed->texcoords = scene.textures.empty() ? gltf::Texcoords::Skip : gltf::Texcoords::Read;
+    parsed->sceneIndex = gltf::defaultSceneIndex(model);
+    parsed->animations = gltf::readAnimations(model);
+    scene.animations = summarise(parsed->animations);
+    return parsed;
+}
+
+Scene buildScene(const GltfSceneSource::Parsed& parsed, const LoadOptions& options) {
+    const tinygltf::Model& model = parsed.model;
+    const int sceneIndex = parsed.sceneIndex;
+    Scene scene = parsed.base;
+    const std::vector<std::size_t> playing =
+        gltf::selectAnimations(parsed.animations, options.animation);
+    std::optional<gltf::ScenePose> pose;
+    if (options.time) pose = gltf::poseAt(model, parsed.animations, playing, *options.time);
+    const gltf::ScenePose* posed = pose ? &*pose : nullptr;
     const gltf::InstancingPlan plan = gltf::planInstancing(model, sceneIndex, options.instancing);
     // First the scene's extent in double, so that a far-away scene is recentred before its
     // positions are rounded to float.
-    const std::optional<gltf::WorldExtent> extent = gltf::worldExtent(model, sceneIndex, plan);
+    const std::optional<gltf::WorldExtent> extent =
+        gltf::worldExtent(model, sceneIndex, plan, posed);
     scene.worldOrigin = extent ? gltf::chooseWorldOrigin(*extent) : glm::dvec3(0.0);
-    SceneBuilder builder(model, scene, texcoords, plan);
+    const glm::dmat4 root = glm::translate(glm::dmat4(1.0), -scene.worldOrigin);
+    const gltf::NodeWorlds worlds = nodeWorlds(model, sceneIndex, root, posed);
+    SceneBuilder builder(model, scene, parsed.texcoords, plan, posed, worlds);
     gltf::walkSceneNodes(
         model, sceneIndex,
-        [&](int node, const glm::dmat4& world) { builder.visitNode(node, world); },
-        glm::translate(glm::dmat4(1.0), -scene.worldOrigin));
+        [&](int node, const glm::dmat4& world) { builder.visitNode(node, world); }, root, posed);
     if (scene.triangleCount() == 0 && scene.instances.empty() && scene.spheres.empty()) {
         throw GltfProblem(noTrianglesMessage(scene));
     }
@@ -314,18 +428,37 @@ Scene buildScene(const std::string& path, const LoadOptions& options) {
     for (const std::string& note : geometryNotes(scene, extent))
         notes.push_back(note);
     for (const std::string& note : notes)
-        std::cerr << path << ": " << note << '\n';
+        std::cerr << parsed.path << ": " << note << '\n';
     return scene;
 }
 
 } // namespace
 
-Scene loadGltfScene(const std::string& path, const LoadOptions& options) {
+GltfSceneSource::GltfSceneSource(const std::string& path) {
     try {
-        return buildScene(path, options);
+        parsed_ = parse(path);
     } catch (const GltfProblem& problem) {
         throw InputError(path + ": " + problem.what());
     }
+}
+
+GltfSceneSource::~GltfSceneSource() = default;
+GltfSceneSource::GltfSceneSource(GltfSceneSource&&) noexcept = default;
+
+const std::string& GltfSceneSource::path() const {
+    return parsed_->path;
+}
+
+Scene GltfSceneSource::pose(const LoadOptions& options) const {
+    try {
+        return buildScene(*parsed_, options);
+    } catch (const GltfProblem& problem) {
+        throw InputError(parsed_->path + ": " + problem.what());
+    }
+}
+
+Scene loadGltfScene(const std::string& path, const LoadOptions& options) {
+    return GltfSceneSource(path).pose(options);
 }
 
 } // namespace vkpt

@@ -2,6 +2,8 @@
 // will index.
 #pragma once
 
+#include <memory>
+#include <optional>
 #include <string>
 
 #include "common/render_settings.h"
@@ -14,19 +16,45 @@ struct LoadOptions {
     // Which meshes placed more than once are kept once and placed by Scene::instances
     // (gltf_instancing_plan.h); the others are flattened into world space at every placement.
     Instancing instancing = Instancing::Auto;
+    // Pose the scene at this time in seconds (docs/scene-model.md, "Animation"); nullopt: at
+    // rest, as the file stores its nodes (morph weights and skins still apply).
+    std::optional<double> time;
+    std::string animation; // which one plays at `time`: "" all, else an index or a name
 };
 
 // Loads the default scene (`scene`, else scene 0): TRIANGLES primitives of every mesh node (and of
-// every EXT_mesh_gpu_instancing instance), with their materials, flattened into world space or
-// kept once per mesh and placed by instances as options.instancing decides; the textures those
-// materials use (decoded; TEXCOORD_0 read only then); KHR_lights_punctual lights;
+// every EXT_mesh_gpu_instancing instance), morphed by their weights and skinned by their skins,
+// posed by the animations at options.time when given, with their materials, flattened into world
+// space or kept once per mesh and placed by instances as options.instancing decides; the textures
+// those materials use (decoded; TEXCOORD_0 read only then); KHR_lights_punctual lights;
 // KHR_implicit_shapes spheres (gltf_shapes.cpp); and the perspective cameras. Compressed files are
 // decoded on the way: Draco and meshopt geometry, quantized attributes, WebP images
 // (docs/scene-model.md, "Compressed files"). Throws InputError, one line naming the file and the
-// place, for any bad input, including sparse accessors, other primitive modes, undecodable images
-// and unsupported required extensions. What it ignores (orthographic cameras, unsupported
-// extensions in extensionsUsed, KHR_materials_specular textures) it notes on stderr, one line each,
-// and only once the load has succeeded.
+// place, for any bad input (malformed skins and animations too), including other
+// primitive modes, undecodable images and unsupported required extensions. What it ignores
+// (orthographic cameras, unsupported extensions in extensionsUsed, KHR_materials_specular textures)
+// it notes on stderr, one line each, and only once the load has succeeded.
 Scene loadGltfScene(const std::string& path, const LoadOptions& options = {});
+
+// A file read once and posed many times: an animation's frames share the parsed document, the
+// decoded textures, the materials and the checked animations, and each pose walks, morphs and
+// skins the nodes anew. loadGltfScene(path, options) is GltfSceneSource(path).pose(options).
+class GltfSceneSource {
+public:
+    // Parses and checks the file, decodes its textures; throws InputError like loadGltfScene.
+    explicit GltfSceneSource(const std::string& path);
+    ~GltfSceneSource();
+    GltfSceneSource(GltfSceneSource&&) noexcept;
+    GltfSceneSource& operator=(GltfSceneSource&&) = delete;
+
+    const std::string& path() const;
+    // The scene as options.time and options.animation pose it (the other options too).
+    Scene pose(const LoadOptions& options) const;
+
+    struct Parsed;
+
+private:
+    std::unique_ptr<Parsed> parsed_;
+};
 
 } // namespace vkpt

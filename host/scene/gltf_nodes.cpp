@@ -25,25 +25,19 @@ void requireLength(const std::vector<double>& values, std::size_t length, const 
                       std::to_string(length));
 }
 
-glm::dmat4 rotationOf(const std::vector<double>& rotation, int nodeIndex) {
+glm::dquat rotationOf(const std::vector<double>& rotation, int nodeIndex) {
     requireLength(rotation, 4, "rotation", nodeIndex);
     // glTF stores quaternions as (x, y, z, w); glm's constructor takes w first.
     const glm::dquat q(rotation[3], rotation[0], rotation[1], rotation[2]);
     const double length = glm::length(q);
     if (!(length > 0.0)) throw GltfProblem(nodeName(nodeIndex) + ": rotation is a zero quaternion");
     // Exporters write quaternions rounded to a few digits; renormalise so no scale creeps in.
-    return glm::mat4_cast(q / length);
+    return q / length;
 }
 
-glm::dmat4 translationOf(const std::vector<double>& translation, int nodeIndex) {
-    requireLength(translation, 3, "translation", nodeIndex);
-    return glm::translate(glm::dmat4(1.0),
-                          glm::dvec3(translation[0], translation[1], translation[2]));
-}
-
-glm::dmat4 scaleOf(const std::vector<double>& scale, int nodeIndex) {
-    requireLength(scale, 3, "scale", nodeIndex);
-    return glm::scale(glm::dmat4(1.0), glm::dvec3(scale[0], scale[1], scale[2]));
+glm::dvec3 vectorOf(const std::vector<double>& values, const char* property, int nodeIndex) {
+    requireLength(values, 3, property, nodeIndex);
+    return glm::dvec3(values[0], values[1], values[2]);
 }
 
 // A node waiting to be visited, or (leaving) one whose subtree is done.
@@ -82,20 +76,30 @@ int defaultSceneIndex(const tinygltf::Model& model) {
     return index;
 }
 
+glm::dmat4 NodeTrs::matrix() const {
+    return glm::scale(glm::translate(glm::dmat4(1.0), translation) * glm::mat4_cast(rotation),
+                      scale);
+}
+
+NodeTrs restTrs(const tinygltf::Node& node, int nodeIndex) {
+    NodeTrs trs;
+    if (!node.translation.empty())
+        trs.translation = vectorOf(node.translation, "translation", nodeIndex);
+    if (!node.rotation.empty()) trs.rotation = rotationOf(node.rotation, nodeIndex);
+    if (!node.scale.empty()) trs.scale = vectorOf(node.scale, "scale", nodeIndex);
+    return trs;
+}
+
 glm::dmat4 localTransform(const tinygltf::Node& node, int nodeIndex) {
     if (!node.matrix.empty()) {
         requireLength(node.matrix, 16, "matrix", nodeIndex);
         return glm::make_mat4(node.matrix.data()); // both column-major
     }
-    glm::dmat4 transform(1.0);
-    if (!node.translation.empty()) transform = translationOf(node.translation, nodeIndex);
-    if (!node.rotation.empty()) transform = transform * rotationOf(node.rotation, nodeIndex);
-    if (!node.scale.empty()) transform = transform * scaleOf(node.scale, nodeIndex);
-    return transform;
+    return restTrs(node, nodeIndex).matrix();
 }
 
 void walkSceneNodes(const tinygltf::Model& model, int sceneIndex, const NodeVisitor& visit,
-                    const glm::dmat4& root) {
+                    const glm::dmat4& root, const ScenePose* pose) {
     std::vector<char> onPath(model.nodes.size(), 0);
     std::vector<PendingNode> stack;
     pushChildren(stack, model.scenes[static_cast<std::size_t>(sceneIndex)].nodes, -1, root);
@@ -112,7 +116,10 @@ void walkSceneNodes(const tinygltf::Model& model, int sceneIndex, const NodeVisi
             throw GltfProblem(nodeName(pending.index) + ": the node hierarchy has a cycle");
         }
         const tinygltf::Node& node = model.nodes[index];
-        const glm::dmat4 world = pending.parentWorld * localTransform(node, pending.index);
+        const bool posed = pose != nullptr && index < pose->locals.size() && pose->locals[index];
+        const glm::dmat4 world =
+            pending.parentWorld *
+            (posed ? *pose->locals[index] : localTransform(node, pending.index));
         visit(pending.index, world);
         onPath[index] = 1;
         stack.push_back({pending.index, pending.parent, world, true});

@@ -143,11 +143,13 @@ double WorldExtent::size() const {
 }
 
 std::optional<WorldExtent> worldExtent(const tinygltf::Model& model, int sceneIndex,
-                                       const InstancingPlan& plan) {
+                                       const InstancingPlan& plan, const ScenePose* pose) {
     ExtentBuilder builder(model, plan);
     try {
-        walkSceneNodes(model, sceneIndex,
-                       [&](int node, const glm::dmat4& world) { builder.visitNode(node, world); });
+        walkSceneNodes(
+            model, sceneIndex,
+            [&](int node, const glm::dmat4& world) { builder.visitNode(node, world); },
+            glm::dmat4(1.0), pose);
     } catch (const GltfProblem&) {
         return std::nullopt; // the loading pass names the problem
     }

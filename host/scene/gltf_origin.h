@@ -9,6 +9,7 @@
 #include <tiny_gltf.h>
 
 #include "scene/gltf_instancing_plan.h"
+#include "scene/gltf_nodes.h"
 
 namespace vkpt::gltf {
 
@@ -28,8 +29,10 @@ struct WorldExtent {
 // its own box at each placement), spheres and point and spot lights in world space, in double.
 // Tolerant by design: nullopt when the scene has no readable finite geometry or the file has a
 // problem, which the loading pass that follows reports in its own words.
+// Under a `pose`, its nodes' posed transforms; skins and morph targets are not applied (their
+// vertices' rest places measure the scene well enough to choose an origin).
 std::optional<WorldExtent> worldExtent(const tinygltf::Model& model, int sceneIndex,
-                                       const InstancingPlan& plan);
+                                       const InstancingPlan& plan, const ScenePose* pose = nullptr);
 
 // The centre of `extent` when it lies beyond kRecentreRatio times the scene's size from the
 // origin, else the origin.

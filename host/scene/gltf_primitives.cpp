@@ -13,6 +13,8 @@
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_document.h"
 #include "scene/gltf_draco.h"
+#include "scene/gltf_morph.h"
+#include "scene/gltf_skins.h"
 #include "scene/tangents.h"
 
 namespace vkpt::gltf {
@@ -75,6 +77,7 @@ struct LocalVertices {
     std::vector<glm::vec3> positions;
     std::optional<std::vector<glm::vec3>> normals;
     std::optional<std::vector<glm::vec2>> texcoords;
+    std::optional<std::vector<glm::vec4>> tangents; // the file's TANGENT, when asked for
     std::vector<std::uint32_t> indices;
     bool indexed = false; // indices came from the file, not 0, 1, 2, ...
 };
@@ -100,12 +103,7 @@ glm::dmat3 normalMatrix(const glm::dmat3& m) {
     return glm::determinant(m) < 0.0 ? -cofactor : cofactor;
 }
 
-void transformNormals(std::vector<glm::vec3>& normals, const glm::dmat4& world,
-                      std::size_t vertexCount, const std::string& where) {
-    if (normals.size() != vertexCount) {
-        throw GltfProblem(where + ": NORMAL has " + std::to_string(normals.size()) +
-                          " elements but POSITION has " + std::to_string(vertexCount));
-    }
+void transformNormals(std::vector<glm::vec3>& normals, const glm::dmat4& world) {
     const glm::dmat3 transform = normalMatrix(glm::dmat3(world));
     for (glm::vec3& normal : normals)
         normal = glm::vec3(transform * glm::dvec3(normal));
@@ -115,15 +113,8 @@ void transformNormals(std::vector<glm::vec3>& normals, const glm::dmat4& world,
 // like edges), w = ±1 flipped by a mirroring transform, since the world normals keep their side
 // (normalMatrix) while cross(n, t) turns over. nullopt when some tangent is zero or not finite:
 // the primitive's frames are generated instead.
-std::optional<std::vector<glm::vec4>> worldTangents(const tinygltf::Model& model, int accessor,
-                                                    const glm::dmat4& world,
-                                                    std::size_t vertexCount,
-                                                    const std::string& where) {
-    std::vector<glm::vec4> tangents = readTangents(model, accessor, where + ": TANGENT");
-    if (tangents.size() != vertexCount) {
-        throw GltfProblem(where + ": TANGENT has " + std::to_string(tangents.size()) +
-                          " elements but POSITION has " + std::to_string(vertexCount));
-    }
+std::optional<std::vector<glm::vec4>> worldTangents(std::vector<glm::vec4> tangents,
+                                                    const glm::dmat4& world) {
     const glm::dmat3 linear(world);
     const double mirror = glm::determinant(linear) < 0.0 ? -1.0 : 1.0;
     for (glm::vec4& tangent : tangents) {
@@ -135,6 +126,13 @@ std::optional<std::vector<glm::vec4>> worldTangents(const tinygltf::Model& model
         tangent = glm::vec4(glm::vec3(t / length), tangent.w < 0.0f ? -mirror : mirror);
     }
     return tangents;
+}
+
+void checkAttributeCount(std::size_t count, const char* attribute, std::size_t vertexCount,
+                         const std::string& where) {
+    if (count == vertexCount) return;
+    throw GltfProblem(where + ": " + attribute + " has " + std::to_string(count) +
+                      " elements but POSITION has " + std::to_string(vertexCount));
 }
 
 // TEXCOORD_0 as stored: texture coordinates do not depend on the node transform. A NaN would
@@ -211,24 +209,65 @@ LocalVertices readAccessorVertices(const tinygltf::Model& model,
     return vertices;
 }
 
+// A Draco primitive's TANGENT, if any, is inside the compressed data, which the decoder does
+// not map; its frames are generated instead, as for a file without TANGENT.
 LocalVertices readLocalVertices(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
-                                bool withTexcoords, const std::string& where) {
-    LocalVertices vertices = isDracoPrimitive(primitive)
-                                 ? readDracoVertices(model, primitive, withTexcoords, where)
-                                 : readAccessorVertices(model, primitive, where);
+                                bool withTexcoords, Tangents tangents, const std::string& where) {
+    const bool draco = isDracoPrimitive(primitive);
+    LocalVertices vertices = draco ? readDracoVertices(model, primitive, withTexcoords, where)
+                                   : readAccessorVertices(model, primitive, where);
     readRemainingAttributes(model, primitive, withTexcoords, where, vertices);
+    const std::size_t vertexCount = vertices.positions.size();
+    if (vertices.normals)
+        checkAttributeCount(vertices.normals->size(), "NORMAL", vertexCount, where);
+    if (const std::optional<int> tangent = attributeAccessor(primitive, "TANGENT");
+        tangent && tangents == Tangents::Read && !draco) {
+        vertices.tangents = readTangents(model, *tangent, where + ": TANGENT");
+        checkAttributeCount(vertices.tangents->size(), "TANGENT", vertexCount, where);
+    }
     return vertices;
+}
+
+// Morph targets and skins move the vertices in the file's order, which a Draco primitive's
+// decoded vertices do not keep.
+void deform(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
+            const Deformation& deformation, LocalVertices& vertices, const std::string& where,
+            GeometryRepairs& repairs) {
+    const bool morphed = !deformation.morphWeights.empty() && !primitive.targets.empty();
+    const bool skinned = deformation.joints != nullptr;
+    if (!morphed && !skinned) return;
+    if (isDracoPrimitive(primitive)) {
+        const bool moves =
+            skinned || std::any_of(deformation.morphWeights.begin(), deformation.morphWeights.end(),
+                                   [](double w) { return w != 0.0; });
+        if (!moves) return;
+        throw GltfProblem(where + ": morph targets and skins of Draco primitives are not "
+                                  "supported");
+    }
+    std::vector<glm::vec3>* normals = vertices.normals ? &*vertices.normals : nullptr;
+    std::vector<glm::vec4>* tangents = vertices.tangents ? &*vertices.tangents : nullptr;
+    if (morphed) {
+        applyMorphTargets(model, primitive, deformation.morphWeights,
+                          {vertices.positions, normals, tangents}, where);
+    }
+    if (skinned) {
+        skinVertices(model, primitive, *deformation.joints, {vertices.positions, normals, tangents},
+                     where, repairs);
+    }
 }
 
 WorldGeometry readWorldGeometry(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
                                 const glm::dmat4& world, Texcoords texcoords, Tangents tangents,
-                                const std::string& where) {
+                                const Deformation& deformation, const std::string& where,
+                                GeometryRepairs& repairs) {
     WorldGeometry geometry;
     geometry.withTexcoords = texcoords == Texcoords::Read;
-    LocalVertices vertices = readLocalVertices(model, primitive, geometry.withTexcoords, where);
+    LocalVertices vertices =
+        readLocalVertices(model, primitive, geometry.withTexcoords, tangents, where);
     const std::size_t vertexCount = vertices.positions.size();
+    deform(model, primitive, deformation, vertices, where, repairs);
     transformPositions(vertices.positions, world, where);
-    if (vertices.normals) transformNormals(*vertices.normals, world, vertexCount, where);
+    if (vertices.normals) transformNormals(*vertices.normals, world);
     if (vertices.texcoords) checkTexcoords(*vertices.texcoords, vertexCount, where);
     checkTriangleIndices(vertices, where);
     geometry.positions = std::move(vertices.positions);
@@ -236,12 +275,7 @@ WorldGeometry readWorldGeometry(const tinygltf::Model& model, const tinygltf::Pr
     geometry.texcoords = std::move(vertices.texcoords);
     geometry.indices = std::move(vertices.indices);
     geometry.tangentMode = tangents;
-    // A Draco primitive's TANGENT, if any, is inside the compressed data, which the decoder does
-    // not map; its frames are generated instead, as for a file without TANGENT.
-    if (const std::optional<int> tangent = attributeAccessor(primitive, "TANGENT");
-        tangent && tangents == Tangents::Read && !isDracoPrimitive(primitive)) {
-        geometry.tangents = worldTangents(model, *tangent, world, vertexCount, where);
-    }
+    if (vertices.tangents) geometry.tangents = worldTangents(std::move(*vertices.tangents), world);
     geometry.mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
     return geometry;
 }
@@ -315,9 +349,11 @@ void appendGeneratedTangents(std::size_t firstCorner, TriangleSoup& soup) {
 void appendPrimitiveTriangles(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
                               const glm::dmat4& world, std::uint32_t materialIndex,
                               Texcoords texcoords, Tangents tangents, const std::string& where,
-                              TriangleSoup& soup, GeometryRepairs& repairs) {
+                              TriangleSoup& soup, GeometryRepairs& repairs,
+                              const Deformation& deformation) {
     requireTriangles(primitive.mode, where);
-    WorldGeometry geometry = readWorldGeometry(model, primitive, world, texcoords, tangents, where);
+    WorldGeometry geometry = readWorldGeometry(model, primitive, world, texcoords, tangents,
+                                               deformation, where, repairs);
     if (geometry.normals) repairNormals(*geometry.normals, repairs);
     const std::size_t firstCorner = soup.positions.size();
     for (std::size_t first = 0; first < geometry.indices.size(); first += 3) {

@@ -160,6 +160,7 @@ struct Bounds {
 struct GeometryRepairs {
     std::size_t zeroAreaTriangles = 0; // skipped: no area in float, so no ray can hit them
     std::size_t invalidNormals = 0;    // zero-length or non-finite vertex normals: face normal used
+    std::size_t renormalisedSkinWeights = 0; // skinned vertices whose weights did not sum to one
 };
 
 // A triangle soup: triangle i has vertices positions[3i .. 3i+2] (counter-clockwise seen from
@@ -200,6 +201,15 @@ struct SceneInstance {
     glm::dmat4 objectToWorld{1.0}; // affine; after the recentring (worldOrigin)
 };
 
+// An animation of the file (docs/scene-model.md, "Animation"), for listing: the loader has
+// posed the scene at the requested time already.
+struct SceneAnimation {
+    std::string name;
+    double start = 0.0; // seconds: its earliest and latest keyframe
+    double end = 0.0;
+    std::size_t channels = 0;
+};
+
 // The loaded scene: its world-space triangle soup (every placement the loader flattened),
 // spheres, the meshes it kept once and their placements, and what lights and frames it.
 struct Scene : TriangleSoup {
@@ -212,7 +222,8 @@ struct Scene : TriangleSoup {
     std::vector<SceneInstance> instances; // placements of meshes, in node-walk order
     std::vector<SceneLight> lights;
     SceneEnvironment environment;
-    std::vector<SceneCamera> cameras; // in depth-first node-walk order
+    std::vector<SceneCamera> cameras;       // in depth-first node-walk order
+    std::vector<SceneAnimation> animations; // the file's, posed or not
     // The file's world-space point that positions and cameras are measured from. The loader
     // moves it to the centre of a scene that lies far from the origin (relative to its size),
     // so that floats keep their precision there; rendering does not depend on it.

@@ -107,6 +107,13 @@ TEST(GltfLoader, KeepsGivenNormalsOfTheQuad) {
     expectNormals(scene, 1, {0, 0, 1});
 }
 
+TEST(GltfLoader, ReadsASparseAccessorOverItsBufferView) {
+    // The unit triangle's vertex 1 replaced by (2, 0, 0) (glTF 2.0, section 3.6.2.3).
+    const Scene scene = loadGltfScene(kLoaderDir + "sparse.gltf");
+    ASSERT_EQ(scene.triangleCount(), 1u);
+    expectTriangle(scene, 0, {{0, 0, 0}, {2, 0, 0}, {0, 1, 0}});
+}
+
 TEST(GltfLoader, ReadsInterleavedVerticesWithByteStride) {
     // Per vertex: position, normal, one padding float (1234.5); stride 28, normals at byte 12.
     const Scene scene = loadGltfScene(kLoaderDir + "interleaved.gltf");
@@ -268,8 +275,8 @@ const InvalidCase kInvalidCases[] = {
      "mesh 0, primitive 0: indices: accessor 1 is SCALAR of FLOAT, expected SCALAR of "
      "UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT"},
     {"NoPosition", "no_position.gltf", "mesh 0, primitive 0: no POSITION attribute"},
-    {"SparseAccessor", "sparse_accessor.gltf",
-     "mesh 0, primitive 0: POSITION: accessor 0 is sparse, which vkpt does not support"},
+    {"SparseIndexOutOfRange", "sparse_index_out_of_range.gltf",
+     "mesh 0, primitive 0: POSITION: accessor 0: sparse index 5 >= count 3"},
     {"NoTriangles", "no_triangles.gltf", "the scene has no triangles"},
     {"UnsupportedRequiredExtension", "required_extension.gltf",
      "required extensions KHR_texture_basisu, EXT_lights_image_based are not supported"},
@@ -333,6 +340,31 @@ const InvalidCase kInvalidCases[] = {
     {"UndecodableWebp", "webp_undecodable.gltf", "image 0: cannot decode the WebP data"},
     {"TextureOnTexcoord1", "texcoord_1.gltf",
      "material 0: baseColorTexture: reads TEXCOORD_1; only TEXCOORD_0 is supported"},
+    {"SkinJointOutOfRange", "skin_joint_out_of_range.gltf",
+     "mesh 0, primitive 0: vertex 1: joint 3 is out of range (the skin has 2 joints)"},
+    {"SkinJointNotANode", "skin_joint_not_a_node.gltf",
+     "skin 0: joint 1 is node 9, which does not exist (the file has 3 nodes)"},
+    {"SkinWithTooFewBindMatrices", "skin_bind_matrix_count.gltf",
+     "skin 0: inverseBindMatrices has 2 matrices for 3 joints"},
+    {"SkinnedPrimitiveWithoutJoints", "skin_without_joints.gltf",
+     "mesh 0, primitive 0: the node has a skin but the primitive has no JOINTS_0 and WEIGHTS_0"},
+    {"SkinnedVertexWithoutWeight", "skin_zero_weights.gltf",
+     "mesh 0, primitive 0: vertex 2 has no non-zero skin weight"},
+    {"MissingSkin", "skin_missing.gltf", "node 0: skin 4 does not exist (the file has 1 skin)"},
+    {"MorphWeightsUnlikeTargets", "morph_weight_count.gltf",
+     "mesh 0, primitive 0: 3 morph weights for 2 morph targets"},
+    {"AnimationTimesGoBack", "animation_times_decrease.gltf",
+     "animation 0, sampler 0: input times do not increase at keyframe 2"},
+    {"AnimationOutputTooLong", "animation_output_count.gltf",
+     "animation 0, sampler 0: output has 9 numbers, 2 keyframes need 6"},
+    {"AnimationInterpolationUnknown", "animation_interpolation.gltf",
+     "animation 0, sampler 0: interpolation 'SMOOTH' is not one of LINEAR, STEP, CUBICSPLINE"},
+    {"AnimationOnMatrixNode", "animation_matrix_node.gltf",
+     "animation 0, channel 0: node 0 has a matrix, which animations may not target (only TRS)"},
+    {"AnimationOfMissingNode", "animation_missing_node.gltf",
+     "animation 0, channel 0: node 5 does not exist (the file has 2 nodes)"},
+    {"WeightsAnimationWithoutTargets", "animation_weights_without_targets.gltf",
+     "animation 0, channel 0: node 0 has no mesh with morph targets for its weights"},
 };
 
 class GltfLoaderRejects : public testing::TestWithParam<InvalidCase> {};
