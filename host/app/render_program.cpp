@@ -12,6 +12,8 @@
 #include "app/render_part.h"
 #include "common/phase_log.h"
 #include "convergence/convergence.h"
+#include "denoise/cpu_denoiser.h"
+#include "driver/denoised_output.h"
 #include "image/image_io.h"
 
 namespace vkpt {
@@ -26,14 +28,14 @@ bool printsPassLines(const ProgramOptions& invocation) {
 }
 
 RenderRunOptions runOptions(const std::string& program, const ProgramOptions& invocation,
-                            ConvergenceTracker& tracker, RenderPart& part) {
+                            ConvergenceTracker& tracker, RenderPart& part, Denoiser* denoiser) {
     RenderRunOptions options;
     options.interrupt = &stopRequested();
     options.plan = part.plan();
     options.resume = part.resumeRecords();
     options.aovs = part.needsAovs();
     options.resumeFeatures = part.resumeFeatures();
-    const PeriodicWrite periodic = periodicWrites(invocation.settings, part);
+    const PeriodicWrite periodic = periodicWrites(invocation.settings, part, denoiser);
     options.checkpointSeconds = periodic.seconds;
     options.checkpoint = periodic.write;
     const ConvergenceSettings& convergence = invocation.convergence;
@@ -58,7 +60,18 @@ std::optional<ConvergenceReport> convergenceReport(const ConvergenceSettings& co
     return ConvergenceReport{convergence, stop, tracker.targetReached(), tracker.curve()};
 }
 
+// --denoise: the crop's denoised radiance; otherwise none.
+std::vector<glm::vec3> denoisedPixels(Denoiser* denoiser, const RenderPart& part,
+                                      const RenderRunResult& result) {
+    if (!denoiser) return {};
+    return denoiseWindow(*denoiser, part.plan().crop, result.records, result.features);
+}
+
 } // namespace
+
+std::unique_ptr<Denoiser> ProgramExecutor::makeDenoiser(const RenderSettings& settings) {
+    return std::make_unique<CpuDenoiser>(settings.threads);
+}
 
 int runRenderProgram(const std::string& program, const ProgramOptions& invocation,
                      ProgramExecutor& executor) {
@@ -72,6 +85,9 @@ int runRenderProgram(const std::string& program, const ProgramOptions& invocatio
     // The --reference image next: like the outputs, a wrong file costs a second.
     const std::optional<Image> reference = loadReferenceFor(invocation.convergence, settings);
     executor.start();
+    // Before the render: the preview shows the denoised image too.
+    const std::unique_ptr<Denoiser> denoiser =
+        settings.denoise ? executor.makeDenoiser(settings) : nullptr;
     SceneSetup setup = setUpScene(settings, program,
                                   [&](const Scene& scene) { executor.sceneLoaded(scene, part); });
     part.attachScene(setup);
@@ -80,12 +96,13 @@ int runRenderProgram(const std::string& program, const ProgramOptions& invocatio
                                invocation.convergence.targetError);
     RenderSettings renderSettings = settings;
     renderSettings.quiet = settings.quiet || printsPassLines(invocation);
-    const RenderRunOptions options = runOptions(program, invocation, tracker, part);
+    const RenderRunOptions options = runOptions(program, invocation, tracker, part, denoiser.get());
     const auto start = std::chrono::steady_clock::now();
     const RenderRunResult result = executor.render(setup, renderSettings, options);
     const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
+    const std::vector<glm::vec3> denoised = denoisedPixels(denoiser.get(), part, result);
     ScopedPhase writePhase("write");
-    part.writeResults(result.output, result.records, result.features, result.interrupted);
+    part.writeResults(result.output, result.records, result.features, denoised, result.interrupted);
     writePhase.end();
     executor.completeReport(report, result, seconds.count());
     report.convergence = convergenceReport(invocation.convergence, tracker, result.stop);
