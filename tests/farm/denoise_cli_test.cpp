@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "../support/child_process.h"
 #include "../support/test_directory.h"
@@ -67,13 +69,18 @@ protected:
 };
 
 TEST_F(DenoiseCli, DeviceAndReferenceDenoiseAlike) {
-    ASSERT_EQ(render(VKPT, "device.pfm", {"--denoise"}).exitCode, 0);
+    ASSERT_EQ(
+        render(VKPT, "device.pfm", {"--denoise", "--stats-json", path("stats.json")}).exitCode, 0);
     ASSERT_EQ(render(VKPT_REF, "reference.pfm", {"--denoise"}).exitCode, 0);
     ASSERT_EQ(render(VKPT_REF, "raw.pfm").exitCode, 0);
     expectSameImage("device.pfm", "reference.pfm", 0.99);
     // And the denoiser did something: the raw image differs.
     const Image raw = readPfm(path("raw.pfm")), denoised = readPfm(path("reference.pfm"));
     EXPECT_NE(raw.pixels, denoised.pixels);
+    // Its time is a phase of its own.
+    std::ifstream stats(path("stats.json"));
+    const std::string json((std::istreambuf_iterator<char>(stats)), {});
+    EXPECT_NE(json.find("\"name\": \"denoise\""), std::string::npos) << json;
 }
 
 TEST_F(DenoiseCli, MergedFarmRenderDenoisesLikeOneRun) {

@@ -82,10 +82,9 @@ std::vector<glm::vec3> radianceOf(const std::vector<gpu::DenoisePixel>& pixels) 
 }
 
 // Light that differs between any two pixels a tap apart (no two taps on one level line).
-const Scene kSmooth{[](auto, auto) { return glm::vec3(0.5f); },
-                    [](std::uint32_t x, std::uint32_t y) {
-                        return 1.0f + 0.01f * float(x) + 0.0037f * float(y);
-                    }};
+const Scene kSmooth{
+    [](auto, auto) { return glm::vec3(0.5f); },
+    [](std::uint32_t x, std::uint32_t y) { return 1.0f + 0.01f * float(x) + 0.0037f * float(y); }};
 
 TEST(DenoiseGate, LeavesAnImageWithoutNoiseAsItIs) {
     // Every variance 0: whatever the neighbours' means, none can be explained by noise. An
