@@ -60,6 +60,14 @@ std::optional<ConvergenceReport> convergenceReport(const ConvergenceSettings& co
     return ConvergenceReport{convergence, stop, tracker.targetReached(), tracker.curve()};
 }
 
+// --denoise: the denoiser (its pipelines on vkpt's device), in a phase of its own; otherwise
+// none.
+std::unique_ptr<Denoiser> makeDenoiser(const RenderSettings& settings, ProgramExecutor& executor) {
+    if (!settings.denoise) return nullptr;
+    ScopedPhase phase("denoise set-up");
+    return executor.makeDenoiser(settings);
+}
+
 // --denoise: the crop's denoised radiance; otherwise none.
 std::vector<glm::vec3> denoisedPixels(Denoiser* denoiser, const RenderPart& part,
                                       const RenderRunResult& result) {
@@ -86,8 +94,7 @@ int runRenderProgram(const std::string& program, const ProgramOptions& invocatio
     const std::optional<Image> reference = loadReferenceFor(invocation.convergence, settings);
     executor.start();
     // Before the render: the preview shows the denoised image too.
-    const std::unique_ptr<Denoiser> denoiser =
-        settings.denoise ? executor.makeDenoiser(settings) : nullptr;
+    const std::unique_ptr<Denoiser> denoiser = makeDenoiser(settings, executor);
     SceneSetup setup = setUpScene(settings, program,
                                   [&](const Scene& scene) { executor.sceneLoaded(scene, part); });
     part.attachScene(setup);

@@ -55,6 +55,8 @@ struct DenoiseParams {
 #define DENOISE_NORMAL_POWER 32.0f
 #define DENOISE_DEPTH_SIGMA 0.02f
 #define DENOISE_ALBEDO_SIGMA 0.25f
+// What the neighbourhood's variance weighs, in samples, against a pixel's own (denoise_filter.h).
+#define DENOISE_PRIOR_SAMPLES 16.0f
 
 // Dividing by a dark albedo channel would lift its noise beyond what the filter can take; a
 // pixel without a surface (albedo 0: sky, emitters seen directly) is filtered as it is.

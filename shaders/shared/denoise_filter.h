@@ -27,10 +27,12 @@ struct DenoiseSource {
 #define DENOISE_VALUE(i) denoiseValuesIn[i]
 #endif
 
-// The variance the centre's test uses: its own, or, where larger, the mean over its 3×3
-// neighbourhood leaving out the largest — a pixel whose few samples happened to agree (variance
-// 0 at 4 spp) still sees its surroundings' noise, while one firefly beside it (a variance far
-// above the rest) does not lift the bound of its neighbours and so is not spread into them.
+// The variance the centre's test uses: its own, or, where larger, its own blended with the mean
+// over its 3×3 neighbourhood leaving out the largest, the neighbourhood counting as
+// DENOISE_PRIOR_SAMPLES samples against the pixel's n. A pixel whose few samples happened to
+// agree (variance 0 at 4 spp) thus still sees its surroundings' noise, while 64 samples of
+// exactly 0 (a black emitter's back among lit floor) are believed; and one firefly beside the
+// pixel (a variance far above the rest) does not lift its bound and so is not spread into it.
 VKPT_FN float centreTestVariance(DENOISE_SOURCE_PARAM uint x, uint y, DenoiseParams params) {
     float total = 0.0f;
     float largest = 0.0f;
@@ -47,7 +49,10 @@ VKPT_FN float centreTestVariance(DENOISE_SOURCE_PARAM uint x, uint y, DenoisePar
         }
     }
     float own = DENOISE_VALUE(y * params.width + x).w;
-    return max(own, count > 1.0f ? (total - largest) / (count - 1.0f) : own);
+    float around = count > 1.0f ? (total - largest) / (count - 1.0f) : own;
+    float samples = float(DENOISE_PIXEL(y * params.width + x).sampleCount);
+    return max(own, (samples * own + DENOISE_PRIOR_SAMPLES * around) /
+                        (samples + DENOISE_PRIOR_SAMPLES));
 }
 
 // One à-trous iteration at pixel (x, y): the weighted mean of the 5×5 taps `step` apart (rgb)

@@ -1,8 +1,11 @@
 #!/usr/bin/env python3
 """denoise_trade.py — the figures of docs/trade/denoise.md from the PFMs denoise_trade.sh made:
 relMSE of the raw and the denoised image against the reference (the formula of
-host/image/error_metrics.h), N_eq = spp × relMSE_raw ÷ relMSE_denoised, relMSE × process CPU
-time; and PNG pictures (raw, denoised, reference, error maps) with only the standard library.
+host/image/error_metrics.h), less the reference's own noise where its variance is at hand
+(E[(x − r)²] = E[(x − μ)²] + Var r for an independent reference: the estimate of Var r is the
+variance of its mean luminance, taken for each channel), N_eq = spp × relMSE_raw ÷
+relMSE_denoised, relMSE × process CPU time; and PNG pictures (raw, denoised, reference, error
+maps) with only the standard library.
 
     denoise_trade.py table WORK SCENE SPPS...        one CSV line per spp on stdout
     denoise_trade.py pictures WORK SCENE SPP OUTDIR  raw, denoised, reference, error maps
@@ -47,14 +50,27 @@ def seconds(path):
     return float(wall), float(user) + float(system)
 
 
+def reference_noise(work, scene, reference):
+    """The reference's own contribution to every relMSE, or 0 without its variance."""
+    try:
+        _, _, variance = read_pfm(f"{work}/{scene}_ref_variance.pfm")
+    except OSError:
+        return 0.0
+    terms = [variance[i] / (reference[i] ** 2 + EPSILON) for i in range(len(reference))]
+    return sum(terms) / len(terms)
+
+
 def table(work, scene, spps):
     _, _, reference = read_pfm(f"{work}/{scene}_ref.pfm")
+    noise = reference_noise(work, scene, reference)
+    print(f"# {scene}: reference noise {noise:.3e} (subtracted)")
     print("scene,spp,relmse_raw,relmse_denoised,n_eq,cpu_raw,cpu_denoised,"
           "relmse_x_cpu_raw,relmse_x_cpu_denoised,denoise_wall")
     for spp in spps:
         _, _, raw = read_pfm(f"{work}/{scene}_{spp}_raw.pfm")
         _, _, denoised = read_pfm(f"{work}/{scene}_{spp}_denoised.pfm")
-        e_raw, e_den = rel_mse(raw, reference), rel_mse(denoised, reference)
+        e_raw = rel_mse(raw, reference) - noise
+        e_den = rel_mse(denoised, reference) - noise
         _, cpu_render = seconds(f"{work}/{scene}_{spp}_render.time")
         _, cpu_denoise = seconds(f"{work}/{scene}_{spp}_denoise.time")
         denoise_wall = float(open(f"{work}/{scene}_{spp}_denoise.seconds").read())

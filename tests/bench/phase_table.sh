@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # phase_table.sh — where a whole process's time goes, for vkpt, vkpt-ref and embree-ref side by
 # side on the same cores: the Cornell box (256², 64 spp, depth 8, PNG; again with --denoise, whose
-# "denoise" phase is the denoiser's time) and the generated
+# "denoise set-up" and "denoise" phases are the denoiser's time) and the generated
 # 1M-triangle room (1024², 1 spp, depth 2: a preview; EXR output, so with the AOVs). For each
 # program and scene: the whole process's wall and CPU seconds (/usr/bin/time), and each phase of
 # its --stats-json "phases" (load, prepare with BVH build and collapse, device, device set-up with
