@@ -88,10 +88,25 @@ VKPT_FN vec3 modulatedRadiance(DenoisePixel pixel, vec4 filtered) {
 // gateT = 3), so that a pixel whose own noise put it 2σ out still takes in its neighbours; the
 // cut-off is then sharp. With no noise at all (every variance 0) only an equal mean passes: the
 // filter leaves the image as it is.
-VKPT_FN float gateWeight(float centre, float neighbour, float variance, float gateT) {
-    float difference = centre - neighbour;
-    if (!(variance > 0.0f)) return difference == 0.0f ? 1.0f : 0.0f;
-    float ratio = (difference * difference) / (variance * gateT * gateT);
+//
+// The render keeps the variance of the luminance only; a neighbour of the same luminance and
+// another colour would pass a test of the luminance alone, and its bias would never shrink. Each
+// channel is tested too, its noise taken as the luminance's relative noise (σ_c / μ_c =
+// σ_L / μ_L, as for noise that scales the whole colour), μ_c the larger of the two values.
+VKPT_FN float gateWeight(vec3 centre, vec3 neighbour, float variance, float gateT) {
+    float centreLuminance = luminance(centre);
+    float neighbourLuminance = luminance(neighbour);
+    float difference = centreLuminance - neighbourLuminance;
+    float squared = difference * difference; // t² · variance, the largest over the tests
+    float scale = max(centreLuminance, neighbourLuminance);
+    for (int c = 0; c < 3; ++c) {
+        float largest = max(centre[c], neighbour[c]);
+        if (!(largest > 0.0f)) continue;
+        float channel = (centre[c] - neighbour[c]) * scale / largest;
+        squared = max(squared, channel * channel);
+    }
+    if (!(variance > 0.0f)) return squared == 0.0f ? 1.0f : 0.0f;
+    float ratio = squared / (variance * gateT * gateT);
     float falloff = max(1.0f - ratio * ratio, 0.0f);
     return falloff * falloff;
 }

@@ -68,7 +68,6 @@ VKPT_FN vec4 filterPixel(DENOISE_SOURCE_PARAM uint x, uint y, DenoiseParams para
 #else
     float centreVariance = centreTestVariance(x, y, params);
 #endif
-    float centreLuminance = luminance(vec3(centreValue.x, centreValue.y, centreValue.z));
     // The centre plus the weighted differences, so that with every tap rejected the output is
     // the centre's value bit for bit (Σ w·x / Σ w need not round back to x).
     vec3 centreRgb = vec3(centreValue.x, centreValue.y, centreValue.z);
@@ -86,9 +85,9 @@ VKPT_FN vec4 filterPixel(DENOISE_SOURCE_PARAM uint x, uint y, DenoiseParams para
             if (index != centreIndex) {
                 float distance = float(params.step) * sqrt(float(i * i + j * j));
                 float variance = centreVariance + min(value.w, centreVariance);
-                weight *= guideWeight(centre, DENOISE_PIXEL(index), distance, params) *
-                          gateWeight(centreLuminance, luminance(vec3(value.x, value.y, value.z)),
-                                     variance, params.gateT);
+                weight *=
+                    guideWeight(centre, DENOISE_PIXEL(index), distance, params) *
+                    gateWeight(centreRgb, vec3(value.x, value.y, value.z), variance, params.gateT);
             }
             differenceSum += weight * (vec3(value.x, value.y, value.z) - centreRgb);
             weightSum += weight;

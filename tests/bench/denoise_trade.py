@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """denoise_trade.py — the figures of docs/trade/denoise.md from the PFMs denoise_trade.sh made:
 relMSE of the raw and the denoised image against the reference (the formula of
-host/image/error_metrics.h), less the reference's own noise where its variance is at hand
-(E[(x − r)²] = E[(x − μ)²] + Var r for an independent reference: the estimate of Var r is the
-variance of its mean luminance, taken for each channel), N_eq = spp × relMSE_raw ÷
+host/image/error_metrics.h), less the reference's own noise (E[(x − r)²] = E[(x − μ)²] + Var r
+for an independent reference: the raw error is c/n + N, so the two highest sample counts give
+the reference's share N), N_eq = spp × relMSE_raw ÷
 relMSE_denoised, relMSE × process CPU time; and PNG pictures (raw, denoised, reference, error
 maps) with only the standard library.
 
@@ -50,19 +50,19 @@ def seconds(path):
     return float(wall), float(user) + float(system)
 
 
-def reference_noise(work, scene, reference):
-    """The reference's own contribution to every relMSE, or 0 without its variance."""
-    try:
-        _, _, variance = read_pfm(f"{work}/{scene}_ref_variance.pfm")
-    except OSError:
-        return 0.0
-    terms = [variance[i] / (reference[i] ** 2 + EPSILON) for i in range(len(reference))]
-    return sum(terms) / len(terms)
+def reference_noise(raw_errors):
+    """The reference's share N of every relMSE, from the raw errors at the two highest sample
+    counts n1 < n2 on the line e = c/n + N."""
+    (n1, e1), (n2, e2) = sorted(raw_errors.items())[-2:]
+    c = (e1 - e2) / (1.0 / n1 - 1.0 / n2)
+    return max(e2 - c / n2, 0.0)
 
 
 def table(work, scene, spps):
     _, _, reference = read_pfm(f"{work}/{scene}_ref.pfm")
-    noise = reference_noise(work, scene, reference)
+    raw_errors = {int(spp): rel_mse(read_pfm(f"{work}/{scene}_{spp}_raw.pfm")[2], reference)
+                  for spp in spps}
+    noise = reference_noise(raw_errors)
     print(f"# {scene}: reference noise {noise:.3e} (subtracted)")
     print("scene,spp,relmse_raw,relmse_denoised,n_eq,cpu_raw,cpu_denoised,"
           "relmse_x_cpu_raw,relmse_x_cpu_denoised,denoise_wall")
