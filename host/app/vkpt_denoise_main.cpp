@@ -14,6 +14,7 @@
 #include "app/output_checks.h"
 #include "app/run_program.h"
 #include "common/errors.h"
+#include "common/phase_log.h"
 #include "common/render_settings.h"
 #include "denoise/cpu_denoiser.h"
 #include "driver/denoised_output.h"
@@ -103,8 +104,10 @@ int run(const Invocation& invocation) {
     std::optional<GpuContext> context;
     std::unique_ptr<Denoiser> denoiser = makeDenoiser(invocation, context);
     const auto start = std::chrono::steady_clock::now();
+    const double startCpu = processCpuSeconds();
     state.denoised = denoiseWindow(*denoiser, state.window, state.pixels, state.features);
     const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
+    const double cpuSeconds = processCpuSeconds() - startCpu;
     if (outputHoldsState(invocation.outputPath))
         writeStateFile(state, invocation.outputPath);
     else
@@ -114,9 +117,10 @@ int run(const Invocation& invocation) {
         throw InternalError("the validation layer reported " +
                             std::to_string(context->validationMessageCount()) + " messages");
     if (!invocation.quiet)
-        std::printf("%s: %s (%ux%u) denoised on %s in %.3f s into %s\n", kProgram,
+        std::printf("%s: %s (%ux%u) denoised on %s in %.3f s (%.3f s of CPU) into %s\n", kProgram,
                     invocation.inputPath.c_str(), state.window.width(), state.window.height(),
-                    denoiser->where().c_str(), seconds.count(), invocation.outputPath.c_str());
+                    denoiser->where().c_str(), seconds.count(), cpuSeconds,
+                    invocation.outputPath.c_str());
     return 0;
 }
 

@@ -44,7 +44,7 @@ for entry in $scenes; do
         "$app/vkpt-merge" -q -o "$work/${name}_${spp}_raw.pfm" "$work/${name}_${spp}.exr"
         line="$(timed "$work/${name}_${spp}_denoise.time" "$app/vkpt-denoise" \
             "$work/${name}_${spp}.exr" -o "$work/${name}_${spp}_denoised.pfm")"
-        sed -E 's/.* in ([0-9.]+) s into .*/\1/' <<< "$line" > "$work/${name}_${spp}_denoise.seconds"
+        sed -E 's/.* in ([0-9.]+) s \(.*/\1/' <<< "$line" > "$work/${name}_${spp}_denoise.seconds"
     done
     # shellcheck disable=SC2086 # spps is a word list
     python3 tests/bench/denoise_trade.py table "$work" "$name" $spps
