@@ -8,6 +8,7 @@
 
 #include "app/output_checks.h"
 #include "common/errors.h"
+#include "driver/denoised_output.h"
 #include "image/image_file.h"
 #include "image/image_io.h"
 #include "state/atomic_write.h"
@@ -56,16 +57,19 @@ void writeDisplayImage(const Image& image, const RenderSettings& settings) {
 }
 
 RecordsWriter previewWriter(const RenderSettings& settings, const PixelRect& crop,
-                            RecordsWriter stateWriter) {
+                            RecordsWriter stateWriter, Denoiser* denoiser) {
     if (outputHoldsState(settings.outputPath)) return stateWriter;
-    return [&settings, crop](const std::vector<PixelRecord>& records,
-                             const std::vector<FeatureRecord>&) {
+    return [&settings, crop, denoiser](const std::vector<PixelRecord>& records,
+                                       const std::vector<FeatureRecord>& features) {
         RenderState state;
         state.identity.width = settings.width;
         state.identity.height = settings.height;
         state.window = crop;
         state.pixels = records;
-        writeDisplayImage(renderOutputOf(state).image, settings);
+        const Image raw = renderOutputOf(state).image;
+        if (!denoiser || features.size() != records.size()) return writeDisplayImage(raw, settings);
+        writeDisplayImage(
+            denoisedFrame(raw, crop, denoiseWindow(*denoiser, crop, records, features)), settings);
     };
 }
 
@@ -85,14 +89,14 @@ PeriodicWrite combinePeriodicWrites(PeriodicWrite checkpoint, PeriodicWrite prev
             }};
 }
 
-PeriodicWrite periodicWrites(const RenderSettings& settings, RenderPart& part) {
+PeriodicWrite periodicWrites(const RenderSettings& settings, RenderPart& part, Denoiser* denoiser) {
     PeriodicWrite checkpoint;
     if (part.checkpointSeconds() > 0.0)
         checkpoint = {part.checkpointSeconds(), part.checkpointWriter()};
     PeriodicWrite preview;
     if (settings.previewSeconds > 0.0)
         preview = {settings.previewSeconds,
-                   previewWriter(settings, part.plan().crop, part.checkpointWriter())};
+                   previewWriter(settings, part.plan().crop, part.checkpointWriter(), denoiser)};
     return combinePeriodicWrites(std::move(checkpoint), std::move(preview));
 }
 

@@ -10,6 +10,7 @@
 
 #include "app/render_part.h"
 #include "common/render_settings.h"
+#include "denoise/denoiser.h"
 #include "image/image.h"
 #include "state/render_state.h"
 
@@ -32,17 +33,20 @@ struct PeriodicWrite {
 };
 
 // The preview of a render of `width` × `height` whose records cover `crop`: the image so far
-// (0 outside the crop), or for an .exr output the state written by `stateWriter` (the .exr is
-// the image, its layers and the state in one file).
+// (0 outside the crop) — denoised by `denoiser` when one is given (--denoise) — or for an .exr
+// output the state written by `stateWriter` (the .exr is the image, its layers and the state in
+// one file).
 RecordsWriter previewWriter(const RenderSettings& settings, const PixelRect& crop,
-                            RecordsWriter stateWriter);
+                            RecordsWriter stateWriter, Denoiser* denoiser = nullptr);
 
 // The checkpoint and the preview through one hook: it is called every min of the two periods,
 // and runs each write whose own period has passed since it last ran (a checkpoint may come up to
 // one preview period late). Either may be absent (seconds 0); both absent: seconds 0.
 PeriodicWrite combinePeriodicWrites(PeriodicWrite checkpoint, PeriodicWrite preview);
 
-// The hook of a render part: its checkpoints (--checkpoint) and previews (--preview).
-PeriodicWrite periodicWrites(const RenderSettings& settings, RenderPart& part);
+// The hook of a render part: its checkpoints (--checkpoint) and previews (--preview, denoised
+// by `denoiser` when given).
+PeriodicWrite periodicWrites(const RenderSettings& settings, RenderPart& part,
+                             Denoiser* denoiser = nullptr);
 
 } // namespace vkpt

@@ -228,6 +228,12 @@ void addRunOptions(CommandLine& cl, RenderSettings& s) {
                 if (!(s.previewSeconds > 0.0))
                     throw InputError("option --preview: S must be positive");
             }});
+    cl.add({"denoise",
+            {},
+            "",
+            "write the denoised image (statistics-gated, consistent; an .exr keeps the raw "
+            "image in its raw layer)",
+            [&s](auto) { s.denoise = true; }});
     cl.add({"quiet", {'q'}, "", "no progress bar", [&s](auto) { s.quiet = true; }});
 }
 

@@ -7,6 +7,7 @@
 #include "app/live_preview.h"
 #include "app/output_checks.h"
 #include "common/errors.h"
+#include "driver/denoised_output.h"
 #include "image/image_file.h"
 #include "image/image_io.h"
 #include "prepare/scene_hash.h"
@@ -79,7 +80,7 @@ void RenderPart::checkResumable(const RenderState& resumed) {
 
 bool RenderPart::needsAovs() const {
     return outputHoldsState(settings_.outputPath) || farm_.checkpointSeconds > 0.0 ||
-           resumeFeatures() != nullptr;
+           settings_.denoise || resumeFeatures() != nullptr;
 }
 
 const std::vector<FeatureRecord>* RenderPart::resumeFeatures() const {
@@ -120,14 +121,20 @@ RenderPart::checkpointWriter() {
 }
 
 void RenderPart::writeResults(const RenderOutput& output, const std::vector<PixelRecord>& records,
-                              const std::vector<FeatureRecord>& features, bool stopped) {
+                              const std::vector<FeatureRecord>& features,
+                              const std::vector<glm::vec3>& denoised, bool stopped) {
     const std::string& path = settings_.outputPath;
     const RenderState state = stateOf(records, features);
     try {
-        if (outputHoldsState(path))
-            writeStateFile(state, path);
-        else
-            writeDisplayImage(output.image, settings_);
+        if (outputHoldsState(path)) {
+            RenderState shown = state;
+            shown.denoised = denoised;
+            writeStateFile(shown, path);
+        } else {
+            writeDisplayImage(denoised.empty() ? output.image
+                                               : denoisedFrame(output.image, plan_.crop, denoised),
+                              settings_);
+        }
         writeSampleCountHeatMap(output.sampleCounts, output.image.width, output.image.height,
                                 heatMapPathFor(path));
         if (!outputHoldsState(path) && (stopped || farm_.checkpointSeconds > 0.0))

@@ -28,7 +28,8 @@ public:
         return resumed_ ? &resumed_->pixels : nullptr;
     }
     // Whether the executor records AOVs: the state files this part writes by plan hold them
-    // (an .exr output, checkpoints), or the resumed state has them to continue. A state saved
+    // (an .exr output, checkpoints), the denoiser needs them (--denoise), or the resumed state
+    // has them to continue. A state saved
     // only because a render without them was stopped holds no AOV layers.
     bool needsAovs() const;
     // The resumed state's features (plan().crop, row-major), or null.
@@ -42,8 +43,11 @@ public:
     // output is not .exr but checkpoints were asked for or the render was stopped. `features`:
     // the executor's AOVs of the same pixels, or empty. A failed write saves the state to
     // rescuePathFor() first, then throws InputError naming both.
+    // `denoised`: the crop's denoised radiance (--denoise), or empty; the image written is then
+    // the denoised one, and an .exr output holds both.
     void writeResults(const RenderOutput& output, const std::vector<PixelRecord>& records,
-                      const std::vector<FeatureRecord>& features, bool stopped);
+                      const std::vector<FeatureRecord>& features,
+                      const std::vector<glm::vec3>& denoised, bool stopped);
 
 private:
     RenderState stateOf(const std::vector<PixelRecord>& records,

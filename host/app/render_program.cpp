@@ -13,6 +13,8 @@
 #include "app/render_part.h"
 #include "common/phase_log.h"
 #include "convergence/convergence.h"
+#include "denoise/cpu_denoiser.h"
+#include "driver/denoised_output.h"
 #include "image/image_io.h"
 
 namespace vkpt {
@@ -27,14 +29,14 @@ bool printsPassLines(const ProgramOptions& invocation) {
 }
 
 RenderRunOptions runOptions(const std::string& program, const ProgramOptions& invocation,
-                            ConvergenceTracker& tracker, RenderPart& part) {
+                            ConvergenceTracker& tracker, RenderPart& part, Denoiser* denoiser) {
     RenderRunOptions options;
     options.interrupt = &stopRequested();
     options.plan = part.plan();
     options.resume = part.resumeRecords();
     options.aovs = part.needsAovs();
     options.resumeFeatures = part.resumeFeatures();
-    const PeriodicWrite periodic = periodicWrites(invocation.settings, part);
+    const PeriodicWrite periodic = periodicWrites(invocation.settings, part, denoiser);
     options.checkpointSeconds = periodic.seconds;
     options.checkpoint = periodic.write;
     const ConvergenceSettings& convergence = invocation.convergence;
@@ -59,6 +61,21 @@ std::optional<ConvergenceReport> convergenceReport(const ConvergenceSettings& co
     return ConvergenceReport{convergence, stop, tracker.targetReached(), tracker.curve()};
 }
 
+// --denoise: the denoiser (its pipelines on vkpt's device), in a phase of its own; otherwise
+// none.
+std::unique_ptr<Denoiser> makeDenoiser(const RenderSettings& settings, ProgramExecutor& executor) {
+    if (!settings.denoise) return nullptr;
+    ScopedPhase phase("denoise set-up");
+    return executor.makeDenoiser(settings);
+}
+
+// --denoise: the crop's denoised radiance; otherwise none.
+std::vector<glm::vec3> denoisedPixels(Denoiser* denoiser, const RenderPart& part,
+                                      const RenderRunResult& result) {
+    if (!denoiser) return {};
+    return denoiseWindow(*denoiser, part.plan().crop, result.records, result.features);
+}
+
 // One image: the whole program without frames, one frame of a sequence with them (the executor
 // then started once, before the first).
 int renderImage(const std::string& program, const ProgramOptions& invocation,
@@ -74,6 +91,8 @@ int renderImage(const std::string& program, const ProgramOptions& invocation,
     // The --reference image next: like the outputs, a wrong file costs a second.
     const std::optional<Image> reference = loadReferenceFor(invocation.convergence, settings);
     if (startExecutor) executor.start();
+    // Before the render: the preview shows the denoised image too.
+    const std::unique_ptr<Denoiser> denoiser = makeDenoiser(settings, executor);
     SceneSetup setup = setUpScene(
         settings, program, [&](const Scene& scene) { executor.sceneLoaded(scene, part); }, source);
     part.attachScene(setup);
@@ -82,12 +101,13 @@ int renderImage(const std::string& program, const ProgramOptions& invocation,
                                invocation.convergence.targetError);
     RenderSettings renderSettings = settings;
     renderSettings.quiet = settings.quiet || printsPassLines(invocation);
-    const RenderRunOptions options = runOptions(program, invocation, tracker, part);
+    const RenderRunOptions options = runOptions(program, invocation, tracker, part, denoiser.get());
     const auto start = std::chrono::steady_clock::now();
     const RenderRunResult result = executor.render(setup, renderSettings, options);
     const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
+    const std::vector<glm::vec3> denoised = denoisedPixels(denoiser.get(), part, result);
     ScopedPhase writePhase("write");
-    part.writeResults(result.output, result.records, result.features, result.interrupted);
+    part.writeResults(result.output, result.records, result.features, denoised, result.interrupted);
     writePhase.end();
     executor.completeReport(report, result, seconds.count());
     report.convergence = convergenceReport(invocation.convergence, tracker, result.stop);
@@ -136,6 +156,10 @@ int renderFrames(const std::string& program, const ProgramOptions& invocation,
 }
 
 } // namespace
+
+std::unique_ptr<Denoiser> ProgramExecutor::makeDenoiser(const RenderSettings& settings) {
+    return std::make_unique<CpuDenoiser>(settings.threads);
+}
 
 int runRenderProgram(const std::string& program, const ProgramOptions& invocation,
                      ProgramExecutor& executor) {

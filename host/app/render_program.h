@@ -5,11 +5,13 @@
 // executor: the device it renders on and what it adds to the report.
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include "app/program_options.h"
 #include "app/render_report.h"
 #include "app/scene_setup.h"
+#include "denoise/denoiser.h"
 #include "driver/render_run.h"
 #include "scene/scene.h"
 
@@ -37,6 +39,9 @@ public:
     // After the report: warnings, and failures that must not lose the image (a validation
     // message on a validated run).
     virtual void afterReport(const RenderRunResult&) {}
+    // The denoiser of --denoise, on the executor's device (after start()): the CPU loop unless
+    // the executor has a device of its own.
+    virtual std::unique_ptr<Denoiser> makeDenoiser(const RenderSettings& settings);
 };
 
 // Renders as `invocation` says with `executor`; returns the exit code: 0, or 128 + the signal

@@ -16,6 +16,7 @@
 #include "gpu/context.h"
 #include "gpu/device_list.h"
 #include "gpu/vk_check.h"
+#include "render/device_denoiser.h"
 #include "render/early_pipelines.h"
 #include "render/wavefront.h"
 
@@ -135,6 +136,11 @@ public:
         report.stats = result_.stats;
         report.deviceMemoryBytes = context_->memoryStats().peakBytes;
         report.deviceRun = deviceRunReport(result_, seconds - result_.stats.seconds);
+    }
+
+    // The kernels on the render's device.
+    std::unique_ptr<Denoiser> makeDenoiser(const RenderSettings&) override {
+        return std::make_unique<DeviceDenoiser>(*context_);
     }
 
     void afterReport(const RenderRunResult&) override {

@@ -75,6 +75,9 @@ struct RenderSettings {
     bool quiet = false; // no progress bar
     // --preview S: the image so far written to the output path every S seconds (0: never).
     double previewSeconds = 0.0;
+    // --denoise: the written image (and the preview) is the denoised one; an .exr output keeps
+    // the raw mean in its raw.* layer beside the AOVs (docs/denoise.md).
+    bool denoise = false;
 };
 
 } // namespace vkpt

@@ -110,6 +110,10 @@ struct RenderState {
     std::vector<Region> regions;         // which samples of which pixels
     std::vector<PixelRecord> pixels;     // window.area(), row-major
     std::vector<FeatureRecord> features; // window.area(), or empty (no AOVs)
+    // The denoised radiance (window.area()), or empty. Written as the file's R, G, B, which a
+    // viewer shows, with the raw mean in the raw.* layer; never read back: a state that is
+    // merged or resumed is denoised again from its moments.
+    std::vector<glm::vec3> denoised;
 
     PixelRecord& at(std::uint32_t x, std::uint32_t y) {
         return pixels[std::size_t(y - window.y0) * window.width() + (x - window.x0)];

@@ -19,6 +19,8 @@ inline constexpr const char* kXyz[3] = {"X", "Y", "Z"};
 inline constexpr const char* kAlbedoPrefix = "albedo."; // + R, G, B
 inline constexpr const char* kNormalPrefix = "normal."; // + X, Y, Z
 inline constexpr const char* kDepth = "Z";
+// With a denoised image (RenderState::denoised) R, G, B hold it, and the raw mean moves here.
+inline constexpr const char* kRawPrefix = "raw."; // + R, G, B
 inline constexpr const char* kSampleCount = "sampleCount";
 inline constexpr const char* kVariance = "variance";
 

@@ -125,8 +125,12 @@ struct ReadChannels {
 
 void insertSlices(const Imf::Header& header, ReadChannels& r, Imf::FrameBuffer& frame,
                   const std::string& path) {
+    // A denoised state keeps its raw mean in raw.*; R, G, B are then the denoised image.
+    const bool denoised =
+        header.channels().findChannel(std::string(kRawPrefix) + kRgb[0]) != nullptr;
     for (int k = 0; k < 3; ++k) {
-        readInto(header, frame, kRgb[k], Imf::FLOAT, r.mean[k], path);
+        const std::string mean = denoised ? std::string(kRawPrefix) + kRgb[k] : kRgb[k];
+        readInto(header, frame, mean.c_str(), Imf::FLOAT, r.mean[k], path);
         readInto(header, frame, (std::string(kMeanLoPrefix) + kRgb[k]).c_str(), Imf::FLOAT,
                  r.meanLo[k], path);
     }

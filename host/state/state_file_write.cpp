@@ -36,9 +36,12 @@ void addImageChannels(const RenderState& state, Channels& c) {
     const std::size_t n = state.pixels.size();
     std::vector<float>* colour[3];
     std::vector<float>* colourLo[3];
+    std::vector<float>* shown[3];
+    const bool denoised = !state.denoised.empty();
     for (int k = 0; k < 3; ++k) {
-        colour[k] = &c.addFloat(kRgb[k], n);
+        colour[k] = &c.addFloat(denoised ? std::string(kRawPrefix) + kRgb[k] : kRgb[k], n);
         colourLo[k] = &c.addFloat(std::string(kMeanLoPrefix) + kRgb[k], n);
+        shown[k] = denoised ? &c.addFloat(kRgb[k], n) : nullptr;
     }
     auto& sampleCount = c.addFloat(kSampleCount, n);
     auto& variance = c.addFloat(kVariance, n);
@@ -48,6 +51,7 @@ void addImageChannels(const RenderState& state, Channels& c) {
             const SplitDouble s = splitDouble(p.mean[k]);
             (*colour[k])[i] = s.hi;
             (*colourLo[k])[i] = s.lo;
+            if (denoised) (*shown[k])[i] = state.denoised[i][k];
         }
         sampleCount[i] = float(p.count);
         variance[i] = saturated(varianceOfMean(p));
@@ -159,6 +163,8 @@ void writeStateFile(const RenderState& state, const std::string& path) {
                 "a state holds one record per window pixel");
     VKPT_ASSERT(state.features.empty() || state.features.size() == state.pixels.size(),
                 "features cover the window");
+    VKPT_ASSERT(state.denoised.empty() || state.denoised.size() == state.pixels.size(),
+                "the denoised image covers the window");
     Channels channels;
     addImageChannels(state, channels);
     addFeatureChannels(state, channels);

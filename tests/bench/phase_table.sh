@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # phase_table.sh — where a whole process's time goes, for vkpt, vkpt-ref and embree-ref side by
-# side on the same cores: the Cornell box (256², 64 spp, depth 8, PNG) and the generated
+# side on the same cores: the Cornell box (256², 64 spp, depth 8, PNG; again with --denoise, whose
+# "denoise set-up" and "denoise" phases are the denoiser's time) and the generated
 # 1M-triangle room (1024², 1 spp, depth 2: a preview; EXR output, so with the AOVs). For each
 # program and scene: the whole process's wall and CPU seconds (/usr/bin/time), and each phase of
 # its --stats-json "phases" (load, prepare with BVH build and collapse, device, device set-up with
@@ -8,14 +9,15 @@
 # column is the process's wall time as a multiple of embree-ref's.
 #
 #   bash tests/bench/phase_table.sh [BUILD_DIR]     (default build/release; built if missing)
-# RUNS, PROGRAMS ("vkpt vkpt-ref embree-ref"), SCENES ("cornell room") override the defaults.
+# RUNS, PROGRAMS ("vkpt vkpt-ref embree-ref"), SCENES ("cornell cornell-denoise room") override
+# the defaults.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 build="${1:-build/release}"
 [ -x "$build/host/app/vkpt" ] || bash ci/build.sh "$(basename "$build")"
 runs="${RUNS:-3}"
 programs="${PROGRAMS:-vkpt vkpt-ref embree-ref}"
-scenes="${SCENES:-cornell room}"
+scenes="${SCENES:-cornell cornell-denoise room}"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 source ci/lavapipe_env.sh
@@ -32,6 +34,8 @@ executable() {
 scene_args() {
     case "$1" in
     cornell) echo "scenes/cornell-box.gltf --spp 64 --res 256 256 --max-depth 8 -o $work/out.png" ;;
+    cornell-denoise)
+        echo "scenes/cornell-box.gltf --spp 64 --res 256 256 --max-depth 8 --denoise -o $work/out.png" ;;
     room)
         [ -f "$work/room.gltf" ] || "$build/tests/bench/write_room_scene" "$work/room.gltf" > /dev/null
         echo "$work/room.gltf --spp 1 --res 1024 1024 --max-depth 2 -o $work/out.exr" ;;

@@ -5,7 +5,9 @@
 #include <chrono>
 #include <thread>
 
+#include "../support/scratch_directory.h"
 #include "app/live_preview.h"
+#include "image/image_io.h"
 
 namespace vkpt {
 namespace {
@@ -41,6 +43,43 @@ TEST(PeriodicWrites, BothRunAtTheShorterPeriodEachWhenItsOwnIsDue) {
     EXPECT_EQ(checkpoints, 0);
     both.write({}, {}); // at once again: the preview's period has not passed
     EXPECT_EQ(previews, 1);
+}
+
+// A denoiser whose output is known: every pixel (0.25, 0.5, 0.75), and it counts its calls.
+class ConstantDenoiser final : public Denoiser {
+public:
+    std::vector<glm::vec3> denoise(const std::vector<gpu::DenoisePixel>& pixels, std::uint32_t,
+                                   std::uint32_t, const DenoiseSettings&) override {
+        ++calls;
+        return std::vector<glm::vec3>(pixels.size(), glm::vec3(0.25f, 0.5f, 0.75f));
+    }
+    std::string where() const override { return "test"; }
+    int calls = 0;
+};
+
+TEST(PreviewWriter, ShowsTheDenoisedImageUnderDenoise) {
+    // A 4×2 frame whose crop is its right half: the preview is the denoiser's image inside the
+    // crop and 0 outside it; without AOVs (none recorded yet) it is the raw image.
+    RenderSettings settings;
+    settings.width = 4;
+    settings.height = 2;
+    settings.outputPath = test::scratchPath("preview.pfm");
+    const PixelRect crop{2, 0, 4, 2};
+    PixelRecord record;
+    record.mean = glm::dvec3(1.0);
+    record.count = 4;
+    const std::vector<PixelRecord> records(crop.area(), record);
+    ConstantDenoiser denoiser;
+    const RecordsWriter preview = previewWriter(settings, crop, {}, &denoiser);
+    preview(records, std::vector<FeatureRecord>(crop.area()));
+    EXPECT_EQ(denoiser.calls, 1);
+    Image shown = readPfm(settings.outputPath);
+    EXPECT_EQ(shown.at(0, 0), glm::vec3(0.0f));
+    EXPECT_EQ(shown.at(3, 1), glm::vec3(0.25f, 0.5f, 0.75f));
+    preview(records, {});
+    EXPECT_EQ(denoiser.calls, 1);
+    shown = readPfm(settings.outputPath);
+    EXPECT_EQ(shown.at(3, 1), glm::vec3(1.0f));
 }
 
 } // namespace

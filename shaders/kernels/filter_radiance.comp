@@ -1,0 +1,29 @@
+// filter_radiance.comp — one à-trous iteration of the denoiser, one invocation per pixel
+// (shared/denoise_filter.h): reads the iterate, writes the next; the last iteration multiplies
+// the albedo back and writes the denoised radiance.
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "lib/buffers.glsl"
+#include "shared/denoise.h"
+
+layout(local_size_x = WORKGROUP_SIZE) in;
+layout(push_constant) uniform Params {
+    DenoiseParams params;
+};
+
+VKPT_READONLY_BUFFER(0, DenoisePixel, denoisePixels)
+VKPT_READONLY_BUFFER(1, vec4, denoiseValuesIn)
+VKPT_WRITEONLY_BUFFER(2, vec4, denoiseValuesOut)
+
+#include "shared/denoise_filter.h"
+
+void main() {
+    uint index = gl_GlobalInvocationID.x;
+    if (index >= params.width * params.height) return;
+    uint x = index % params.width;
+    uint y = index / params.width;
+    vec4 filtered = filterPixel(x, y, params);
+    if (params.modulate != 0u)
+        filtered = vec4(modulatedRadiance(denoisePixels[index], filtered), filtered.w);
+    denoiseValuesOut[index] = filtered;
+}

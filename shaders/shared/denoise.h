@@ -1,0 +1,146 @@
+// denoise.h — the statistics-gated denoiser, one definition for vkpt's kernels
+// (demodulate_radiance, filter_radiance) and vkpt-ref's loop (host/denoise): per-pixel input,
+// albedo demodulation, one à-trous step of a cross-bilateral filter guided by the AOVs and gated
+// by a t-test on the pixels' means, and the albedo multiplied back (docs/denoise.md).
+//
+// The filter is the edge-avoiding à-trous wavelet transform (Dammertz et al., "Edge-Avoiding
+// À-Trous Wavelet Transform for fast Global Illumination Filtering", HPG 2010): a 5×5 B3-spline
+// kernel whose taps lie `step` pixels apart, step = 1, 2, 4, ..., each tap weighted by how much
+// its guides (normal, depth, albedo) resemble the centre's, with the variance carried through
+// the iterations as in SVGF (Schied et al., HPG 2017, §4.2: Var(Σ wᵢxᵢ / Σ wᵢ) = Σ wᵢ²Var(xᵢ) /
+// (Σ wᵢ)²). What makes it consistent is the gate after Sakai et al., "StatMC: Statistical Monte
+// Carlo Denoising" (2024): a tap whose mean differs from the centre's by more than the noise of
+// the two means can explain (Welch's t = |Δ| / √(Var p + Var q)) takes no part. As the samples
+// grow the variances of the means go to 0, t grows without bound for every neighbour whose
+// expectation differs, and the output converges to the pixel's own mean — never to a blur.
+#ifndef VKPT_DENOISE_H
+#define VKPT_DENOISE_H
+
+#include "host_device.h"
+#include "sampling.h"
+
+#ifdef __cplusplus
+namespace vkpt::gpu {
+#endif
+
+// One pixel as the denoiser reads it: the estimate and its noise, and the AOVs that guide the
+// filter. A plain struct so that more per-pixel statistics (e.g. the means of two half sample
+// sets) can join it without changing the filter's shape.
+struct DenoisePixel {
+    vec3 radiance;           // mean radiance
+    float luminanceVariance; // variance of the mean luminance, M2 / (n − 1) / n
+    vec3 albedo;             // mean albedo, 0 where every sample missed
+    float depth;             // camera-space z of the nearest hit; +inf where none
+    vec3 normal;             // mean shading normal; 0 where every sample missed
+    uint sampleCount;        // samples behind the mean
+};
+
+// The filter's settings (push constants of both kernels).
+struct DenoiseParams {
+    uint width;
+    uint height;
+    uint step;     // the à-trous step of this iteration: 1, 2, 4, ...
+    uint modulate; // 1 on the last iteration: write radiance (albedo multiplied back)
+    // A tap whose t statistic reaches gateT takes no part; below it its weight falls smoothly
+    // as (1 − (t/gateT)⁴)², so that the output does not jump where a tap crosses the bound.
+    float gateT;
+    float normalPower; // normal weight max(0, cos θ)^normalPower
+    float depthSigma;  // depth weight exp(−|Δz| / (depthSigma · z · pixel distance))
+    float albedoSigma; // albedo weight exp(−|Δa|² / albedoSigma²)
+};
+
+// The defaults, measured in docs/trade/denoise.md.
+#define DENOISE_ITERATIONS 4u
+#define DENOISE_GATE_T 3.0f
+#define DENOISE_NORMAL_POWER 32.0f
+#define DENOISE_DEPTH_SIGMA 0.02f
+#define DENOISE_ALBEDO_SIGMA 0.25f
+// What the neighbourhood's variance weighs, in samples, against a pixel's own (denoise_filter.h).
+#define DENOISE_PRIOR_SAMPLES 16.0f
+
+// Dividing by a dark albedo channel would lift its noise beyond what the filter can take; a
+// pixel without a surface (albedo 0: sky, emitters seen directly) is filtered as it is.
+#define DENOISE_ALBEDO_FLOOR 0.02f
+#define DENOISE_NO_ALBEDO 1e-3f
+
+VKPT_FN vec3 demodulationAlbedo(vec3 albedo) {
+    if (max(albedo.x, max(albedo.y, albedo.z)) < DENOISE_NO_ALBEDO) return vec3(1.0f);
+    return max(albedo, vec3(DENOISE_ALBEDO_FLOOR));
+}
+
+// The albedo-demodulated radiance (rgb) and the variance of its mean luminance (w): the
+// luminance's variance scaled by the square of the factor demodulation scaled the luminance by.
+VKPT_FN vec4 demodulatedPixel(DenoisePixel pixel) {
+    vec3 albedo = demodulationAlbedo(pixel.albedo);
+    vec3 demodulated = pixel.radiance / albedo;
+    float before = luminance(pixel.radiance);
+    float scale = before > 0.0f ? luminance(demodulated) / before : 1.0f / luminance(albedo);
+    return vec4(demodulated, pixel.luminanceVariance * scale * scale);
+}
+
+// The final iterate with the albedo multiplied back.
+VKPT_FN vec3 modulatedRadiance(DenoisePixel pixel, vec4 filtered) {
+    return vec3(filtered.x, filtered.y, filtered.z) * demodulationAlbedo(pixel.albedo);
+}
+
+// The gate: 1 for equal means, falling to 0 at t = gateT. The quartic keeps the weight of a
+// neighbour of the same mean near 1 over the usual range of its t (0.98 at t = 1, 0.64 at 2 for
+// gateT = 3), so that a pixel whose own noise put it 2σ out still takes in its neighbours; the
+// cut-off is then sharp. With no noise at all (every variance 0) only an equal mean passes: the
+// filter leaves the image as it is.
+//
+// The render keeps the variance of the luminance only; a neighbour of the same luminance and
+// another colour would pass a test of the luminance alone, and its bias would never shrink. Each
+// channel is tested too, its noise taken as the luminance's relative noise (σ_c / μ_c =
+// σ_L / μ_L, as for noise that scales the whole colour), μ_c the larger of the two values.
+VKPT_FN float gateWeight(vec3 centre, vec3 neighbour, float variance, float gateT) {
+    float centreLuminance = luminance(centre);
+    float neighbourLuminance = luminance(neighbour);
+    float difference = centreLuminance - neighbourLuminance;
+    float squared = difference * difference; // t² · variance, the largest over the tests
+    float scale = max(centreLuminance, neighbourLuminance);
+    for (int c = 0; c < 3; ++c) {
+        float largest = max(centre[c], neighbour[c]);
+        if (!(largest > 0.0f)) continue;
+        float channel = (centre[c] - neighbour[c]) * scale / largest;
+        squared = max(squared, channel * channel);
+    }
+    if (!(variance > 0.0f)) return squared == 0.0f ? 1.0f : 0.0f;
+    float ratio = squared / (variance * gateT * gateT);
+    float falloff = max(1.0f - ratio * ratio, 0.0f);
+    return falloff * falloff;
+}
+
+VKPT_FN bool hasSurface(DenoisePixel pixel) {
+    return !isinf(pixel.depth);
+}
+
+// How much q's surface resembles p's: normals, depth (relative, per pixel of distance) and
+// albedo. A surface and no surface never mix; two misses do.
+VKPT_FN float guideWeight(DenoisePixel p, DenoisePixel q, float distance, DenoiseParams params) {
+    if (hasSurface(p) != hasSurface(q)) return 0.0f;
+    if (!hasSurface(p)) return 1.0f;
+    float lengths = length(p.normal) * length(q.normal);
+    float cosine = lengths > 0.0f ? dot(p.normal, q.normal) / lengths : 1.0f;
+    float normalWeight = pow(max(cosine, 0.0f), params.normalPower);
+    float depthScale = params.depthSigma * max(abs(p.depth), 1e-6f) * distance;
+    float depthWeight = exp(-abs(p.depth - q.depth) / depthScale);
+    vec3 albedoDifference = p.albedo - q.albedo;
+    float albedoWeight =
+        exp(-dot(albedoDifference, albedoDifference) / (params.albedoSigma * params.albedoSigma));
+    return normalWeight * depthWeight * albedoWeight;
+}
+
+// The B3-spline's taps 1/16, 1/4, 3/8, 1/4, 1/16 at offsets −2..2.
+VKPT_FN float atrousTap(int offset) {
+    int distance = abs(offset);
+    return distance == 0 ? 0.375f : (distance == 1 ? 0.25f : 0.0625f);
+}
+
+#ifdef __cplusplus
+static_assert(sizeof(DenoisePixel) == 48 && offsetof(DenoisePixel, normal) == 32);
+static_assert(sizeof(DenoiseParams) == 32);
+} // namespace vkpt::gpu
+#endif
+
+#endif // VKPT_DENOISE_H
