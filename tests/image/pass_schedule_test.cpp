@@ -71,7 +71,7 @@ TEST(PassSchedule, CalibrationPointsDoubleFromHalfTheMinimum) {
         EXPECT_EQ(isCalibrationPoint(done, 32),
                   done == 32 || done == 64 || done == 128 || done == 256 || done == 512)
             << done;
-    EXPECT_FALSE(isCalibrationPoint(64, 0)); // no adaptive sampling
+    EXPECT_FALSE(isCalibrationPoint(64, 0));                       // no adaptive sampling
     EXPECT_EQ(nextCalibrationPoint(0xffffff00u, 32), 0xffffffffu); // saturates, never wraps
     EXPECT_EQ(quantizedVarianceScale(0.5 + 1.0 / 200), 0.5f);
 }
