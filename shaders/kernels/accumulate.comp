@@ -2,8 +2,8 @@
 // the pixel's k samples in sample order to its running estimate (non-finite ones discarded and
 // counted, the rest clamped when --clamp asks, shared/sample_guard.h), applies the adaptive
 // stopping rule after every sample that completes a batch (exactly where the reference does),
-// keeps the means of the two halves of the samples (even and odd sample indices),
-// and appends the pixels that go on to the next pass's active list. When the render records
+// keeps the means of the two halves of the samples (even and odd sample indices), and appends
+// the pixels that go on to the next pass's active list. When the render records
 // AOVs, each sample's features join the pixel's in the same order and up to the same sample.
 #version 460
 #extension GL_GOOGLE_include_directive : require
@@ -99,8 +99,8 @@ void main() {
     uint activeIndex = flatInvocationIndex();
     uint pixelIndex = 0u;
     uint nonFinite = 0u;
-    bool goesOn =
-        activeIndex < passParams.chunkPixels && accumulatePixel(activeIndex, pixelIndex, nonFinite);
+    bool goesOn = activeIndex < passParams.chunkPixels &&
+                  accumulatePixel(activeIndex, pixelIndex, nonFinite);
     addToCounter64InSubgroup(COUNTER_NON_FINITE, nonFinite);
     uint next = appendToQueue(COUNTER_ACTIVE_NEXT, goesOn);
     if (goesOn) activePixels[(passParams.activeParity ^ 1u) * frame.pixelCount + next] = pixelIndex;
