@@ -27,7 +27,7 @@ void addConvergenceOptions(CommandLine& cl, ConvergenceSettings& s) {
     cl.add({"target-error",
             {},
             "E",
-            "stop once relMSE <= E (against --reference, else estimated from the variances)",
+            "stop once relMSE <= E (against --reference, else estimated from the two halves)",
             [&s](auto v) { s.targetError = parsePositive("target-error", v[0]); }});
     cl.add({"time-limit",
             {},

@@ -194,7 +194,8 @@ void addRunOptions(CommandLine& cl, RenderSettings& s) {
     cl.add({"adaptive",
             {'a'},
             "BATCH TOL",
-            "stop a pixel when 1.96 sigma/sqrt(n) <= TOL mean, tested every BATCH samples",
+            "stop a pixel when its 95% half-width (1.96 sigma/sqrt(n), calibrated by the two "
+            "halves) <= TOL mean, tested every BATCH samples",
             [&s](auto v) {
                 s.adaptive.enabled = true;
                 s.adaptive.batchSize = parseUnsigned("adaptive", v[0], 1);
@@ -205,6 +206,17 @@ void addRunOptions(CommandLine& cl, RenderSettings& s) {
             "N",
             "adaptive: no pixel stops before N samples (default 64)",
             [&s](auto v) { s.adaptive.minSamples = parseUnsigned("adaptive-min", v[0], 2); }});
+    cl.add({"adaptive-error",
+            {},
+            "KIND",
+            "adaptive: a pixel's error: halves (sigma^2/n calibrated by the image's two halves, "
+            "default) or variance (sigma^2/n alone: tiles of --crop stop as one run)",
+            [&s](auto v) {
+                if (v[0] != "halves" && v[0] != "variance")
+                    throw InputError("option --adaptive-error: '" + v[0] +
+                                     "' is neither halves nor variance");
+                s.adaptive.calibrated = v[0] == "halves";
+            }});
     cl.add({"clamp",
             {},
             "X",

@@ -34,6 +34,10 @@ struct AdaptiveSettings {
     std::uint32_t batchSize = 32;  // test convergence every batchSize samples (CS184's default)
     float tolerance = 0.05f;       // relative half-width of the 95 % interval
     std::uint32_t minSamples = 64; // no pixel stops before this many samples
+    // The per-pixel error: σ²/n calibrated by the rendered pixels' two halves (true), or σ²/n
+    // alone (false: it overstates the Sobol sampler's error, but a pixel's stop then depends on
+    // its own samples only, so tiles of a crop-split render stop exactly as one run's pixels).
+    bool calibrated = true;
 };
 
 struct RenderSettings {

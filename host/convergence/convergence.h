@@ -30,10 +30,12 @@ struct ConvergenceSettings {
     bool needsPixels() const { return !referencePath.empty() || targetError > 0.0; }
 };
 
-// Without a reference, --target-error trusts the variance estimate only once the pixels still
-// sampling have this many samples (adaptive sampling's default minimum, for the same reason):
-// before the rare bright paths of a pixel have shown up, its variance looks small, and on the
-// Cornell box the estimate was 1/1.7 of the true relMSE at 18 spp but 1/1.1 at 64 spp.
+// Without a reference, --target-error trusts the estimate (the two halves' difference,
+// image/error_metrics.h) only once the pixels still sampling have this many samples (adaptive
+// sampling's default minimum, for the same reason): before the rare bright paths of a pixel have
+// shown up its error looks small, and a firefly divides itself out of the relative error. On the
+// Cornell box the estimate is 0.5 of the true relMSE at 16 spp but 1.1 at 64 spp
+// (tests/render/error_estimate_test.cpp).
 inline constexpr std::uint32_t kMinSamplesForEstimate = 64;
 
 struct ConvergencePoint {

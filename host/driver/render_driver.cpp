@@ -5,6 +5,7 @@
 
 #include "common/phase_log.h"
 #include "driver/batch_policy.h"
+#include "image/error_metrics.h"
 
 namespace vkpt {
 
@@ -26,6 +27,9 @@ public:
         // A resumed render may have nothing left to do.
         const bool done =
             executor_.activePixels() == 0 || executor_.samplesDone() >= executor_.budget();
+        // A resumed adaptive render calibrates on what it resumes (after the first point).
+        const std::uint32_t first = executor_.firstCalibration();
+        if (!done && first > 0 && executor_.samplesDone() >= first) calibrate();
         const RenderStop stop = done ? RenderStop::Budget : runBatches();
         executor_.finish();
         RenderRunResult result;
@@ -65,6 +69,8 @@ private:
         const std::uint64_t active = executor_.activePixels();
         std::uint32_t k = executor_.batchWanted(executor_.budget() - done, secondsPerPixelSample_);
         if (options_.readPixelsAfterPass) k = samplesForGeometricGrowth(k, done);
+        if (const std::uint32_t first = executor_.firstCalibration(); first > 0)
+            k = std::min(k, nextCalibrationPoint(done, first) - done);
         if (options_.checkpoint && options_.checkpointSeconds > 0.0) {
             const double sinceCheckpoint = secondsBetween(lastCheckpoint_, Clock::now());
             k = samplesWithinTime(k, active, secondsPerPixelSample_,
@@ -83,7 +89,17 @@ private:
         if (samples > 0)
             secondsPerPixelSample_ = secondsBetween(begin, Clock::now()) / double(samples);
         ++batches_;
-        return executor_.samplesDone() < executor_.budget() && executor_.activePixels() > 0;
+        const bool more =
+            executor_.samplesDone() < executor_.budget() && executor_.activePixels() > 0;
+        if (more && isCalibrationPoint(executor_.samplesDone(), executor_.firstCalibration()))
+            calibrate();
+        return more;
+    }
+
+    // Adaptive sampling's variance scale from the image's two halves so far (batch_policy.h).
+    void calibrate() {
+        const RenderSnapshot pixels = executor_.snapshot();
+        executor_.setVarianceScale(quantizedVarianceScale(varianceScaleFromHalves(pixels.output)));
     }
 
     // One look at the pixels when the observer wants the image; its time and the observer's

@@ -39,6 +39,12 @@ public:
     virtual std::vector<FeatureRecord> features() = 0;
     // The loop is over (the executor's progress display ends here).
     virtual void finish() {}
+    // Adaptive sampling's first calibration point (batch_policy.h, firstCalibrationPoint), 0 for a
+    // render without adaptive sampling.
+    virtual std::uint32_t firstCalibration() const { return 0; }
+    // The variance scale the adaptive stopping rule applies from the next batch on
+    // (shared/adaptive.h); 1 until the driver sets it.
+    virtual void setVarianceScale(float) {}
 };
 
 } // namespace vkpt

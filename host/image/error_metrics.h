@@ -25,18 +25,34 @@ struct ReferenceError {
 };
 ReferenceError compareWithReference(const Image& image, const Image& reference);
 
-// From each pixel's Welford statistics of the per-sample luminance L (n samples, mean μ,
-// M2): the variance of the pixel's mean s² = M2 / (n − 1) / n, and then
-//   meanHalfWidth   = 1/N · Σ 1.96 · s          (the adaptive sampler's 95 % half-width)
-//   estimatedRelMse = 1/N · Σ s² / (μ² + ε)     (relMSE's expectation, were the image the
-//                                                  luminance and the estimator unbiased)
-// Both are NaN while any pixel has fewer than 2 samples (no variance yet). minSamples is the
-// fewest samples any pixel has.
+// The error of a render without a reference, from its two halves (docs/integrator.md, "Two
+// halves"). The halves A and B of a pixel (nA and nB finite samples of n) are independent
+// estimates, so E[(A − B)²] = Var A + Var B, and w = nA·nB/n² turns that into the variance of
+// the whole mean, Var = (A − B)²·w (1/4 for equal halves) — whatever the correlation of the
+// samples within a half, which the per-sample variance σ²/n ignores (with the Sobol sampler it
+// overstates the error 1.4–1.9×). Over the N pixels and 3 channels c, x the whole mean:
+//   estimatedRelMse = 1/(3N) · Σ w·(A − B)² / (x² + ε)       (relMSE's expectation)
+// One pixel's difference has one degree of freedom, so a pixel's own error is the per-sample
+// variance calibrated by the image: with s² = M2 / (n − 1) / n of the per-sample luminance L
+// (μ its mean),
+//   varianceScale   = Σ w·(L(A) − L(B))² / (μ² + ε)  ÷  Σ s² / (μ² + ε)
+//   meanHalfWidth   = 1/N · Σ 1.96 · √(varianceScale · s²)   (the adaptive sampler's half-width)
+// Without halves (a producer that keeps none) or while a half of some pixel is empty, the
+// per-sample variance stands alone: estimatedRelMse = 1/N · Σ s² / (μ² + ε), varianceScale 1.
+// Everything is NaN while any pixel has fewer than 2 samples. minSamples is the fewest samples
+// any pixel has.
 struct VarianceEstimate {
     double meanHalfWidth = 0.0;
     double estimatedRelMse = 0.0;
+    double varianceScale = 1.0;
     std::uint32_t minSamples = 0;
 };
 VarianceEstimate estimateFromVariance(const RenderOutput& output);
+
+// The image-wide varianceScale above, clamped to [kMinVarianceScale, kMaxVarianceScale] (a
+// guard against an image too small or too uniform to measure it); 1 without halves.
+inline constexpr double kMinVarianceScale = 0.25;
+inline constexpr double kMaxVarianceScale = 4.0;
+double varianceScaleFromHalves(const RenderOutput& output);
 
 } // namespace vkpt

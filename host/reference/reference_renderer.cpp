@@ -16,6 +16,7 @@
 #include "common/errors.h"
 #include "common/progress.h"
 #include "common/sampler_setup.h"
+#include "driver/batch_policy.h"
 #include "driver/render_driver.h"
 #include "reference/integrators.h"
 #include "reference/pixel_accumulator.h"
@@ -66,6 +67,7 @@ struct RenderJob {
     std::atomic<std::uint32_t> nextTile{0};
     std::mutex statsMutex;
     RenderStats& stats;
+    float varianceScale = 1.0f; // of the adaptive stopping rule (shared/adaptive.h)
 };
 
 struct ThreadCounters {
@@ -94,17 +96,18 @@ void renderPixel(RenderJob& job, IntegratorContext& context, std::uint32_t x, st
         if (job.aovs) gpu::addSampleFeatures(work.features, features);
         if (gpu::isFiniteSample(radiance)) {
             radiance = gpu::clampSample(radiance, settings.clamp);
-            accumulator.add(radiance, gpu::luminance(radiance));
+            accumulator.add(radiance, gpu::luminance(radiance), gpu::sampleHalf(s));
         } else {
             ++counters.nonFinite; // discarded: one NaN would poison the pixel for good
         }
         ++work.taken;
         ++counters.samples;
         bool batchDone = (s + 1) % adaptive.batchSize == 0;
-        work.converged = adaptive.enabled && batchDone &&
-                         gpu::isPixelConverged(accumulator.count, float(accumulator.luminanceMean),
-                                               float(accumulator.luminanceM2), adaptive.minSamples,
-                                               adaptive.tolerance, job.darkFloor);
+        work.converged =
+            adaptive.enabled && batchDone &&
+            gpu::isPixelConverged(accumulator.count, float(accumulator.luminanceMean),
+                                  float(accumulator.luminanceM2), adaptive.minSamples,
+                                  adaptive.tolerance, job.darkFloor, job.varianceScale);
     }
 }
 
@@ -167,6 +170,10 @@ PixelWork workFromRecord(const PixelRecord& r) {
     w.accumulator.luminanceMean = r.luminanceMean;
     w.accumulator.luminanceM2 = r.luminanceM2;
     w.accumulator.count = r.count;
+    for (int h = 0; h < 2; ++h) {
+        w.accumulator.halfSums[h] = r.halves[h].mean * double(r.halves[h].count);
+        w.accumulator.halfCounts[h] = r.halves[h].count;
+    }
     w.taken = r.samplesTaken;
     w.converged = r.converged;
     return w;
@@ -179,6 +186,11 @@ PixelRecord recordFromWork(const PixelWork& w) {
     r.luminanceMean = a.luminanceMean;
     r.luminanceM2 = a.luminanceM2;
     r.count = a.count;
+    for (int h = 0; h < 2; ++h) {
+        r.halves[h].count = a.halfCounts[h];
+        r.halves[h].mean =
+            a.halfCounts[h] ? a.halfSums[h] / double(a.halfCounts[h]) : glm::dvec3(0.0);
+    }
     r.samplesTaken = w.taken;
     r.converged = w.converged;
     return r;
@@ -277,6 +289,14 @@ public:
     std::vector<FeatureRecord> features() override { return featuresOf(job_.pixels, job_.aovs); }
 
     void finish() override { job_.progress.finish(); }
+
+    std::uint32_t firstCalibration() const override {
+        const AdaptiveSettings& adaptive = job_.settings.adaptive;
+        return adaptive.enabled && adaptive.calibrated ? firstCalibrationPoint(adaptive.minSamples)
+                                                       : 0;
+    }
+
+    void setVarianceScale(float scale) override { job_.varianceScale = scale; }
 
 private:
     RenderJob& job_;

@@ -26,6 +26,10 @@ RenderOutput makeRenderOutput(std::span<const gpu::PixelState> pixels, std::uint
     output.sampleCounts.resize(pixels.size());
     output.luminanceMean.resize(pixels.size());
     output.luminanceM2.resize(pixels.size());
+    for (int h = 0; h < 2; ++h) {
+        output.halves[h] = Image(width, height);
+        output.halfCounts[h].resize(pixels.size());
+    }
     for (std::size_t i = 0; i < pixels.size(); ++i) {
         const gpu::PixelState& p = pixels[i];
         output.image.pixels[i] =
@@ -33,6 +37,10 @@ RenderOutput makeRenderOutput(std::span<const gpu::PixelState> pixels, std::uint
         output.sampleCounts[i] = p.count;
         output.luminanceMean[i] = p.luminanceMean;
         output.luminanceM2[i] = p.luminanceM2;
+        output.halves[0].pixels[i] = p.evenMean;
+        output.halves[1].pixels[i] = p.oddMean;
+        output.halfCounts[0][i] = p.evenCount;
+        output.halfCounts[1][i] = p.oddCount;
     }
     return output;
 }
@@ -45,6 +53,8 @@ PixelRecord recordFromPixelState(const gpu::PixelState& p) {
     r.count = p.count;
     r.samplesTaken = p.samplesTaken;
     r.converged = p.converged != 0;
+    r.halves[0] = {glm::dvec3(p.evenMean), p.evenCount};
+    r.halves[1] = {glm::dvec3(p.oddMean), p.oddCount};
     return r;
 }
 
@@ -58,6 +68,10 @@ gpu::PixelState pixelStateFromRecord(const PixelRecord& r) {
     p.luminanceMean = float(r.luminanceMean);
     p.luminanceM2 = float(r.luminanceM2);
     p.converged = r.converged ? 1u : 0u;
+    p.evenMean = glm::vec3(r.halves[0].mean);
+    p.evenCount = r.halves[0].count;
+    p.oddMean = glm::vec3(r.halves[1].mean);
+    p.oddCount = r.halves[1].count;
     return p;
 }
 

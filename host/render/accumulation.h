@@ -15,7 +15,8 @@ namespace vkpt {
 
 class Buffer;
 
-// Mean radiance (Kahan sum over count, in double), sample counts and luminance statistics.
+// Mean radiance (Kahan sum over count, in double), sample counts, luminance statistics and the
+// two halves' means and counts.
 RenderOutput makeRenderOutput(std::span<const gpu::PixelState> pixels, std::uint32_t width,
                               std::uint32_t height);
 

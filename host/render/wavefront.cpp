@@ -14,6 +14,7 @@
 #include "common/phase_log.h"
 #include "common/progress.h"
 #include "common/sampler_setup.h"
+#include "driver/batch_policy.h"
 #include "driver/render_driver.h"
 #include "gpu/context.h"
 #include "gpu/submit.h"
@@ -186,6 +187,12 @@ public:
     RenderSnapshot snapshot() override;
     std::vector<FeatureRecord> features() override;
     void finish() override { progress_->finish(); }
+    std::uint32_t firstCalibration() const override {
+        const AdaptiveSettings& adaptive = settings_.adaptive;
+        return adaptive.enabled && adaptive.calibrated ? firstCalibrationPoint(adaptive.minSamples)
+                                                       : 0;
+    }
+    void setVarianceScale(float scale) override { varianceScale_ = scale; }
 
 private:
     void initialise();
@@ -223,6 +230,7 @@ private:
     std::uint32_t samplesDone_ = 0;
     std::uint32_t activeParity_ = 0;
     bool useActiveList_ = false;
+    float varianceScale_ = 1.0f; // of the adaptive stopping rule (shared/adaptive.h)
     std::uint32_t passes_ = 0;
     std::uint64_t resumedSamples_ = 0; // Σ samples the resumed records had taken
 };
@@ -346,6 +354,7 @@ gpu::PassParams WavefrontRenderer::chunkParams(std::uint32_t samplesPerPass, std
     params.chunkPixels = pixels;
     params.activeParity = activeParity_;
     params.useActiveList = useActiveList_ ? 1u : 0u;
+    params.adaptiveVarianceScale = varianceScale_;
     return params;
 }
 

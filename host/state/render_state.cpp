@@ -56,11 +56,24 @@ std::string describeRanges(const std::vector<SampleRange>& ranges) {
 // Chan, Golub and LeVeque (1979), eq. 2.1: with δ = μb − μa and n = na + nb,
 // μ = μa + δ·nb/n and M2 = M2a + M2b + δ²·na·nb/n. The radiance mean is the count-weighted
 // mean, which is the same update per channel.
+HalfEstimate combineHalves(const HalfEstimate& a, const HalfEstimate& b) {
+    HalfEstimate c;
+    c.count = a.count + b.count;
+    if (a.count == 0 || b.count == 0) {
+        c.mean = a.count ? a.mean : b.mean;
+        return c;
+    }
+    c.mean = a.mean + (b.mean - a.mean) * (double(b.count) / double(c.count));
+    return c;
+}
+
 PixelRecord combineRecords(const PixelRecord& a, const PixelRecord& b) {
     PixelRecord c;
     c.samplesTaken = a.samplesTaken + b.samplesTaken;
     c.converged = a.converged || b.converged;
     c.count = a.count + b.count;
+    for (int h = 0; h < 2; ++h)
+        c.halves[h] = combineHalves(a.halves[h], b.halves[h]);
     if (a.count == 0 || b.count == 0) {
         const PixelRecord& only = a.count ? a : b;
         c.mean = only.mean;
@@ -101,6 +114,10 @@ RenderOutput renderOutputOf(const RenderState& state) {
     output.sampleCounts.assign(count, 0);
     output.luminanceMean.assign(count, 0.0f);
     output.luminanceM2.assign(count, 0.0f);
+    for (int h = 0; h < 2; ++h) {
+        output.halves[h] = Image(width, height);
+        output.halfCounts[h].assign(count, 0);
+    }
     for (std::uint32_t y = state.window.y0; y < state.window.y1; ++y)
         for (std::uint32_t x = state.window.x0; x < state.window.x1; ++x) {
             const PixelRecord& p = state.at(x, y);
@@ -109,6 +126,10 @@ RenderOutput renderOutputOf(const RenderState& state) {
             output.sampleCounts[i] = p.count;
             output.luminanceMean[i] = saturatedFloat(p.luminanceMean);
             output.luminanceM2[i] = saturatedFloat(p.luminanceM2);
+            for (int h = 0; h < 2; ++h) {
+                output.halves[h].pixels[i] = glm::vec3(p.halves[h].mean);
+                output.halfCounts[h][i] = p.halves[h].count;
+            }
         }
     return output;
 }

@@ -56,6 +56,15 @@ struct Region {
     std::vector<SampleRange> ranges;
 };
 
+// The mean of one half of a pixel's finite samples: half h holds the samples whose index has
+// parity h (shared/sampler.h, sampleHalf), which the sampler draws from a sequence of its own.
+// The two halves are independent estimates of the pixel; their difference measures the error
+// of the whole mean, and a denoiser reads them (docs/integrator.md, "Two halves").
+struct HalfEstimate {
+    glm::dvec3 mean{0.0};    // radiance
+    std::uint32_t count = 0; // finite samples of the half
+};
+
 // One pixel's estimate, whichever executor made it. The moments are Chan, Golub and LeVeque's
 // (count, mean, M2), so that two disjoint sets of samples combine exactly ("Updating Formulae and
 // a Pairwise Algorithm for Computing Sample Variances", 1979); doubles, so that the reference's
@@ -67,7 +76,11 @@ struct PixelRecord {
     std::uint32_t count = 0;        // finite samples accumulated
     std::uint32_t samplesTaken = 0; // samples traced, non-finite ones included
     bool converged = false;         // adaptive sampling stopped the pixel
+    HalfEstimate halves[2];         // even and odd sample indices: count = their counts' sum
 };
+
+// Two disjoint sample sets of one half: the count-weighted mean.
+HalfEstimate combineHalves(const HalfEstimate& a, const HalfEstimate& b);
 
 // Chan et al.'s pairwise combination of two disjoint sample sets; a converged flag survives.
 PixelRecord combineRecords(const PixelRecord& a, const PixelRecord& b);

@@ -44,7 +44,8 @@ std::string adaptiveKey(const RenderSettings& s) {
     if (!s.adaptive.enabled) return "off";
     const float darkFloor = ADAPTIVE_DARK_FLOOR * std::exp2(-s.exposure);
     return std::to_string(s.adaptive.batchSize) + "/" + exactFloat(s.adaptive.tolerance) + "/" +
-           std::to_string(s.adaptive.minSamples) + "/" + exactFloat(darkFloor);
+           std::to_string(s.adaptive.minSamples) + "/" + exactFloat(darkFloor) + "/" +
+           (s.adaptive.calibrated ? "halves" : "variance");
 }
 
 } // namespace

@@ -23,6 +23,9 @@ inline constexpr const char* kDepth = "Z";
 inline constexpr const char* kRawPrefix = "raw."; // + R, G, B
 inline constexpr const char* kSampleCount = "sampleCount";
 inline constexpr const char* kVariance = "variance";
+// The two halves' means (even and odd sample indices), + R, G, B: what a denoiser reads beside
+// the mean, and what the error estimate compares (docs/integrator.md, "Two halves").
+inline constexpr const char* kHalfPrefix[2] = {"half0.", "half1."};
 
 // What merging and resuming read.
 inline constexpr const char* kMeanLoPrefix = "vkpt.meanLo."; // + R, G, B
@@ -34,10 +37,12 @@ inline constexpr const char* kLuminanceMeanLo = "vkpt.luminanceMeanLo";
 inline constexpr const char* kLuminanceM2 = "vkpt.luminanceM2";
 inline constexpr const char* kLuminanceM2Lo = "vkpt.luminanceM2Lo";
 inline constexpr const char* kFeatureSamples = "vkpt.featureSamples"; // with the AOV channels
+inline constexpr const char* kHalfLoPrefix[2] = {"vkpt.half0Lo.", "vkpt.half1Lo."}; // + R, G, B
+inline constexpr const char* kHalfCount[2] = {"vkpt.half0Count", "vkpt.half1Count"};
 
 // Threads for a file's compression or decompression. OpenEXR runs those tasks on its global
 // thread pool, which is empty until told otherwise (then one thread does all of it: 0.98 s of
-// ZIP for the 1024² preview's 26 channels on 2 cores, 0.5 s with both).
+// ZIP for the 1024² preview's 26 channels, before the halves' 14, on 2 cores, 0.5 s with both).
 inline int exrThreads() {
     static const int threads = [] {
         const int count = int(std::max(1u, std::thread::hardware_concurrency()));

@@ -11,7 +11,7 @@
 namespace vkpt {
 
 // The value of the vkpt.format attribute; a file without it is not a render state.
-inline constexpr const char* kStateFormat = "vkpt render state 1";
+inline constexpr const char* kStateFormat = "vkpt render state 2";
 
 // Writes `state` to `path` atomically (atomic_write.h); InputError naming the path on failure.
 void writeStateFile(const RenderState& state, const std::string& path);

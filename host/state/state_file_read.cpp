@@ -110,9 +110,18 @@ struct ReadChannels {
     std::vector<float> mean[3], meanLo[3], lumMean, lumMeanLo, m2, m2Lo;
     std::vector<std::uint32_t> count, taken, converged, featureSamples;
     std::vector<float> albedo[3], normal[3], depth;
+    std::vector<float> halfMean[2][3], halfMeanLo[2][3];
+    std::vector<std::uint32_t> halfCount[2];
     bool hasFeatures = false;
 
     explicit ReadChannels(std::size_t n) {
+        for (int h = 0; h < 2; ++h) {
+            halfCount[h].resize(n);
+            for (int k = 0; k < 3; ++k) {
+                halfMean[h][k].resize(n);
+                halfMeanLo[h][k].resize(n);
+            }
+        }
         for (auto* v : {&lumMean, &lumMeanLo, &m2, &m2Lo, &depth})
             v->resize(n);
         for (auto* v : {&count, &taken, &converged, &featureSamples})
@@ -141,6 +150,15 @@ void insertSlices(const Imf::Header& header, ReadChannels& r, Imf::FrameBuffer& 
     readInto(header, frame, kLuminanceMeanLo, Imf::FLOAT, r.lumMeanLo, path);
     readInto(header, frame, kLuminanceM2, Imf::FLOAT, r.m2, path);
     readInto(header, frame, kLuminanceM2Lo, Imf::FLOAT, r.m2Lo, path);
+    for (int h = 0; h < 2; ++h) {
+        for (int k = 0; k < 3; ++k) {
+            readInto(header, frame, (std::string(kHalfPrefix[h]) + kRgb[k]).c_str(), Imf::FLOAT,
+                     r.halfMean[h][k], path);
+            readInto(header, frame, (std::string(kHalfLoPrefix[h]) + kRgb[k]).c_str(), Imf::FLOAT,
+                     r.halfMeanLo[h][k], path);
+        }
+        readInto(header, frame, kHalfCount[h], Imf::UINT, r.halfCount[h], path);
+    }
     r.hasFeatures = header.channels().findChannel(kDepth) != nullptr;
     if (!r.hasFeatures) return;
     for (int k = 0; k < 3; ++k) {
@@ -165,6 +183,11 @@ void fillRecords(const ReadChannels& r, RenderState& state) {
         p.converged = r.converged[i] != 0;
         p.luminanceMean = joinDouble(r.lumMean[i], r.lumMeanLo[i]);
         p.luminanceM2 = joinDouble(r.m2[i], r.m2Lo[i]);
+        for (int h = 0; h < 2; ++h) {
+            for (int k = 0; k < 3; ++k)
+                p.halves[h].mean[k] = joinDouble(r.halfMean[h][k][i], r.halfMeanLo[h][k][i]);
+            p.halves[h].count = r.halfCount[h][i];
+        }
     }
     if (!r.hasFeatures) return;
     state.features.resize(n);
@@ -186,9 +209,10 @@ void checkConsistent(const RenderState& state, const std::string& path) {
         if (!(boundingRect(region.rect, state.window) == state.window))
             refuse(path, "region " + describeRect(region.rect) + " lies outside the data window");
     for (const PixelRecord& p : state.pixels)
-        if (p.count > p.samplesTaken || !(p.luminanceM2 >= 0.0))
-            refuse(path, "inconsistent pixel moments (a count above the samples taken, or a "
-                         "negative M2)");
+        if (p.count > p.samplesTaken || !(p.luminanceM2 >= 0.0) ||
+            p.halves[0].count + std::uint64_t(p.halves[1].count) != p.count)
+            refuse(path, "inconsistent pixel moments (a count above the samples taken, a "
+                         "negative M2, or halves that do not add up to the count)");
 }
 
 RenderState readState(const std::string& path) {

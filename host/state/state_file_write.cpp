@@ -80,6 +80,30 @@ void addMomentChannels(const RenderState& state, Channels& c) {
     }
 }
 
+// Each half's mean as hi (the layer a denoiser reads) + lo, so that merges stay exact, and its
+// count.
+void addHalfChannels(const RenderState& state, Channels& c) {
+    const std::size_t n = state.pixels.size();
+    for (int h = 0; h < 2; ++h) {
+        std::vector<float>* hi[3];
+        std::vector<float>* lo[3];
+        for (int k = 0; k < 3; ++k) {
+            hi[k] = &c.addFloat(std::string(kHalfPrefix[h]) + kRgb[k], n);
+            lo[k] = &c.addFloat(std::string(kHalfLoPrefix[h]) + kRgb[k], n);
+        }
+        auto& count = c.addUint(kHalfCount[h], n);
+        for (std::size_t i = 0; i < n; ++i) {
+            const HalfEstimate& half = state.pixels[i].halves[h];
+            for (int k = 0; k < 3; ++k) {
+                const SplitDouble s = splitDouble(half.mean[k]);
+                (*hi[k])[i] = s.hi;
+                (*lo[k])[i] = s.lo;
+            }
+            count[i] = half.count;
+        }
+    }
+}
+
 void addFeatureChannels(const RenderState& state, Channels& c) {
     if (state.features.empty()) return;
     const std::size_t n = state.features.size();
@@ -169,6 +193,7 @@ void writeStateFile(const RenderState& state, const std::string& path) {
     addImageChannels(state, channels);
     addFeatureChannels(state, channels);
     addMomentChannels(state, channels);
+    addHalfChannels(state, channels);
     writeAtomically(
         path, [&](const std::string& temporary) { writeChannels(state, channels, temporary); });
 }

@@ -2,7 +2,8 @@
 // the pixel's k samples in sample order to its running estimate (non-finite ones discarded and
 // counted, the rest clamped when --clamp asks, shared/sample_guard.h), applies the adaptive
 // stopping rule after every sample that completes a batch (exactly where the reference does),
-// and appends the pixels that go on to the next pass's active list. When the render records
+// keeps the means of the two halves of the samples (even and odd sample indices), and appends
+// the pixels that go on to the next pass's active list. When the render records
 // AOVs, each sample's features join the pixel's in the same order and up to the same sample.
 #version 460
 #extension GL_GOOGLE_include_directive : require
@@ -19,11 +20,23 @@ VKPT_DECLARE_BUFFERS(ACCUMULATE_BINDINGS)
 #include "lib/records.glsl"
 #include "shared/adaptive.h"
 #include "shared/sample_guard.h"
+#include "shared/sampler.h"
 #include "shared/sampling.h"
 
 // The largest float: M2 saturates there instead of overflowing to infinity (a pixel of samples
 // above ~1e19 has a variance beyond float; it then never counts as converged).
 #define FLOAT_MAX 3.402823466e38
+
+// The running mean of the half that sample `sampleIndex` belongs to (shared/sampler.h).
+void addSampleToHalf(inout PixelState pixel, vec3 radiance, uint sampleIndex) {
+    if (sampleHalf(sampleIndex) == 0u) {
+        pixel.evenCount += 1u;
+        pixel.evenMean += (radiance - pixel.evenMean) / float(pixel.evenCount);
+    } else {
+        pixel.oddCount += 1u;
+        pixel.oddMean += (radiance - pixel.oddMean) / float(pixel.oddCount);
+    }
+}
 
 // Kahan summation of the radiance, scaled by ACCUMULATION_SCALE (precise: reassociation would
 // cancel the compensation), and Welford's running mean and M2 of the luminance. M2 cannot go
@@ -46,7 +59,7 @@ bool batchConverged(PixelState pixel) {
     if (frame.adaptive == 0u || pixel.samplesTaken % frame.adaptiveBatch != 0u) return false;
     return isPixelConverged(pixel.count, pixel.luminanceMean, pixel.luminanceM2,
                             frame.adaptiveMinSamples, frame.adaptiveTolerance,
-                            frame.adaptiveDarkFloor);
+                            frame.adaptiveDarkFloor, passParams.adaptiveVarianceScale);
 }
 
 // Adds the pixel's samples of this pass; returns whether it goes on sampling, and how many of
@@ -63,7 +76,9 @@ bool accumulatePixel(uint activeIndex, out uint pixelIndex, out uint nonFinite) 
         if (renderAovs) addSampleFeatures(features, sampleFeatures[first + j]);
         PathState path = fetchPathState(first + j);
         if (isFiniteSample(path.radiance)) {
-            addSample(pixel, clampSample(path.radiance, frame.sampleClamp));
+            vec3 radiance = clampSample(path.radiance, frame.sampleClamp);
+            addSample(pixel, radiance);
+            addSampleToHalf(pixel, radiance, path.sampleIndex);
         } else {
             ++nonFinite; // discarded: one NaN would poison the pixel for good
         }

@@ -133,14 +133,14 @@ struct FrameParams {
 
 // Push constants: what changes from dispatch to dispatch.
 struct PassParams {
-    uint sampleBase;     // sample index of sample j = 0 of this pass
-    uint samplesPerPass; // k: samples per active pixel in this pass
-    uint chunkStart;     // first entry of the active list in this chunk
-    uint chunkPixels;    // active pixels in this chunk; slots used = chunkPixels · k
-    uint bounce;         // scattering events before the vertices this dispatch shades
-    uint activeParity;   // which half of activePixels is read (the other is appended to)
-    uint useActiveList;  // 0: the first pass, active pixel a is pixel a
-    uint unused0;
+    uint sampleBase;             // sample index of sample j = 0 of this pass
+    uint samplesPerPass;         // k: samples per active pixel in this pass
+    uint chunkStart;             // first entry of the active list in this chunk
+    uint chunkPixels;            // active pixels in this chunk; slots used = chunkPixels · k
+    uint bounce;                 // scattering events before the vertices this dispatch shades
+    uint activeParity;           // which half of activePixels is read (the other is appended to)
+    uint useActiveList;          // 0: the first pass, active pixel a is pixel a
+    float adaptiveVarianceScale; // shared/adaptive.h: the driver's calibration of σ²/n
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -203,7 +203,9 @@ struct ShadowRay {
 
 // One pixel's running estimate: Kahan-compensated radiance sum (× ACCUMULATION_SCALE) and
 // Welford's luminance statistics, as the reference's PixelAccumulator keeps them (in double
-// there).
+// there), and the running means of the two halves of its samples (even and odd sample indices,
+// shared/sampler.h sampleHalf): a mean rather than a scaled sum, since a half needs no more than
+// float's relative precision (its use is a difference of the order of the noise).
 struct PixelState {
     vec3 radianceSum;
     uint count;        // finite samples accumulated
@@ -213,6 +215,10 @@ struct PixelState {
     float luminanceM2;
     uint converged; // 1 once the adaptive test stopped the pixel
     uint unused0;
+    vec3 evenMean;  // mean radiance of the finite samples of even index
+    uint evenCount; // their count
+    vec3 oddMean;   // of odd index
+    uint oddCount;
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -248,8 +254,9 @@ static_assert(sizeof(RayRecord) == 32 && offsetof(RayRecord, direction) == 16);
 static_assert(sizeof(HitRecord) == 16);
 static_assert(sizeof(ShadowRay) == 48 && offsetof(ShadowRay, tMax) == 28 &&
               offsetof(ShadowRay, factor) == 44);
-static_assert(sizeof(PixelState) == 48 && offsetof(PixelState, samplesTaken) == 28 &&
-              offsetof(PixelState, converged) == 40);
+static_assert(sizeof(PixelState) == 80 && offsetof(PixelState, samplesTaken) == 28 &&
+              offsetof(PixelState, converged) == 40 && offsetof(PixelState, evenMean) == 48 &&
+              offsetof(PixelState, oddCount) == 76);
 } // namespace vkpt::gpu
 #endif
 

@@ -41,17 +41,20 @@ VKPT_FN uint ceilLog2(uint n) {
     return n <= 1u ? 0u : uint(findMSB(n - 1u)) + 1u;
 }
 
-// L covers the image's larger side; b = ceil(log2 spp) lets one pixel's samples of one run be
-// a single block, so that at a power-of-two spp each 2×2 quad of pixels holds an aligned run of
-// 4·2^b points — a (0, b+2, 2)-net — which is what makes the error blue noise (Ahmed and Wonka,
-// "Screen-space blue-noise diffusion of Monte Carlo sampling error via hierarchical ordering of
-// pixels", SIGGRAPH Asia 2020). b shrinks when the image leaves fewer bits; sample indices past
-// the block use further blocks, each scrambled afresh (sobolPairBits).
+// L covers the image's larger side; b = ceil(log2 ceil(spp / 2)) lets one pixel's samples of one
+// half (sobolPairBits) of one run be a single block, so that at a power-of-two spp each 2×2 quad
+// of pixels holds, in each half, an aligned run of 4·2^b points — a (0, b+2, 2)-net — which is what
+// makes the error blue noise (Ahmed and Wonka, "Screen-space blue-noise diffusion of Monte Carlo
+// sampling error via hierarchical ordering of pixels", SIGGRAPH Asia 2020). b shrinks when the
+// image leaves fewer bits; sample indices past the block use further blocks, each scrambled afresh
+// (sobolPairBits).
 VKPT_FN uint makeSamplerSetup(uint kind, uint width, uint height, uint samplesPerPixel) {
     if (kind != SAMPLER_SOBOL) return kind;
     uint mortonBits = min(ceilLog2(max(width, height)), SAMPLER_MAX_MORTON_BITS);
-    uint blockBits = min(min(ceilLog2(max(samplesPerPixel, 1u)), SAMPLER_MAX_BLOCK_BITS),
-                         SOBOL_BITS - 2u * mortonBits);
+    // Each half of the samples (sobolPairBits) is a sequence of its own, of ceil(spp / 2).
+    uint perHalf = (samplesPerPixel >> 1u) + (samplesPerPixel & 1u);
+    uint blockBits =
+        min(min(ceilLog2(max(perHalf, 1u)), SAMPLER_MAX_BLOCK_BITS), SOBOL_BITS - 2u * mortonBits);
     return kind | (blockBits << 8u) | (mortonBits << 16u);
 }
 
@@ -101,12 +104,23 @@ VKPT_FN uint shuffleMortonDigits(uint code, uint bits, uint key) {
     return shuffled;
 }
 
-// One scrambled 2-D Sobol point for a sample of a pixel. `pair` names the pair (sobolPairKey);
-// the sequence index is (shuffled Morton code of the pixel) · 2^b + (sample index within its
-// block, nested-uniform shuffled by all bits above it). A pixel's first 2^k samples of a block
-// (k <= b) are then an aligned run of indices: one point in each elementary interval of area
-// 2^-k. Indices past the block (sampleIndex >= 2^b, as in --resume to a larger --spp, the
-// extremes' 2^20 spp, or large images that leave b small) belong to block sampleIndex >> b,
+// The half of a pixel's samples that a sample belongs to: the parity of its index, which a
+// sample keeps in every task split, merge and resume (docs/integrator.md, "Two halves").
+VKPT_FN uint sampleHalf(uint sampleIndex) {
+    return sampleIndex & 1u;
+}
+
+// One scrambled 2-D Sobol point for a sample of a pixel. The two halves of the samples (even and
+// odd indices, sampleHalf) draw from two independently scrambled and shuffled sequences, each
+// indexed by sampleIndex / 2: the halves' means are then independent estimates, so that their
+// difference measures the error of the whole mean without assuming independent samples (within
+// one sequence, a sample and its successor are anti-correlated partners, which would make the
+// difference overstate the error). `pair` names the pair (sobolPairKey); within a half, the
+// sequence index is (shuffled Morton code of the pixel) · 2^b + (sample index within its
+// block, nested-uniform shuffled by all bits above it). A pixel's first 2^k samples of a half's
+// block (k <= b) are then an aligned run of indices: one point in each elementary interval of area
+// 2^-k. Indices past the block (sampleIndex / 2 >= 2^b, as in --resume to a larger --spp, the
+// extremes' 2^20 spp, or large images that leave b small) belong to block (sampleIndex / 2) >> b,
 // whose scrambles and shuffles are keyed afresh: each block is an independent randomised net,
 // every point stays uniform, so estimates stay unbiased, and the per-pixel error keeps
 // falling as the average of independent blocks.
@@ -115,7 +129,10 @@ VKPT_FN uvec2 sobolPairBits(uint setup, uint width, uint seed, uint pixel, uint 
     uint mortonBits = samplerMortonBits(setup);
     uint blockBits = samplerBlockBits(setup); // at most 31: the shifts below are defined
     uint withinMask = (1u << blockBits) - 1u;
-    uint key = pcgHash(seed ^ pcgHash(pair ^ pcgHash(sampleIndex >> blockBits)));
+    uint whichHalf = sampleHalf(sampleIndex);
+    sampleIndex >>= 1u;
+    uint key =
+        pcgHash(seed ^ pcgHash(pair ^ pcgHash(((sampleIndex >> blockBits) << 1u) | whichHalf)));
     uint coordinateMask = (1u << mortonBits) - 1u;
     uint code = mortonCode((pixel % width) & coordinateMask, (pixel / width) & coordinateMask);
     uint original = (code << blockBits) | (sampleIndex & withinMask);

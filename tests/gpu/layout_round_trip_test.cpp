@@ -118,7 +118,8 @@ SharedStructs makeStructs() {
         s.frames.push_back(makeFrameParams(x));
         s.pathStates.push_back({x.v3(), x.u(), x.v3(), x.u(), x.v3(), x.f(), x.v3(), x.u()});
         s.shadowRays.push_back({x.v3(), x.u(), x.v3(), x.f(), x.v3(), x.f()});
-        s.pixelStates.push_back({x.v3(), x.u(), x.v3(), x.u(), x.f(), x.f(), x.u(), x.u()});
+        s.pixelStates.push_back({x.v3(), x.u(), x.v3(), x.u(), x.f(), x.f(), x.u(), x.u(), x.v3(),
+                                 x.u(), x.v3(), x.u()});
         s.lightTreeNodes.push_back(
             {x.v3(), x.f(), x.v3(), x.f(), x.v3(), x.f(), x.u(), x.u(), x.u(), x.u()});
     }

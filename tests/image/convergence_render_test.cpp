@@ -1,7 +1,8 @@
 // convergence_render_test.cpp — vkpt buying accuracy with time on lavapipe: a time limit stops
 // at a pass end with the image so far, a target error stops the render once the estimate
-// crosses it (and that estimate is within 25 % of the true relMSE with independent samples, an
-// upper bound of it with the Sobol sampler's stratified ones), and a reference
+// crosses it (and that estimate, from the two halves, is the true relMSE within one render's
+// noise, with independent samples and with the Sobol sampler's stratified ones alike), and a
+// reference
 // gives an error after every pass at log-spaced sample counts.
 #include <cmath>
 #include <cstdio>
@@ -65,9 +66,9 @@ TEST_F(ConvergenceRender, ATimeLimitStopsAtAPassEndWithTheImageSoFar) {
     EXPECT_GT(estimateFromVariance(result.output).minSamples, 1u) << "every pixel has samples";
 }
 
-// A render to kTarget, stopped by the estimate from the variances: the true relMSE at the stop
+// A render to kTarget, stopped by the estimate from the two halves: the true relMSE at the stop
 // over the estimate. The truth is measured against a 2048-spp reference, less that reference's
-// own relMSE (about 2e-4, its estimate from its variances).
+// own relMSE (its estimate from its halves).
 double ConvergenceRender::trueOverEstimatedError(RenderSettings settings) {
     constexpr double kTarget = 0.004; // crossed after the estimate's minimum of 64 spp
     ConvergenceTracker tracker(nullptr, kTarget);
@@ -91,22 +92,31 @@ double ConvergenceRender::trueOverEstimatedError(RenderSettings settings) {
     return truth / estimate;
 }
 
-// σ²/n is the variance of a mean of independent samples: with independent numbers the estimate
-// is the truth, within 25 %.
+// One 32×32 render's true relMSE is far from its expectation: fireflies make it heavy-tailed. With
+// independent numbers at 64 spp, six seeds of vkpt-ref gave true relMSEs of 4.4e-3 to 1.06e-2
+// and halves' estimates of 4.9e-3 to 6.8e-3: true ÷ estimated from 0.79 to 2.19. One render can
+// only bound the ratio loosely — 0.5 to 2 held five of those six seeds, and holds this test's
+// fixed seed (0.66 with independent numbers, 0.88 with Sobol) — which σ²/n with Sobol (0.38
+// here) fails; tests/render/error_estimate_test.cpp pins the estimate down over seeds.
+constexpr double kLowestTrueOverEstimated = 0.5;
+constexpr double kHighestTrueOverEstimated = 2.0;
+
+// With independent numbers the halves' difference and σ²/n both estimate the truth.
 TEST_F(ConvergenceRender, ATargetErrorStopsOnceTheEstimateCrossesIt) {
     RenderSettings settings = testSettings(32, 4096);
     settings.sampler = Sampler::Independent;
     const double ratio = trueOverEstimatedError(settings);
-    EXPECT_GT(ratio, 0.8);
-    EXPECT_LT(ratio, 1.25);
+    EXPECT_GT(ratio, kLowestTrueOverEstimated);
+    EXPECT_LT(ratio, kHighestTrueOverEstimated);
 }
 
-// A pixel's Sobol samples are stratified, so their mean varies less than σ²/n says: the estimate
-// is an upper bound of the truth (measured 0.38 of it here), and a target error is reached, not
-// promised and missed. The bound allows the independent case's 25 %.
-TEST_F(ConvergenceRender, WithTheSobolSamplerTheEstimateBoundsTheTrueError) {
+// A pixel's Sobol samples are stratified, so their mean varies less than σ²/n says (which made
+// the estimate 2.6× the truth here: true ÷ estimated 0.38); the two halves are independent
+// sequences, so their difference measures the stratified mean's error itself, as above.
+TEST_F(ConvergenceRender, WithTheSobolSamplerTheEstimateIsTheTrueError) {
     const double ratio = trueOverEstimatedError(testSettings(32, 4096));
-    EXPECT_LT(ratio, 1.25);
+    EXPECT_GT(ratio, kLowestTrueOverEstimated);
+    EXPECT_LT(ratio, kHighestTrueOverEstimated);
 }
 
 TEST_F(ConvergenceRender, AReferenceGivesTheErrorAfterEveryPassAtLogSpacedCounts) {

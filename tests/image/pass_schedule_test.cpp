@@ -59,6 +59,23 @@ TEST(PassSchedule, ATimeLimitCapsAPassToTheTimeLeft) {
     EXPECT_EQ(samplesWithinTime(64, 1000, 0.0, 0.010), 64u);  // no rate yet: the first pass
 }
 
+// Adaptive sampling's calibration points: max(minSamples / 2, 16) · 2^k, whatever the batches.
+TEST(PassSchedule, CalibrationPointsDoubleFromHalfTheMinimum) {
+    EXPECT_EQ(firstCalibrationPoint(64), 32u);
+    EXPECT_EQ(firstCalibrationPoint(8), kFirstCalibrationSamples);
+    std::vector<std::uint32_t> points;
+    for (std::uint32_t done = 0; done < 300; done = nextCalibrationPoint(done, 32))
+        points.push_back(nextCalibrationPoint(done, 32));
+    EXPECT_EQ(points, (std::vector<std::uint32_t>{32, 64, 128, 256, 512}));
+    for (std::uint32_t done = 0; done < 600; ++done)
+        EXPECT_EQ(isCalibrationPoint(done, 32),
+                  done == 32 || done == 64 || done == 128 || done == 256 || done == 512)
+            << done;
+    EXPECT_FALSE(isCalibrationPoint(64, 0));                       // no adaptive sampling
+    EXPECT_EQ(nextCalibrationPoint(0xffffff00u, 32), 0xffffffffu); // saturates, never wraps
+    EXPECT_EQ(quantizedVarianceScale(0.5 + 1.0 / 200), 0.5f);
+}
+
 TEST(PassSchedule, ChunksCoverTheActivePixels) {
     EXPECT_EQ(pixelsPerChunk(1024, 16, 65536), 1024u);
     EXPECT_EQ(pixelsPerChunk(1 << 20, 1, 65536), 65536u);

@@ -1,7 +1,8 @@
 // render_compare_test.cpp — vkpt against vkpt-ref. At one seed the two trace the same paths,
 // so images agree pixel by pixel up to float rounding (docs/wavefront.md derives the bound);
 // at different seeds they agree in distribution (per-pixel z-test, Šidák-corrected). Also:
-// the same seed gives the same device image, bit for bit, whatever the slot count.
+// the same seed gives the same device image, bit for bit, whatever the slot count. At one seed
+// the two halves' images (even and odd sample indices) agree by the same bound as the image.
 #include <cstdio>
 #include <filesystem>
 
@@ -15,6 +16,13 @@ namespace {
 // direction below the surface, an edge hit) flipped on a last-bit difference. They must stay
 // rare: at most 1 % of the pixels.
 constexpr double kMinimumAgreement = 0.99;
+
+// Half h of an output as an output of its own, for compareSameSeed.
+RenderOutput halfOutput(const RenderOutput& output, int h) {
+    RenderOutput half;
+    half.image = output.halves[h];
+    return half;
+}
 
 class SameSeed : public GpuTest {
 protected:
@@ -34,6 +42,12 @@ protected:
                     (unsigned long long)cpuStats.rays.total());
         EXPECT_GE(a.fraction(), kMinimumAgreement) << writeComparisonImages(name, gpu, cpu);
         EXPECT_EQ(gpuStats.samplesTaken, cpuStats.samplesTaken);
+        for (int h = 0; h < 2; ++h) {
+            const SameSeedAgreement half = compareSameSeed(halfOutput(gpu, h), halfOutput(cpu, h));
+            std::printf("  half %d: %s\n", h, half.summary().c_str());
+            EXPECT_GE(half.fraction(), kMinimumAgreement) << "half " << h;
+            EXPECT_EQ(gpu.halfCounts[h], cpu.halfCounts[h]) << "half " << h;
+        }
     }
 };
 
@@ -107,7 +121,7 @@ TEST_F(SameSeed, PathsLongerThanOneSubmissionMatchTheReference) {
 // The device takes exactly the reference's samples: same stopping tests at the same counts.
 TEST_F(SameSeed, AdaptiveSamplingTakesTheReferenceSamples) {
     RenderSettings settings = testSettings(16, 256);
-    settings.adaptive = {true, 16, 0.2f, 32};
+    settings.adaptive = {true, 16, 0.2f, 32, true};
     expectAgreement("adaptive", "cornell-box.gltf", settings);
 }
 

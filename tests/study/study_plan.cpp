@@ -42,10 +42,13 @@ void addAdaptive(std::vector<StudyRun>& runs, const RenderSettings& base, const 
             s.adaptive.batchSize = batch;
             s.adaptive.tolerance = tolerance;
             s.adaptive.minSamples = scale.adaptiveMinSamples;
+            s.adaptive.calibrated = base.adaptive.calibrated;
             const std::string tol = formatTolerance(tolerance);
             runs.push_back({"adaptive", "adaptive b" + std::to_string(batch) + " tol " + tol,
                             sppFlag(scale.maxSpp) + " --adaptive " + std::to_string(batch) + " " +
-                                tol + " --adaptive-min " + std::to_string(scale.adaptiveMinSamples),
+                                tol + " --adaptive-min " +
+                                std::to_string(scale.adaptiveMinSamples) +
+                                (s.adaptive.calibrated ? "" : " --adaptive-error variance"),
                             s, StudyReference::Full});
         }
 }

@@ -120,6 +120,16 @@ void addStudyOptions(CommandLine& cl, StudyInvocation& s) {
         {"camera", {}, "N", "render from the scene's camera N (default: the first)", [&s](auto v) {
              s.base.cameraIndex = int(parseUnsigned("camera", v[0]));
          }});
+    cl.add({"adaptive-error",
+            {},
+            "KIND",
+            "the adaptive runs' per-pixel error: halves (default) or variance (sigma^2/n alone)",
+            [&s](auto v) {
+                if (v[0] != "halves" && v[0] != "variance")
+                    throw InputError("option --adaptive-error: '" + v[0] +
+                                     "' is neither halves nor variance");
+                s.base.adaptive.calibrated = v[0] == "halves";
+            }});
     cl.add({"note",
             {},
             "TEXT",

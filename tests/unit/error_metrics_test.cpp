@@ -1,5 +1,6 @@
 // error_metrics_test.cpp — RMSE, relative MSE and the variance estimates on images whose
-// answers are known by hand, and the estimate against the true relMSE on synthetic noise.
+// answers are known by hand (from σ²/n and from the two halves), and the estimates against the
+// true relMSE on synthetic noise.
 #include "image/error_metrics.h"
 
 #include <cmath>
@@ -104,6 +105,42 @@ TEST(ErrorMetrics, EstimatedRelMseMatchesTheTrueOneForUnbiasedGreyNoise) {
     const double truth = compareWithReference(output.image, reference).relMse;
     const double estimate = estimateFromVariance(output).estimatedRelMse;
     EXPECT_NEAR(estimate / truth, 1.0, 0.1) << "true " << truth << ", estimated " << estimate;
+}
+
+// Halves A and B of 4 samples each: w = 1/4, so the variance of the mean is (A − B)²/4.
+TEST(ErrorMetrics, HalvesGiveTheRelMseEstimateAndTheVarianceScale) {
+    RenderOutput output = statistics(10, 8, 2.0f, 8.0f * 7.0f); // σ²/n = 8/8 = 1
+    output.image = filled(10, 1, glm::vec3(2.0f));
+    output.halves[0] = filled(10, 1, glm::vec3(2.5f));
+    output.halves[1] = filled(10, 1, glm::vec3(1.5f));
+    output.halfCounts[0].assign(10, 4);
+    output.halfCounts[1].assign(10, 4);
+    const VarianceEstimate estimate = estimateFromVariance(output);
+    // (A − B)²/4 = 0.25 in every channel, over x² + ε = 4.01; σ²/n = 1 in luminance, so c = 0.25.
+    EXPECT_NEAR(estimate.estimatedRelMse, 0.25 / 4.01, 1e-6);
+    EXPECT_NEAR(estimate.varianceScale, 0.25, 1e-6);
+    EXPECT_NEAR(varianceScaleFromHalves(output), 0.25, 1e-6);
+    EXPECT_NEAR(estimate.meanHalfWidth, 1.96 * std::sqrt(0.25), 1e-6);
+    // Unequal halves (2 and 6 of 8): w = 12/64 in place of 1/4.
+    output.halfCounts[0].assign(10, 2);
+    output.halfCounts[1].assign(10, 6);
+    EXPECT_NEAR(estimateFromVariance(output).estimatedRelMse, 12.0 / 64.0 / 4.01, 1e-6);
+    // A pixel with an empty half: σ²/n alone.
+    output.halfCounts[0][3] = 0;
+    EXPECT_NEAR(estimateFromVariance(output).estimatedRelMse, 1.0 / 4.01, 1e-6);
+    EXPECT_EQ(varianceScaleFromHalves(output), 1.0);
+}
+
+// A scale outside [1/4, 4] is clamped: halves that disagree wildly say more about the image
+// than about the sampler.
+TEST(ErrorMetrics, TheVarianceScaleIsClamped) {
+    RenderOutput output = statistics(4, 8, 2.0f, 7.0f * 1e-6f);
+    output.image = filled(4, 1, glm::vec3(2.0f));
+    output.halves[0] = filled(4, 1, glm::vec3(3.0f));
+    output.halves[1] = filled(4, 1, glm::vec3(1.0f));
+    output.halfCounts[0].assign(4, 4);
+    output.halfCounts[1].assign(4, 4);
+    EXPECT_EQ(varianceScaleFromHalves(output), kMaxVarianceScale);
 }
 
 } // namespace

@@ -78,6 +78,44 @@ TEST(PixelRecords, ChanCombinationEqualsOneRunningSum) {
     }
 }
 
+// The halves of samples [first, first + values.size()): value i has sample index first + i, and
+// goes to the half of that index's parity.
+PixelRecord withHalves(const std::vector<double>& values, std::uint32_t first) {
+    PixelRecord r = welford(values);
+    glm::dvec3 sums[2] = {glm::dvec3(0.0), glm::dvec3(0.0)};
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        const std::uint32_t h = (first + std::uint32_t(i)) & 1u;
+        sums[h] += glm::dvec3(values[i]);
+        ++r.halves[h].count;
+    }
+    for (int h = 0; h < 2; ++h)
+        r.halves[h].mean =
+            r.halves[h].count ? sums[h] / double(r.halves[h].count) : glm::dvec3(0.0);
+    return r;
+}
+
+// Splits at an odd index too: each part's halves follow the global sample index, so the merged
+// halves are the one run's.
+TEST(PixelRecords, HalvesCombineToTheOneRunsHalves) {
+    std::mt19937 random(11);
+    std::lognormal_distribution<double> radiance(0.0, 2.0);
+    std::vector<double> values(1001);
+    for (double& v : values)
+        v = radiance(random);
+    const PixelRecord all = withHalves(values, 0);
+    EXPECT_EQ(all.halves[0].count, 501u);
+    for (std::uint32_t split : {0u, 1u, 333u, 1000u}) {
+        const PixelRecord a = withHalves({values.begin(), values.begin() + split}, 0);
+        const PixelRecord b = withHalves({values.begin() + split, values.end()}, split);
+        const PixelRecord c = combineRecords(a, b);
+        for (int h = 0; h < 2; ++h) {
+            EXPECT_EQ(c.halves[h].count, all.halves[h].count) << "split " << split;
+            EXPECT_NEAR(c.halves[h].mean.x, all.halves[h].mean.x, 1e-13 * all.halves[h].mean.x)
+                << "split " << split;
+        }
+    }
+}
+
 FeatureRecord featuresOf(glm::vec3 albedo, glm::vec3 normal, float depth, std::uint32_t samples) {
     FeatureRecord f;
     f.albedo = albedo;
@@ -119,6 +157,8 @@ RenderState sampleState(std::uint32_t seed = 3) {
         p.count = 4 - std::uint32_t(i % 2);
         p.samplesTaken = 4;
         p.converged = i % 5 == 0;
+        p.halves[0] = {glm::dvec3(u(random), u(random), u(random)) / 3.0, 2};
+        p.halves[1] = {glm::dvec3(u(random), u(random), u(random)) / 3.0, p.count - 2};
         s.pixels.push_back(p);
         FeatureRecord f;
         f.albedo = glm::vec3(float(u(random)));
@@ -171,6 +211,11 @@ TEST_F(StateFile, RoundTripsTheMomentsTheFeaturesAndTheMetadata) {
         EXPECT_EQ(a.count, b.count);
         EXPECT_EQ(a.samplesTaken, b.samplesTaken);
         EXPECT_EQ(a.converged, b.converged);
+        for (int h = 0; h < 2; ++h) {
+            EXPECT_EQ(a.halves[h].count, b.halves[h].count);
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(a.halves[h].mean[c], b.halves[h].mean[c], 1e-14 * b.halves[h].mean[c]);
+        }
         EXPECT_EQ(read.features[i].albedo, written.features[i].albedo);
         EXPECT_EQ(read.features[i].normal, written.features[i].normal);
         EXPECT_EQ(read.features[i].depth, written.features[i].depth);
@@ -178,7 +223,8 @@ TEST_F(StateFile, RoundTripsTheMomentsTheFeaturesAndTheMetadata) {
     }
 }
 
-// Any OpenEXR reader sees the image: R, G, B are the means, in the crop's data window.
+// Any OpenEXR reader sees the image: R, G, B are the means, in the crop's data window; the
+// layers half0 and half1 the halves' means.
 TEST_F(StateFile, APlainOpenExrReaderSeesTheImage) {
     const RenderState written = sampleState();
     writeStateFile(written, path("part.exr"));
@@ -187,13 +233,16 @@ TEST_F(StateFile, APlainOpenExrReaderSeesTheImage) {
     EXPECT_EQ(data.min.x, 5);
     EXPECT_EQ(data.max.y, 17);
     EXPECT_EQ(file.header().displayWindow().max.x, 39);
-    std::vector<float> red(written.window.area());
+    std::vector<float> red(written.window.area()), oddGreen(written.window.area());
     Imf::FrameBuffer frame;
     frame.insert("R", Imf::Slice::Make(Imf::FLOAT, red.data(), data));
+    frame.insert("half1.G", Imf::Slice::Make(Imf::FLOAT, oddGreen.data(), data));
     file.setFrameBuffer(frame);
     file.readPixels(data.min.y, data.max.y);
-    for (std::size_t i = 0; i < red.size(); ++i)
+    for (std::size_t i = 0; i < red.size(); ++i) {
         EXPECT_EQ(red[i], float(written.pixels[i].mean.r));
+        EXPECT_EQ(oddGreen[i], float(written.pixels[i].halves[1].mean.g));
+    }
 }
 
 TEST_F(StateFile, RefusesMissingForeignAndTruncatedFiles) {
@@ -212,6 +261,10 @@ TEST_F(StateFile, RefusesMissingForeignAndTruncatedFiles) {
         out.writePixels(8);
     }
     expectRefused(path("foreign.exr"), "an OpenEXR image without vkpt's metadata");
+    RenderState uneven = sampleState();
+    ++uneven.pixels[7].halves[1].count; // the halves now hold one sample more than the pixel
+    writeStateFile(uneven, path("uneven.exr"));
+    expectRefused(path("uneven.exr"), "halves that do not add up to the count");
     writeStateFile(sampleState(), path("whole.exr"));
     std::filesystem::copy_file(path("whole.exr"), path("truncated.exr"));
     std::filesystem::resize_file(path("truncated.exr"),

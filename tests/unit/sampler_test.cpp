@@ -1,7 +1,7 @@
-// sampler_test.cpp — the default sampler (shared/sampler.h): each pixel's samples are
-// stratified in every 2-D pair the renderers use, 2×2 quads of pixels together form a larger
-// net (the blue-noise layout), samples past a pixel's block stay stratified and uniform, and
-// distinct pixels, seeds and dimensions are uncorrelated.
+// sampler_test.cpp — the default sampler (shared/sampler.h): each half of a pixel's samples
+// (even and odd indices) is stratified in every 2-D pair the renderers use, 2×2 quads of pixels
+// together form a larger net (the blue-noise layout), samples past a pixel's block stay
+// stratified and uniform, and distinct pixels, seeds, dimensions and halves are uncorrelated.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -19,14 +19,15 @@ std::uint32_t sobolSetup(std::uint32_t spp) {
     return gpu::makeSamplerSetup(SAMPLER_SOBOL, kWidth, kHeight, spp);
 }
 
-// Pair 0 (.xy) or pair 1 (.zw) of samples [first, first + count) of pixel (x, y).
+// Pair 0 (.xy) or pair 1 (.zw) of samples first + stride·i, i < count, of pixel (x, y). A stride
+// of 2 from first = h walks half h of the samples.
 std::vector<glm::uvec2> pairPoints(std::uint32_t setup, std::uint32_t seed, std::uint32_t x,
                                    std::uint32_t y, std::uint32_t first, std::uint32_t count,
                                    std::uint32_t bounce, std::uint32_t dimension,
-                                   std::uint32_t pair) {
+                                   std::uint32_t pair, std::uint32_t stride = 2) {
     std::vector<glm::uvec2> points;
-    for (std::uint32_t i = 0; i < count; ++i) { // first + count may wrap to 0
-        const std::uint32_t s = first + i;
+    for (std::uint32_t i = 0; i < count; ++i) { // the last index may wrap to 0
+        const std::uint32_t s = first + stride * i;
         glm::vec4 u = gpu::sampleFloats(setup, kWidth, seed, y * kWidth + x, s, bounce, dimension);
         points.emplace_back(test::unitFloatBits(u[int(2 * pair)]),
                             test::unitFloatBits(u[int(2 * pair + 1)]));
@@ -46,8 +47,8 @@ TEST(Sampler, SetupFollowsImageAndSampleCount) {
     const std::uint32_t setup = sobolSetup(64);
     EXPECT_EQ(gpu::samplerKind(setup), SAMPLER_SOBOL);
     EXPECT_EQ(gpu::samplerMortonBits(setup), 7u); // 128 wide
-    EXPECT_EQ(gpu::samplerBlockBits(setup), 6u);
-    EXPECT_EQ(gpu::samplerBlockBits(sobolSetup(65)), 7u);
+    EXPECT_EQ(gpu::samplerBlockBits(setup), 5u);  // 32 samples per half
+    EXPECT_EQ(gpu::samplerBlockBits(sobolSetup(65)), 6u);
     EXPECT_EQ(gpu::samplerBlockBits(sobolSetup(1u << 20)), 18u); // 32 - 2·7 bits left
     const std::uint32_t huge = gpu::makeSamplerSetup(SAMPLER_SOBOL, 200000, 3, 0xffffffffu);
     EXPECT_EQ(gpu::samplerMortonBits(huge), 16u);
@@ -62,52 +63,57 @@ TEST(Sampler, IndependentKindIsRngFloats) {
                   gpu::randomFloats(9, i * 7, i, i % 5, i % 3));
 }
 
-// A pixel's first 2^k samples (every k up to the block) are a net in each pair, for any seed.
+// The first 2^k samples of each half of a pixel (every k up to the block) are a net in each
+// pair, for any seed.
 TEST(Sampler, EachPixelsSamplesAreStratifiedInEveryPair) {
     const std::uint32_t setup = sobolSetup(256);
     for (const Dimension& d : kDimensions)
         for (std::uint32_t pair = 0; pair < 2; ++pair)
-            for (std::uint32_t k = 0; k <= 8; ++k)
-                for (std::uint32_t seed : {0u, 12345u}) {
-                    EXPECT_EQ(test::netDefect(pairPoints(setup, seed, 37, 61, 0, 1u << k, d.bounce,
-                                                         d.dimension, pair)),
-                              "")
-                        << "bounce " << d.bounce << " dimension " << d.dimension << " pair " << pair
-                        << " first 2^" << k << " seed " << seed;
-                }
+            for (std::uint32_t k = 0; k <= 7; ++k)
+                for (std::uint32_t seed : {0u, 12345u})
+                    for (std::uint32_t half = 0; half < 2; ++half) {
+                        EXPECT_EQ(test::netDefect(pairPoints(setup, seed, 37, 61, half, 1u << k,
+                                                             d.bounce, d.dimension, pair)),
+                                  "")
+                            << "bounce " << d.bounce << " dimension " << d.dimension << " pair "
+                            << pair << " first 2^" << k << " seed " << seed << " half " << half;
+                    }
 }
 
-// At spp = 2^b the pixels of an aligned 2×2 (4×4) quad hold together an aligned run of the
-// sequence: a (0, b+2, 2)-net (a (0, b+4, 2)-net), which is what spreads the error as blue noise.
+// At spp = 2^(b+1) the pixels of an aligned 2×2 (4×4) quad hold together, in each half, an
+// aligned run of the half's sequence: a (0, b+2, 2)-net (a (0, b+4, 2)-net), which is what
+// spreads the error as blue noise.
 TEST(Sampler, AlignedPixelQuadsTogetherFormNets) {
     const std::uint32_t spp = 16, setup = sobolSetup(spp);
     for (const Dimension& d : kDimensions)
         for (std::uint32_t pair = 0; pair < 2; ++pair)
             for (std::uint32_t side : {2u, 4u})
-                for (std::uint32_t corner : {0u, 8u, 44u}) {
-                    std::vector<glm::uvec2> points;
-                    for (std::uint32_t y = corner; y < corner + side; ++y)
-                        for (std::uint32_t x = corner; x < corner + side; ++x) {
-                            auto own =
-                                pairPoints(setup, 3, x, y, 0, spp, d.bounce, d.dimension, pair);
-                            points.insert(points.end(), own.begin(), own.end());
-                        }
-                    EXPECT_EQ(test::netDefect(points), "")
-                        << "bounce " << d.bounce << " dimension " << d.dimension << " pair " << pair
-                        << " quad " << side << " at " << corner;
-                }
+                for (std::uint32_t corner : {0u, 8u, 44u})
+                    for (std::uint32_t half = 0; half < 2; ++half) {
+                        std::vector<glm::uvec2> points;
+                        for (std::uint32_t y = corner; y < corner + side; ++y)
+                            for (std::uint32_t x = corner; x < corner + side; ++x) {
+                                auto own = pairPoints(setup, 3, x, y, half, spp / 2, d.bounce,
+                                                      d.dimension, pair);
+                                points.insert(points.end(), own.begin(), own.end());
+                            }
+                        EXPECT_EQ(test::netDefect(points), "")
+                            << "bounce " << d.bounce << " dimension " << d.dimension << " pair "
+                            << pair << " quad " << side << " at " << corner << " half " << half;
+                    }
 }
 
 // Samples past the pixel's block (--resume to a larger --spp, 2^20 spp and more): each further
 // block is again a net, up to the last block before the sample index wraps.
 TEST(Sampler, BlocksPastTheFirstAreNetsToo) {
-    const std::uint32_t setup = sobolSetup(64); // blocks of 64
+    const std::uint32_t setup = sobolSetup(64); // blocks of 32 samples of each half
     for (std::uint32_t block : {1u, 2u, 1000u, (1u << 26) - 1u})
         for (std::uint32_t pair = 0; pair < 2; ++pair)
-            EXPECT_EQ(
-                test::netDefect(pairPoints(setup, 5, 100, 90, block * 64, 64, 2, DIM_BSDF, pair)),
-                "")
-                << "block " << block << " pair " << pair;
+            for (std::uint32_t half = 0; half < 2; ++half)
+                EXPECT_EQ(test::netDefect(pairPoints(setup, 5, 100, 90, half + block * 64, 32, 2,
+                                                     DIM_BSDF, pair)),
+                          "")
+                    << "block " << block << " pair " << pair << " half " << half;
 }
 
 // Far past the block the numbers stay uniform: the mean of 2^18 draws from sample indices
@@ -141,11 +147,11 @@ double pearson(const std::vector<double>& a, const std::vector<double>& b) {
 
 // Pearson correlation between the first sample of every pixel and (a) the same pixel at
 // another seed, (b) the pixel half an image to the right, (c) the same sample's other pair and
-// a later bounce's pair. 12,288 pixels give a standard error of 1/sqrt(n) ≈ 0.009 for
-// independent values; 5 standard errors bound each.
+// a later bounce's pair, (d) the first sample of the other half. 12,288 pixels give a standard
+// error of 1/sqrt(n) ≈ 0.009 for independent values; 5 standard errors bound each.
 TEST(Sampler, SeedsPixelsAndDimensionsAreUncorrelated) {
     const std::uint32_t setup = sobolSetup(16);
-    std::vector<double> base, otherSeed, farPixel, otherPair, laterBounce;
+    std::vector<double> base, otherSeed, farPixel, otherPair, laterBounce, otherHalf;
     for (std::uint32_t y = 0; y < kHeight; ++y)
         for (std::uint32_t x = 0; x < kWidth; ++x) {
             const std::uint32_t pixel = y * kWidth + x;
@@ -156,12 +162,16 @@ TEST(Sampler, SeedsPixelsAndDimensionsAreUncorrelated) {
             farPixel.push_back(gpu::sampleFloats(setup, kWidth, 3, far, 0, 0, DIM_BSDF).x);
             otherPair.push_back(u.z);
             laterBounce.push_back(gpu::sampleFloats(setup, kWidth, 3, pixel, 0, 1, DIM_BSDF).x);
+            // Sample 1, the odd half's first: in one sequence it would be sample 0's partner
+            // in the other half of [0, 1) (a correlation near −1/2).
+            otherHalf.push_back(gpu::sampleFloats(setup, kWidth, 3, pixel, 1, 0, DIM_BSDF).x);
         }
     const double bound = 5.0 / std::sqrt(double(base.size()));
     EXPECT_LT(std::abs(pearson(base, otherSeed)), bound);
     EXPECT_LT(std::abs(pearson(base, farPixel)), bound);
     EXPECT_LT(std::abs(pearson(base, otherPair)), bound);
     EXPECT_LT(std::abs(pearson(base, laterBounce)), bound);
+    EXPECT_LT(std::abs(pearson(base, otherHalf)), bound);
 }
 
 // Within one pixel, two pairs of a sample are not the same net in another order: over the

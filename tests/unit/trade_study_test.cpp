@@ -190,7 +190,7 @@ StudySummary sampleSummary() {
     summary.results.push_back(
         result("uniform", "uniform", {point(0.1, 0.5, 1), point(1, 4e-3, 9)}));
     RunResult adaptive = result("adaptive", "adaptive b16 tol 0.1", {point(0.5, 2e-3, 7)});
-    adaptive.run.settings.adaptive = {true, 16, 0.1f, 64};
+    adaptive.run.settings.adaptive = {true, 16, 0.1f, 64, true};
     adaptive.run.flags = "--spp 64 --adaptive 16 0.1";
     summary.results.push_back(adaptive);
     RunResult shared = result("depth", "max depth 16", {point(0.1, 0.5, 1)});

@@ -221,6 +221,10 @@ void main() {
     putFloat(pixelStates[i].luminanceM2);
     putUint(pixelStates[i].converged);
     putUint(pixelStates[i].unused0);
+    putVec3(pixelStates[i].evenMean);
+    putUint(pixelStates[i].evenCount);
+    putVec3(pixelStates[i].oddMean);
+    putUint(pixelStates[i].oddCount);
 
     cursor = LAYOUT_OFFSET_LIGHT_TREE_NODES + i * LAYOUT_WORDS_LIGHT_TREE_NODE;
     putVec3(lightTreeNodes[i].boundsMin);

@@ -230,6 +230,10 @@ void main() {
     pixelStates[i].luminanceM2 = takeFloat();
     pixelStates[i].converged = takeUint();
     pixelStates[i].unused0 = takeUint();
+    pixelStates[i].evenMean = takeVec3();
+    pixelStates[i].evenCount = takeUint();
+    pixelStates[i].oddMean = takeVec3();
+    pixelStates[i].oddCount = takeUint();
 
     cursor = LAYOUT_OFFSET_LIGHT_TREE_NODES + i * LAYOUT_WORDS_LIGHT_TREE_NODE;
     lightTreeNodes[i].boundsMin = takeVec3();
