@@ -68,6 +68,9 @@ float above(double x) {
     return std::nextafter(static_cast<float>(x), std::numeric_limits<float>::max());
 }
 
+static_assert(SceneInstance::kKeepMaterial == INSTANCE_OWN_MATERIALS,
+              "a scene instance's material carries over to the device record as it is");
+
 // A placement of bottom level `level` by objectToWorld, before the top level orders them.
 struct Placement {
     std::uint32_t level;
