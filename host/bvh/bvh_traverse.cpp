@@ -68,7 +68,7 @@ struct Walk {
                                             best.hit ? best.triangle : NO_PRIMITIVE))
             return false;
         if (ray.filter != nullptr && gpu::isAlphaMaskedPrimitive(tri) &&
-            !ray.filter->accepts(primitive, ray, h))
+            !ray.filter->accepts(primitive, instance, ray, h))
             return false;
         best = {h.t, h.u, h.v, primitive, true, instance};
         return true;
@@ -262,7 +262,7 @@ ClosestHit closestHitBruteForce(std::span<const gpu::Triangle> triangles, const 
                                                           tri.v2, ray.tMin, best.t);
         if (!h.hit) continue;
         if (ray.filter != nullptr && gpu::isAlphaMaskedPrimitive(tri) &&
-            !ray.filter->accepts(i, ray, h))
+            !ray.filter->accepts(i, NO_INSTANCE, ray, h))
             continue;
         best = {h.t, h.u, h.v, i, true};
     }

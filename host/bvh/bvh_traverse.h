@@ -22,7 +22,8 @@ struct RayQuery;
 class HitFilter {
 public:
     virtual ~HitFilter() = default;
-    virtual bool accepts(std::uint32_t primitive, const RayQuery& ray,
+    // `instance` places the primitive (NO_INSTANCE: the world's own geometry, or one level).
+    virtual bool accepts(std::uint32_t primitive, std::uint32_t instance, const RayQuery& ray,
                          const gpu::TriangleHit& hit) const = 0;
 };
 

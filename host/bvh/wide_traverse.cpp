@@ -19,7 +19,7 @@ gpu::WideWalk walkWide(std::span<const gpu::WideBvhNode> nodes,
     for (;;) {
         gpu::PendingCrossing pending = gpu::continueWideWalk(walk, bvh);
         if (pending.primitive == NO_PRIMITIVE) break;
-        if (ray.filter->accepts(pending.primitive, ray, pending.hit))
+        if (ray.filter->accepts(pending.primitive, WALK_INSTANCE(walk), ray, pending.hit))
             gpu::takeCrossing(walk, pending.hit, pending.primitive);
     }
     if (counters) {

@@ -68,10 +68,14 @@ float above(double x) {
     return std::nextafter(static_cast<float>(x), std::numeric_limits<float>::max());
 }
 
+static_assert(SceneInstance::kKeepMaterial == INSTANCE_OWN_MATERIALS,
+              "a scene instance's material carries over to the device record as it is");
+
 // A placement of bottom level `level` by objectToWorld, before the top level orders them.
 struct Placement {
     std::uint32_t level;
     glm::dmat4 objectToWorld;
+    std::uint32_t material = INSTANCE_OWN_MATERIALS;
 };
 
 // Adds a bottom level's counts to the whole's; returns its depth.
@@ -86,7 +90,7 @@ std::uint32_t addStats(const BvhTree& tree, const BvhBuildOptions& options, BvhS
 } // namespace
 
 gpu::Instance makeGpuInstance(const glm::dmat4& objectToWorld, std::uint32_t root,
-                              std::uint32_t mesh) {
+                              std::uint32_t mesh, std::uint32_t material) {
     const glm::dmat4 worldToObject = glm::inverse(objectToWorld);
     gpu::Instance x{};
     x.worldToObject0 = row(worldToObject, 0);
@@ -95,6 +99,7 @@ gpu::Instance makeGpuInstance(const glm::dmat4& objectToWorld, std::uint32_t roo
     x.root = root;
     x.flags = glm::determinant(glm::dmat3(objectToWorld)) < 0.0 ? INSTANCE_MIRRORED : 0u;
     x.mesh = mesh;
+    x.material = material;
     x.objectToWorld0 = row(objectToWorld, 0);
     x.objectToWorld1 = row(objectToWorld, 1);
     x.objectToWorld2 = row(objectToWorld, 2);
@@ -139,7 +144,8 @@ void prepareTwoLevel(const Scene& scene, const PrepareOptions& options, bool wit
             buildBottomLevel(mesh, {}, scene, options, withUvs, withTangents, prepared));
     }
     for (const SceneInstance& instance : scene.instances)
-        placements.push_back({firstMeshLevel + instance.mesh, instance.objectToWorld});
+        placements.push_back(
+            {firstMeshLevel + instance.mesh, instance.objectToWorld, instance.material});
     VKPT_ASSERT(prepared.triangles.size() < BVH_MAX_TRIANGLES, "primitive count fits a leaf word");
 
     std::vector<Aabb> bounds;
@@ -155,7 +161,7 @@ void prepareTwoLevel(const Scene& scene, const PrepareOptions& options, bool wit
     for (std::uint32_t placement : prepared.instanceTree.primitiveOrder) {
         const Placement& p = placements[placement];
         prepared.instances.push_back(
-            makeGpuInstance(p.objectToWorld, levels[p.level].mesh.rootNode, p.level));
+            makeGpuInstance(p.objectToWorld, levels[p.level].mesh.rootNode, p.level, p.material));
     }
 
     prepared.bvhStats = computeBvhStats(prepared.instanceTree, top);

@@ -15,9 +15,10 @@ void prepareTwoLevel(const Scene& scene, const PrepareOptions& options, bool wit
                      bool withTangents, PreparedScene& prepared);
 
 // The instance record of a placement by objectToWorld of the tree whose root is node `root`
-// (its inverse computed in double, both rounded to float once).
+// (its inverse computed in double, both rounded to float once); `material` replaces every
+// triangle's (INSTANCE_OWN_MATERIALS: none does).
 gpu::Instance makeGpuInstance(const glm::dmat4& objectToWorld, std::uint32_t root,
-                              std::uint32_t mesh);
+                              std::uint32_t mesh, std::uint32_t material = INSTANCE_OWN_MATERIALS);
 
 // A float box that holds `own` placed by objectToWorld: the eight corners transformed in double,
 // then widened by one float step on each side for the rounding.

@@ -5,9 +5,9 @@
 
 namespace vkpt {
 
-bool AlphaMaskFilter::accepts(std::uint32_t primitive, const RayQuery& ray,
+bool AlphaMaskFilter::accepts(std::uint32_t primitive, std::uint32_t instance, const RayQuery& ray,
                               const gpu::TriangleHit& hit) const {
-    return !gpu::isCutOut(primitive, hit, ray.origin, ray.direction, view_);
+    return !gpu::isCutOut(primitive, instance, hit, ray.origin, ray.direction, view_);
 }
 
 } // namespace vkpt

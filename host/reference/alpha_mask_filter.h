@@ -11,7 +11,7 @@ namespace vkpt {
 class AlphaMaskFilter final : public HitFilter {
 public:
     explicit AlphaMaskFilter(const PreparedScene& scene) : view_(makeSceneView(scene)) {}
-    bool accepts(std::uint32_t primitive, const RayQuery& ray,
+    bool accepts(std::uint32_t primitive, std::uint32_t instance, const RayQuery& ray,
                  const gpu::TriangleHit& hit) const override;
 
 private:

@@ -3,6 +3,7 @@
 #include "scene/gltf_instancing_plan.h"
 
 #include <cstdint>
+#include <map>
 
 #include "scene/gltf_document.h"
 #include "scene/gltf_mesh_instancing.h"
@@ -43,8 +44,14 @@ std::uint64_t meshTriangleCount(const tinygltf::Model& model, const tinygltf::Me
     return count;
 }
 
-bool instances(const InstancingPlan& plan, std::size_t mesh, Instancing mode) {
-    if (plan.placements[mesh] == 0 || plan.meshTriangles[mesh] == 0) return false;
+int attributeAccessor(const tinygltf::Primitive& primitive, const char* name) {
+    const auto found = primitive.attributes.find(name);
+    return found == primitive.attributes.end() ? -1 : found->second;
+}
+
+// Whether a group of `placements` placements of `triangles` triangles is kept once.
+bool instances(std::uint64_t placements, std::uint64_t triangles, Instancing mode) {
+    if (placements == 0 || triangles == 0) return false;
     switch (mode) {
     case Instancing::On:
         return true;
@@ -53,20 +60,61 @@ bool instances(const InstancingPlan& plan, std::size_t mesh, Instancing mode) {
     case Instancing::Auto:
         break;
     }
-    return plan.placedTriangles >= kInstancingMinPlacedTriangles &&
-           plan.placements[mesh] >= kInstancingMinPlacements;
+    if (placements < kInstancingMinPlacements) return false;
+    const std::uint64_t flattened =
+        saturatingMultiply(saturatingMultiply(placements, triangles), kBytesPerPlacedTriangle);
+    const std::uint64_t kept = saturatingAdd(saturatingMultiply(triangles, kBytesPerPlacedTriangle),
+                                             saturatingMultiply(placements, kBytesPerInstance));
+    return flattened > kept && flattened - kept >= kInstancingMinSavedBytes;
 }
 
 } // namespace
 
-InstancingPlan planInstancing(const tinygltf::Model& model, int sceneIndex, Instancing mode) {
+std::vector<std::int64_t> geometryKey(const tinygltf::Model& model, int mesh,
+                                      const std::vector<SceneMaterial>& materials) {
+    const tinygltf::Mesh& source = model.meshes[static_cast<std::size_t>(mesh)];
+    std::vector<std::int64_t> key;
+    std::vector<std::int64_t> keptMaterials;
+    for (const tinygltf::Primitive& primitive : source.primitives) {
+        const int material = primitive.material;
+        const bool known = material >= 0 && static_cast<std::size_t>(material) < materials.size();
+        if (known && materials[static_cast<std::size_t>(material)].emits()) continue;
+        const bool normalMapped =
+            known && materials[static_cast<std::size_t>(material)].hasNormalMap();
+        const bool masked =
+            known && materials[static_cast<std::size_t>(material)].alphaMode == AlphaMode::Mask;
+        key.insert(key.end(),
+                   {primitive.mode, primitive.indices, attributeAccessor(primitive, "POSITION"),
+                    attributeAccessor(primitive, "NORMAL"),
+                    attributeAccessor(primitive, "TEXCOORD_0"),
+                    attributeAccessor(primitive, "TANGENT"), normalMapped ? 1 : 0, masked ? 1 : 0});
+        // Morph targets and compressed data: not compared, the mesh's own; an unknown material
+        // (the loader names it): the same.
+        if (!primitive.targets.empty() || !primitive.extensions.empty() ||
+            (material != -1 && !known))
+            key.push_back(-2 - std::int64_t(mesh));
+        keptMaterials.push_back(material);
+    }
+    if (keptMaterials.size() > 1) key.insert(key.end(), keptMaterials.begin(), keptMaterials.end());
+    return key;
+}
+
+InstancingPlan planInstancing(const tinygltf::Model& model, int sceneIndex, Instancing mode,
+                              const std::vector<SceneMaterial>& materials) {
     const std::size_t meshCount = model.meshes.size();
     InstancingPlan plan;
     plan.instanced.assign(meshCount, 0);
+    plan.geometry.assign(meshCount, -1);
     plan.placements.assign(meshCount, 0);
     plan.meshTriangles.assign(meshCount, 0);
-    for (std::size_t m = 0; m < meshCount; ++m)
+    std::map<std::vector<std::int64_t>, int> firstOfGeometry;
+    for (std::size_t m = 0; m < meshCount; ++m) {
         plan.meshTriangles[m] = meshTriangleCount(model, model.meshes[m]);
+        std::vector<std::int64_t> key = geometryKey(model, static_cast<int>(m), materials);
+        if (key.empty()) continue;
+        plan.geometry[m] =
+            firstOfGeometry.try_emplace(std::move(key), static_cast<int>(m)).first->second;
+    }
     try {
         walkSceneNodes(model, sceneIndex, [&](int node, const glm::dmat4&) {
             const int mesh = model.nodes[static_cast<std::size_t>(node)].mesh;
@@ -77,11 +125,21 @@ InstancingPlan planInstancing(const tinygltf::Model& model, int sceneIndex, Inst
     } catch (const GltfProblem&) {
         return plan; // the loading walk names the problem
     }
-    for (std::size_t m = 0; m < meshCount; ++m)
+    std::vector<std::uint64_t> geometryPlacements(meshCount, 0);
+    for (std::size_t m = 0; m < meshCount; ++m) {
         plan.placedTriangles = saturatingAdd(
             plan.placedTriangles, saturatingMultiply(plan.placements[m], plan.meshTriangles[m]));
-    for (std::size_t m = 0; m < meshCount; ++m)
-        plan.instanced[m] = instances(plan, m, mode) ? 1 : 0;
+        if (plan.geometry[m] >= 0) {
+            std::uint64_t& count = geometryPlacements[static_cast<std::size_t>(plan.geometry[m])];
+            count = saturatingAdd(count, plan.placements[m]);
+        }
+    }
+    for (std::size_t m = 0; m < meshCount; ++m) {
+        if (plan.geometry[m] < 0 || plan.placements[m] == 0) continue;
+        const auto first = static_cast<std::size_t>(plan.geometry[m]);
+        plan.instanced[m] =
+            instances(geometryPlacements[first], plan.meshTriangles[first], mode) ? 1 : 0;
+    }
     return plan;
 }
 

@@ -152,10 +152,31 @@ private:
         }
         // Emitters stay in world space at every placement (light sampling lists each one).
         appendPrimitives(meshIndex, placement, PrimitiveKinds::Emitting, scene_);
-        const std::optional<std::uint32_t> slot = meshSlot(meshIndex);
+        const int geometry = plan_.geometryOf(meshIndex);
+        const std::optional<std::uint32_t> slot = meshSlot(geometry);
         if (!slot) return;
         const glm::dvec3 origin = scene_.meshes[*slot].origin;
-        scene_.instances.push_back({*slot, placement * glm::translate(glm::dmat4(1.0), origin)});
+        const std::uint32_t material =
+            geometry == meshIndex ? SceneInstance::kKeepMaterial : soleKeptMaterial(meshIndex);
+        scene_.instances.push_back(
+            {*slot, placement * glm::translate(glm::dmat4(1.0), origin), material});
+    }
+
+    // The material of a mesh that places another mesh's geometry: of its one primitive that
+    // does not emit (the plan groups meshes of several such primitives only when their
+    // materials agree, and then the triangles keep theirs).
+    std::uint32_t soleKeptMaterial(int meshIndex) {
+        const tinygltf::Mesh& mesh = model_.meshes[static_cast<std::size_t>(meshIndex)];
+        std::optional<std::uint32_t> sole;
+        for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+            const std::string where =
+                "mesh " + std::to_string(meshIndex) + ", primitive " + std::to_string(p);
+            const std::uint32_t material = materialIndex(mesh.primitives[p].material, where);
+            if (scene_.materials[material].emits()) continue;
+            if (sole) return SceneInstance::kKeepMaterial;
+            sole = material;
+        }
+        return sole.value_or(SceneInstance::kKeepMaterial);
     }
 
     // The mesh's own copy in Scene::meshes, read at its first placement; nullopt when it has no
@@ -409,7 +430,8 @@ Scene buildScene(const GltfSceneSource::Parsed& parsed, const LoadOptions& optio
     std::optional<gltf::ScenePose> pose;
     if (options.time) pose = gltf::poseAt(model, parsed.animations, playing, *options.time);
     const gltf::ScenePose* posed = pose ? &*pose : nullptr;
-    const gltf::InstancingPlan plan = gltf::planInstancing(model, sceneIndex, options.instancing);
+    const gltf::InstancingPlan plan =
+        gltf::planInstancing(model, sceneIndex, options.instancing, scene.materials);
     // First the scene's extent in double, so that a far-away scene is recentred before its
     // positions are rounded to float.
     const std::optional<gltf::WorldExtent> extent =

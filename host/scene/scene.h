@@ -199,6 +199,11 @@ struct SceneMesh : TriangleSoup {
 struct SceneInstance {
     std::uint32_t mesh = 0;        // index into Scene::meshes
     glm::dmat4 objectToWorld{1.0}; // affine; after the recentring (worldOrigin)
+    // The material of every triangle of this placement, for a mesh of one material whose
+    // geometry other glTF meshes share with other materials ("Shared geometry"); kKeepMaterial:
+    // each triangle's own.
+    std::uint32_t material = kKeepMaterial;
+    static constexpr std::uint32_t kKeepMaterial = 0xffffffffu;
 };
 
 // An animation of the file (docs/scene-model.md, "Animation"), for listing: the loader has

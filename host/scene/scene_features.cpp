@@ -45,6 +45,8 @@ std::vector<char> usedMaterials(const Scene& scene) {
     for (const SceneMesh& mesh : scene.meshes) // the loader keeps only meshes it places
         for (std::uint32_t material : mesh.materialIndices)
             used[material] = 1;
+    for (const SceneInstance& instance : scene.instances)
+        if (instance.material != SceneInstance::kKeepMaterial) used[instance.material] = 1;
     for (const SceneSphere& sphere : scene.spheres)
         used[sphere.material] = 1;
     return used;

@@ -55,7 +55,7 @@ Traversal walkBvh(vec3 origin, vec3 direction, float tMin, float tMax, bool stop
     do {
         pending = continueWideWalk(walk);
         if (featureAlphaMask && pending.primitive != NO_PRIMITIVE &&
-            !isCutOut(pending.primitive, pending.hit, origin, direction))
+            !isCutOut(pending.primitive, WALK_INSTANCE(walk), pending.hit, origin, direction))
             takeCrossing(walk, pending.hit, pending.primitive);
     } while (featureAlphaMask && pending.primitive != NO_PRIMITIVE);
     Traversal result;

@@ -150,15 +150,18 @@ VKPT_FN bool isAlphaMaskedPrimitive(Triangle primitive) {
 // reads; 3–6 what shading reads.
 #define NO_INSTANCE 0xffffffffu
 #define INSTANCE_MIRRORED 1u // objectToWorld has a negative determinant: the front face turns over
+// Instance::material of a placement whose triangles keep their own materials (the scene's own
+// geometry, a mesh of several materials).
+#define INSTANCE_OWN_MATERIALS 0xffffffffu
 
 struct Instance {
     vec4 worldToObject0; // rows of the 3×4 inverse transform
     vec4 worldToObject1;
     vec4 worldToObject2;
-    uint root;  // node index of the mesh's BVH root in bvhNodes
-    uint flags; // INSTANCE_*
-    uint mesh;  // index of the mesh (statistics and tests)
-    uint unused0;
+    uint root;           // node index of the mesh's BVH root in bvhNodes
+    uint flags;          // INSTANCE_*
+    uint mesh;           // index of the mesh (statistics and tests)
+    uint material;       // every triangle's material (shared geometry), or INSTANCE_OWN_MATERIALS
     vec4 objectToWorld0; // rows of the 3×4 transform
     vec4 objectToWorld1;
     vec4 objectToWorld2;

@@ -61,11 +61,25 @@ VKPT_FN vec4 sampleSlot(TextureSlot slot, vec2 uv, bool srgb VKPT_SCENE_PARAM) {
                          srgb VKPT_SCENE_ARG);
 }
 
-// Alpha MASK: whether a ray crossing primitive `index` at (u, v) (a sphere: its outward normal
-// there) passes through, alpha = baseColor.a × baseColorTexture.a below the cutoff.
-VKPT_FN bool alphaMasked(uint index, Triangle primitive, float u, float v,
+// A primitive's material as `instance` places it: the instance's where it carries one (geometry
+// that meshes of other materials share, docs/scene-model.md), else the primitive's own.
+// NO_INSTANCE: the primitive's own.
+VKPT_FN uint placedMaterialIndex(uint instance, Triangle primitive VKPT_SCENE_PARAM) {
+#if VKPT_INSTANCES
+    if (sceneHasInstances(VKPT_SCENE_ARG_ONLY) && instance != NO_INSTANCE) {
+        uint material = sceneInstance(instance VKPT_SCENE_ARG).material;
+        if (material != INSTANCE_OWN_MATERIALS) return material;
+    }
+#endif
+    return primitive.materialIndex;
+}
+
+// Alpha MASK: whether a ray crossing primitive `index` of material `material` at (u, v) (a
+// sphere: its outward normal there) passes through, alpha = baseColor.a × baseColorTexture.a
+// below the cutoff.
+VKPT_FN bool alphaMasked(uint index, Triangle primitive, uint material, float u, float v,
                          vec3 sphereNormal VKPT_SCENE_PARAM) {
-    Material m = sceneMaterial(primitive.materialIndex VKPT_SCENE_ARG);
+    Material m = sceneMaterial(material VKPT_SCENE_ARG);
     if (m.alphaMode != ALPHA_MODE_MASK) return false;
     float alpha = m.baseColor.w;
     if (hasTexture(m.baseColorTexture VKPT_SCENE_ARG)) {
@@ -75,14 +89,17 @@ VKPT_FN bool alphaMasked(uint index, Triangle primitive, float u, float v,
     return alpha < m.alphaCutoff;
 }
 
-// Whether crossing `h` of primitive `index` by the ray from `origin` along `direction` lies in
-// an alpha-masked material's cut-out: the question every BVH walk asks of such a crossing.
-VKPT_FN bool isCutOut(uint index, TriangleHit h, vec3 origin, vec3 direction VKPT_SCENE_PARAM) {
+// Whether crossing `h` of primitive `index` (placed by `instance`, NO_INSTANCE in the world's
+// own geometry) by the ray from `origin` along `direction` lies in an alpha-masked material's
+// cut-out: the question every BVH walk asks of such a crossing.
+VKPT_FN bool isCutOut(uint index, uint instance, TriangleHit h, vec3 origin,
+                      vec3 direction VKPT_SCENE_PARAM) {
     Triangle primitive = scenePrimitive(index VKPT_SCENE_ARG);
     bool sphere = sceneHasSpheres(VKPT_SCENE_ARG_ONLY) && isSpherePrimitive(primitive);
     vec3 sphereNormal =
         sphere ? sphereNormalAt(origin + h.t * direction, primitive.v0) : vec3(0.0f);
-    return alphaMasked(index, primitive, h.u, h.v, sphereNormal VKPT_SCENE_ARG);
+    return alphaMasked(index, primitive, placedMaterialIndex(instance, primitive VKPT_SCENE_ARG),
+                       h.u, h.v, sphereNormal VKPT_SCENE_ARG);
 }
 
 // Emission leaves the front face only, unless the material is double-sided.

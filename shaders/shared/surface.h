@@ -169,7 +169,8 @@ VKPT_FN vec3 clearcoatLocalNormal(SurfacePoint s, Material m, TriangleHit hit, v
 // s.outgoing for the normal texture's bend.
 VKPT_FN void fillMaterial(VKPT_INOUT(SurfacePoint) s, Triangle primitive,
                           TriangleHit hit VKPT_SCENE_PARAM) {
-    Material m = sceneMaterial(primitive.materialIndex VKPT_SCENE_ARG);
+    Material m =
+        sceneMaterial(placedMaterialIndex(s.instance, primitive VKPT_SCENE_ARG) VKPT_SCENE_ARG);
     vec4 baseColor = m.baseColor;
     float metallic = m.metallic;
     float roughness = m.roughness;

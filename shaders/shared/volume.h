@@ -32,8 +32,8 @@ VKPT_FN float segmentLength(vec3 direction, float t) {
 // The medium (its σ; 0 outside every volume) after a transmission through s: a thin wall
 // changes nothing; a volume material's front face enters its medium, its back face leaves it.
 VKPT_FN vec3 mediumAfterTransmission(vec3 current, SurfacePoint s VKPT_SCENE_PARAM) {
-    Material m =
-        sceneMaterial(scenePrimitive(s.triangle VKPT_SCENE_ARG).materialIndex VKPT_SCENE_ARG);
+    Material m = sceneMaterial(placedMaterialIndex(
+        s.instance, scenePrimitive(s.triangle VKPT_SCENE_ARG) VKPT_SCENE_ARG) VKPT_SCENE_ARG);
     if (!(m.thickness > 0.0f)) return current;
     return s.frontFace ? m.attenuationCoefficient : vec3(0.0f);
 }

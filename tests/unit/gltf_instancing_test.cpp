@@ -13,6 +13,8 @@ namespace vkpt {
 namespace {
 
 const std::string kInstancingScene = VKPT_SCENES_DIR "/loader/instancing.gltf";
+// shared_geometry.gltf: one triangle's accessors used by two meshes of different materials.
+const std::string kSharedGeometryScene = VKPT_SCENES_DIR "/loader/shared_geometry.gltf";
 
 // instancing.gltf: one triangle mesh placed 6 times (2 nodes, 1 mirrored node, 3
 // EXT_mesh_gpu_instancing instances), an emissive quad mesh placed twice.
@@ -126,16 +128,103 @@ TEST(GltfInstancingPlan, CountsPlacementsAndTriangles) {
     tinygltf::TinyGLTF io;
     std::string error, warning;
     ASSERT_TRUE(io.LoadASCIIFromFile(&model, &error, &warning, kInstancingScene)) << error;
-    const gltf::InstancingPlan plan = gltf::planInstancing(model, 0, Instancing::Auto);
+    const std::vector<SceneMaterial> materials = loadGltfScene(kInstancingScene, {}).materials;
+    const gltf::InstancingPlan plan = gltf::planInstancing(model, 0, Instancing::Auto, materials);
     ASSERT_EQ(plan.placements.size(), 2u);
     EXPECT_EQ(plan.placements[0], kTrianglePlacements);
     EXPECT_EQ(plan.placements[1], 2u);
     EXPECT_EQ(plan.meshTriangles[0], 1u);
     EXPECT_EQ(plan.meshTriangles[1], 2u);
     EXPECT_EQ(plan.placedTriangles, kTrianglePlacements + kLampTriangles);
-    EXPECT_FALSE(plan.isInstanced(0)); // far below kInstancingMinPlacedTriangles
-    EXPECT_TRUE(gltf::planInstancing(model, 0, Instancing::On).isInstanced(0));
-    EXPECT_FALSE(gltf::planInstancing(model, 0, Instancing::Off).isInstanced(0));
+    EXPECT_FALSE(plan.isInstanced(0)); // saves far less than kInstancingMinSavedBytes
+    EXPECT_TRUE(gltf::planInstancing(model, 0, Instancing::On, materials).isInstanced(0));
+    EXPECT_FALSE(gltf::planInstancing(model, 0, Instancing::Off, materials).isInstanced(0));
+}
+
+// A model of meshes that refer to accessors by index only (the plan reads no data): each
+// primitive (indices, POSITION, material), every mesh placed once by a node of scene 0.
+struct PrimitiveSpec {
+    int indices;
+    int position;
+    int material;
+};
+
+tinygltf::Model modelOfMeshes(const std::vector<std::vector<PrimitiveSpec>>& meshes,
+                              std::size_t trianglesPerAccessor) {
+    tinygltf::Model model;
+    for (int a = 0; a < 3; ++a) {
+        tinygltf::Accessor accessor;
+        accessor.count = 3 * trianglesPerAccessor;
+        model.accessors.push_back(accessor);
+    }
+    tinygltf::Scene scene;
+    for (const std::vector<PrimitiveSpec>& specs : meshes) {
+        tinygltf::Mesh mesh;
+        for (const PrimitiveSpec& spec : specs) {
+            tinygltf::Primitive primitive;
+            primitive.indices = spec.indices;
+            primitive.attributes["POSITION"] = spec.position;
+            primitive.material = spec.material;
+            primitive.mode = TINYGLTF_MODE_TRIANGLES;
+            mesh.primitives.push_back(primitive);
+        }
+        tinygltf::Node node;
+        node.mesh = static_cast<int>(model.meshes.size());
+        scene.nodes.push_back(static_cast<int>(model.nodes.size()));
+        model.nodes.push_back(node);
+        model.meshes.push_back(mesh);
+    }
+    model.scenes.push_back(scene);
+    model.defaultScene = 0;
+    return model;
+}
+
+// Meshes that share their index and POSITION accessors are one geometry whatever their one
+// material, alpha-masked ones apart from the others (the triangle marks that the walk tests its
+// alpha); meshes of several primitives share only with the same materials, in the same order;
+// emitters do not count.
+TEST(GltfGeometryGrouping, GroupsMeshesByAccessors) {
+    std::vector<SceneMaterial> materials(5);
+    materials[2].alphaMode = AlphaMode::Mask;
+    materials[3].alphaMode = AlphaMode::Mask;
+    materials[4].emission = glm::vec3(1.0f);
+    const tinygltf::Model model = modelOfMeshes(
+        {
+            {{0, 1, 0}},            // 0
+            {{0, 1, 1}},            // 1: 0's geometry, another material
+            {{0, 1, 2}},            // 2: masked
+            {{0, 1, 3}},            // 3: 2's geometry, masked otherwise
+            {{0, 2, 0}},            // 4: other positions
+            {{0, 1, 1}, {0, 2, 4}}, // 5: 0's geometry and an emitter
+            {{0, 1, 0}, {0, 2, 1}}, // 6
+            {{0, 1, 0}, {0, 2, 1}}, // 7: 6's
+            {{0, 1, 1}, {0, 2, 0}}, // 8: 6's geometry, other materials
+            {{0, 2, 4}},            // 9: emits only: nothing kept
+        },
+        20000);
+    const gltf::InstancingPlan plan = gltf::planInstancing(model, 0, Instancing::Auto, materials);
+    EXPECT_EQ(plan.geometry, (std::vector<int>{0, 0, 2, 2, 4, 0, 6, 6, 8, -1}));
+    // Auto: 0's geometry is placed 3 times, 2's and 6's twice, each saving megabytes; the others
+    // once.
+    EXPECT_EQ(plan.instanced, (std::vector<char>{1, 1, 1, 1, 0, 1, 1, 1, 0, 0}));
+    // 1,000 triangles placed twice save 115 kB, under kInstancingMinSavedBytes: flattened.
+    const gltf::InstancingPlan small = gltf::planInstancing(
+        modelOfMeshes({{{0, 1, 0}}, {{0, 1, 1}}}, 1000), 0, Instancing::Auto, materials);
+    EXPECT_EQ(small.geometry, (std::vector<int>{0, 0}));
+    EXPECT_EQ(small.instanced, (std::vector<char>{0, 0}));
+}
+
+// Loaded, meshes of one geometry share one kept copy; an instance of another mesh than the
+// copy's carries its own material.
+TEST(GltfGeometryGrouping, InstancesCarryTheirMaterial) {
+    LoadOptions options;
+    options.instancing = Instancing::On;
+    const Scene scene = loadGltfScene(kSharedGeometryScene, options);
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    ASSERT_EQ(scene.instances.size(), 2u);
+    EXPECT_EQ(scene.instances[0].material, SceneInstance::kKeepMaterial);
+    EXPECT_EQ(scene.instances[1].material, 1u);
+    EXPECT_EQ(scene.meshes[0].materialIndices[0], 0u);
 }
 
 } // namespace

@@ -151,10 +151,10 @@ TEST(SharedSurface, TexturesScaleFactorsAndCutOutByAlpha) {
     const TriangleHit left{1.0f, 0.1f, 0.1f, true};  // uv (0.1, 0.1)
     const TriangleHit right{1.0f, 0.8f, 0.1f, true}; // uv (0.8, 0.1)
     const vec3 origin(0.0f), direction(-0.5f, -0.5f, -1.0f);
-    EXPECT_FALSE(isCutOut(0u, left, origin, direction, scene.view()));
+    EXPECT_FALSE(isCutOut(0u, NO_INSTANCE, left, origin, direction, scene.view()));
     scene.features[FEATURE_TEXTURES] = true;
-    EXPECT_TRUE(isCutOut(0u, left, origin, direction, scene.view()));
-    EXPECT_FALSE(isCutOut(0u, right, origin, direction, scene.view()));
+    EXPECT_TRUE(isCutOut(0u, NO_INSTANCE, left, origin, direction, scene.view()));
+    EXPECT_FALSE(isCutOut(0u, NO_INSTANCE, right, origin, direction, scene.view()));
     SurfacePoint s = makeSurfacePoint(0u, NO_INSTANCE, left, origin, direction, scene.view());
     EXPECT_EQ(s.shading.baseColor, vec3(0.5f, 0.0f, 0.0f));
 }

@@ -44,7 +44,7 @@ void alphaMaskFilterFunction(const RTCFilterFunctionNArguments* args) {
                      {RTCRayN_dir_x(r, n, i), RTCRayN_dir_y(r, n, i), RTCRayN_dir_z(r, n, i)}};
         gpu::TriangleHit hit{RTCRayN_tfar(r, n, i), RTCHitN_u(h, n, i), RTCHitN_v(h, n, i), true};
         std::uint32_t primitive = info->primitives[RTCHitN_primID(h, n, i)];
-        if (!info->alphaMask->accepts(primitive, ray, hit)) args->valid[i] = 0;
+        if (!info->alphaMask->accepts(primitive, NO_INSTANCE, ray, hit)) args->valid[i] = 0;
     }
 }
 
