@@ -167,6 +167,12 @@ void addSceneOptions(CommandLine& cl, RenderSettings& s) {
             "meshes placed many times kept once under a top-level BVH: auto (default: large "
             "scenes), on (every mesh), off (all flattened)",
             [&s](auto v) { s.instancing = parseInstancing(v[0]); }});
+    cl.add({"variant",
+            {},
+            "NAME|N",
+            "KHR_materials_variants: show variant NAME (or number N) instead of the default "
+            "materials (--verbose lists them)",
+            [&s](auto v) { s.variant = v[0]; }});
     cl.add({"verbose", {'v'}, "", "print the scene's feature set and setup details", [&s](auto) {
                 s.verbose = true;
             }});

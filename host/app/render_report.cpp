@@ -43,6 +43,7 @@ void writeSettings(JsonWriter& json, const RenderSettings& s) {
     json.field("instancing", s.instancing == Instancing::Auto ? "auto"
                              : s.instancing == Instancing::On ? "on"
                                                               : "off");
+    json.field("variant", s.variant); // "" = the default materials
     json.endObject();
 }
 
@@ -103,6 +104,7 @@ void writeFeatures(JsonWriter& json, const RenderReport& r) {
     json.field("clearcoatMaterials", f.clearcoatMaterials);
     json.field("sheenMaterials", f.sheenMaterials);
     json.field("clearcoatTextures", f.clearcoatTextures).field("sheenTextures", f.sheenTextures);
+    json.field("specularTextures", f.specularTextures);
     json.field("textureCoordinates", f.textureCoordinates());
     json.field("alphaMask", f.alphaMask).field("doubleSided", f.doubleSided);
     json.field("transmission", f.transmission);

@@ -67,6 +67,9 @@ struct RenderSettings {
     DefaultLight defaultLight = DefaultLight::Auto;
     bool general = false; // --general: the all-features pipelines and buffers
     Instancing instancing = Instancing::Auto;
+    // --variant: the KHR_materials_variants variant whose materials are shown, by name or index;
+    // empty: the file's default materials.
+    std::string variant;
     bool verbose = false; // --verbose: the scene's feature set and more on stderr
     std::string statsJsonPath;
     bool quiet = false; // no progress bar

@@ -87,6 +87,8 @@ std::vector<gpu::Material> makeGpuMaterials(const std::vector<SceneMaterial>& ma
         g.clearcoatNormalScale = m.clearcoatNormalScale;
         g.sheenColorTexture = makeSlot(m.sheenColorTexture);
         g.sheenRoughnessTexture = makeSlot(m.sheenRoughnessTexture);
+        g.specularTexture = makeSlot(m.specularTexture);
+        g.specularColorTexture = makeSlot(m.specularColorTexture);
         result.push_back(g);
     }
     return result;

@@ -26,6 +26,7 @@
 #include "scene/gltf_primitives.h"
 #include "scene/gltf_shapes.h"
 #include "scene/gltf_textures.h"
+#include "scene/gltf_variants.h"
 
 namespace vkpt {
 namespace {
@@ -157,7 +158,10 @@ private:
             const std::string where =
                 "mesh " + std::to_string(meshIndex) + ", primitive " + std::to_string(p);
             const tinygltf::Primitive& primitive = mesh.primitives[p];
-            const std::uint32_t material = materialIndex(primitive.material, where);
+            const std::uint32_t material =
+                materialIndex(gltf::variantMaterial(primitive, scene_.materialVariant,
+                                                    scene_.materialVariants.size(), where),
+                              where);
             const bool emitting = scene_.materials[material].emits();
             if ((kinds == PrimitiveKinds::Emitting && !emitting) ||
                 (kinds == PrimitiveKinds::NotEmitting && emitting))
@@ -293,6 +297,8 @@ Scene buildScene(const std::string& path, const LoadOptions& options) {
     scene.sourcePath = path;
     gltf::TextureTable textures(model, scene.textures, scene.images);
     scene.materials = gltf::convertMaterials(model, textures);
+    scene.materialVariants = gltf::materialVariantNames(model);
+    scene.materialVariant = gltf::chooseMaterialVariant(scene.materialVariants, options.variant);
     // TEXCOORD_0 is read only to look textures up.
     const gltf::Texcoords texcoords =
         scene.textures.empty() ? gltf::Texcoords::Skip : gltf::Texcoords::Read;

@@ -69,6 +69,7 @@ void addMaterial(const SceneMaterial& material, SceneFeatures& features) {
         features.sheenTextures |=
             material.sheenColorTexture.texture >= 0 || material.sheenRoughnessTexture.texture >= 0;
     }
+    features.specularTextures |= material.hasSpecularTextures();
     features.alphaMask |= material.alphaMode == AlphaMode::Mask;
     features.doubleSided |= material.doubleSided;
     features.transmission |= material.usesDielectricExtensions();
@@ -132,6 +133,7 @@ std::array<bool, FEATURE_COUNT> SceneFeatures::kernelFeatures() const {
     on[FEATURE_SHEEN] = sheenMaterials;
     on[FEATURE_INSTANCES] = instances;
     on[FEATURE_LIGHT_TREE] = lightTree;
+    on[FEATURE_SPECULAR_TEXTURES] = specularTextures;
     return on;
 }
 
@@ -162,7 +164,7 @@ SceneFeatures generalFeatures(const SceneFeatures& used) {
     all.normalTextures = all.transmissionTextures = true;
     all.alphaMask = all.doubleSided = all.transmission = true;
     all.clearcoatMaterials = all.sheenMaterials = true;
-    all.clearcoatTextures = all.sheenTextures = true;
+    all.clearcoatTextures = all.sheenTextures = all.specularTextures = true;
     all.triangles = all.spheres = true;
     all.emissiveTriangles = all.emissiveSpheres = true;
     all.pointLights = all.spotLights = all.directionalLights = true;
@@ -188,6 +190,7 @@ std::string describeFeatures(const SceneFeatures& features) {
     appendIf(features.transmissionTextures, "transmission", textures);
     appendIf(features.clearcoatTextures, "clearcoat", textures);
     appendIf(features.sheenTextures, "sheen", textures);
+    appendIf(features.specularTextures, "specular", textures);
     if (!textures.empty()) names.push_back("textures (" + joined(textures) + ")");
     appendIf(features.alphaMask, "alpha mask", names);
     appendIf(features.doubleSided, "double-sided", names);

@@ -30,6 +30,7 @@ struct SceneFeatures {
     bool sheenMaterials = false;     // KHR_materials_sheen layers present
     bool clearcoatTextures = false;  // clearcoat or clearcoat roughness textures
     bool sheenTextures = false;      // sheen colour or sheen roughness textures
+    bool specularTextures = false;   // KHR_materials_specular textures on a GGX material
     bool triangles = false;
     bool spheres = false;
     // Meshes placed by instances: a two-level BVH. A layout, not an optional feature: --general
@@ -50,7 +51,8 @@ struct SceneFeatures {
 
     bool textures() const {
         return baseColorTextures || metallicRoughnessTextures || emissiveTextures ||
-               normalTextures || transmissionTextures || clearcoatTextures || sheenTextures;
+               normalTextures || transmissionTextures || clearcoatTextures || sheenTextures ||
+               specularTextures;
     }
     // TEXCOORD_0 is needed only to read textures.
     bool textureCoordinates() const { return textures(); }

@@ -20,6 +20,7 @@ const bool featureMetallicRoughness = false;
 const bool featureTransmission = false;
 const bool featureClearcoat = false;
 const bool featureSheen = false;
+const bool featureSpecularTextures = false;
 #else
 // glTF GGX materials (diffuse-only scenes keep the Lambertian BSDF alone).
 layout(constant_id = FEATURE_METALLIC_ROUGHNESS) const bool featureMetallicRoughness = true;
@@ -29,6 +30,8 @@ layout(constant_id = FEATURE_TRANSMISSION) const bool featureTransmission = true
 layout(constant_id = FEATURE_CLEARCOAT) const bool featureClearcoat = true;
 // Some material has a KHR_materials_sheen layer.
 layout(constant_id = FEATURE_SHEEN) const bool featureSheen = true;
+// Some GGX material has a KHR_materials_specular texture.
+layout(constant_id = FEATURE_SPECULAR_TEXTURES) const bool featureSpecularTextures = true;
 #endif
 // Base colour, metallic-roughness or emissive textures, and the TEXCOORD_0 they are read at.
 layout(constant_id = FEATURE_TEXTURES) const bool featureTextures = true;

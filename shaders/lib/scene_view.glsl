@@ -85,6 +85,10 @@ bool sceneHasSheen() {
     return featureSheen;
 }
 
+bool sceneHasSpecularTextures() {
+    return featureSpecularTextures;
+}
+
 bool sceneHasInstances() {
     return featureInstances;
 }

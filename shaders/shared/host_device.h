@@ -252,6 +252,11 @@ struct Material {
                                            // the base's shading normal, as the extension says)
     TextureSlot sheenColorTexture;         // sRGB; colour in .rgb
     TextureSlot sheenRoughnessTexture;     // linear; roughness in .a
+    // KHR_materials_specular's textures, 64 bytes from offset 464 (texels 29–32), read only in
+    // scenes that have them (FEATURE_SPECULAR_TEXTURES): they multiply specular and
+    // specularColor.
+    TextureSlot specularTexture;      // linear; strength in .a
+    TextureSlot specularColorTexture; // sRGB; colour in .rgb
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -353,7 +358,8 @@ struct EnvironmentParams {
 #define FEATURE_SHEEN 12
 #define FEATURE_INSTANCES 13  // a two-level BVH: meshes placed by instances
 #define FEATURE_LIGHT_TREE 14 // emitters chosen by the light BVH (lightTree), not the power CDF
-#define FEATURE_COUNT 15
+#define FEATURE_SPECULAR_TEXTURES 15 // KHR_materials_specular textures on a GGX material
+#define FEATURE_COUNT 16
 
 // ---------------------------------------------------------------------------------------------
 // The camera (shared/camera.h). Pixel (0, 0) is the top-left; a sample at (x + u, y + v) has
@@ -400,8 +406,10 @@ static_assert(offsetof(Material, normalTexture) == 160 && offsetof(Material, nor
 static_assert(offsetof(Material, transmission) == 208 && offsetof(Material, thickness) == 220 &&
               offsetof(Material, attenuationCoefficient) == 224 &&
               offsetof(Material, transmissionTexture) == 240);
-static_assert(sizeof(Material) == 464 && offsetof(Material, sheenColor) == 272 &&
-              offsetof(Material, sheenRoughness) == 284 && offsetof(Material, clearcoat) == 288 &&
+static_assert(sizeof(Material) == 528 && offsetof(Material, specularTexture) == 464 &&
+              offsetof(Material, specularColorTexture) == 496);
+static_assert(offsetof(Material, sheenColor) == 272 && offsetof(Material, sheenRoughness) == 284 &&
+              offsetof(Material, clearcoat) == 288 &&
               offsetof(Material, clearcoatRoughness) == 292 &&
               offsetof(Material, clearcoatNormalScale) == 296 &&
               offsetof(Material, clearcoatTexture) == 304 &&

@@ -165,6 +165,14 @@ VKPT_FN vec3 clearcoatLocalNormal(SurfacePoint s, Material m, TriangleHit hit, v
     return normalize(worldToBasis(makeBasis(s.shadingNormal), normal));
 }
 
+// KHR_materials_specular's strength (A of specularTexture) and colour (RGB of the sRGB
+// specularColorTexture), each factor times its texture, read only in scenes that have them.
+VKPT_FN void applySpecularTextures(VKPT_INOUT(ShadingMaterial) shading, Material m,
+                                   vec2 uv VKPT_SCENE_PARAM) {
+    shading.specular *= sampleSlot(m.specularTexture, uv, false VKPT_SCENE_ARG).w;
+    shading.specularColor *= vec3(sampleSlot(m.specularColorTexture, uv, true VKPT_SCENE_ARG));
+}
+
 // The material at the point: factors times textures (each read only when present). Needs
 // s.outgoing for the normal texture's bend.
 VKPT_FN void fillMaterial(VKPT_INOUT(SurfacePoint) s, Triangle primitive,
@@ -193,6 +201,8 @@ VKPT_FN void fillMaterial(VKPT_INOUT(SurfacePoint) s, Triangle primitive,
                              (m.flags & MATERIAL_METALLIC_ROUGHNESS) != 0u;
     s.shading = makeShadingMaterial(vec3(baseColor), metallic, roughness, m.specular,
                                     m.specularColor, metallicRoughness);
+    if (sceneHasSpecularTextures(VKPT_SCENE_ARG_ONLY) && metallicRoughness)
+        applySpecularTextures(s.shading, m, uv VKPT_SCENE_ARG);
     if (sceneHasTransmission(VKPT_SCENE_ARG_ONLY))
         applyDielectricExtensions(s.shading, m, s.frontFace, uv VKPT_SCENE_ARG);
     if (metallicRoughness) s.shading = withMaterialLayers(s.shading, m, uv VKPT_SCENE_ARG);

@@ -109,6 +109,8 @@ SharedStructs makeStructs() {
         m.clearcoatNormalTexture = makeTextureSlot(x);
         m.sheenColorTexture = makeTextureSlot(x);
         m.sheenRoughnessTexture = makeTextureSlot(x);
+        m.specularTexture = makeTextureSlot(x);
+        m.specularColorTexture = makeTextureSlot(x);
         s.materials.push_back(m);
         s.textures.push_back({x.u(), x.u(), x.u(), x.u()});
         s.emitters.push_back(

@@ -166,6 +166,8 @@ void main() {
     putTextureSlot(materials[i].clearcoatNormalTexture);
     putTextureSlot(materials[i].sheenColorTexture);
     putTextureSlot(materials[i].sheenRoughnessTexture);
+    putTextureSlot(materials[i].specularTexture);
+    putTextureSlot(materials[i].specularColorTexture);
 
     cursor = LAYOUT_OFFSET_TEXTURES + i * LAYOUT_WORDS_TEXTURE_INFO;
     putUint(textures[i].texelOffset);

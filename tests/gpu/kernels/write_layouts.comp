@@ -175,6 +175,8 @@ void main() {
     materials[i].clearcoatNormalTexture = takeTextureSlot();
     materials[i].sheenColorTexture = takeTextureSlot();
     materials[i].sheenRoughnessTexture = takeTextureSlot();
+    materials[i].specularTexture = takeTextureSlot();
+    materials[i].specularColorTexture = takeTextureSlot();
 
     cursor = LAYOUT_OFFSET_TEXTURES + i * LAYOUT_WORDS_TEXTURE_INFO;
     textures[i].texelOffset = takeUint();

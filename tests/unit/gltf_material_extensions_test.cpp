@@ -1,0 +1,151 @@
+// gltf_material_extensions_test.cpp — the loader's reading of material extensions beyond the
+// layered BSDF's factors, on the generated files of scenes/loader: KHR_materials_unlit (the base
+// colour as an emitter that reflects nothing) and KHR_materials_variants (--variant), and the
+// Khronos samples of ../shared/scenes that use them.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "../support/captured_load.h"
+#include "common/errors.h"
+#include "scene/gltf_loader.h"
+#include "scene/scene_features.h"
+
+namespace vkpt {
+namespace {
+
+const std::string kLoaderDir = VKPT_SCENES_DIR "/loader/";
+const std::string kSamplesDir = VKPT_SCENES_DIR "/../../shared/scenes/";
+
+Scene loadWithVariant(const std::string& file, const std::string& variant,
+                      std::string* notes = nullptr) {
+    LoadOptions options;
+    options.variant = variant;
+    testing::internal::CaptureStderr();
+    Scene scene;
+    try {
+        scene = loadGltfScene(kLoaderDir + file, options);
+    } catch (...) {
+        testing::internal::GetCapturedStderr();
+        throw;
+    }
+    const std::string captured = testing::internal::GetCapturedStderr();
+    if (notes != nullptr) *notes = captured;
+    return scene;
+}
+
+// A Khronos sample loads with no line saying that something was ignored or is not supported.
+void expectSampleLoadsWithoutNotes(const std::string& relative) {
+    const std::string path = kSamplesDir + relative;
+    if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " is not present";
+    std::string notes;
+    test::loadCapturingNotes(path, &notes);
+    EXPECT_EQ(notes.find("ignoring"), std::string::npos) << notes;
+    EXPECT_EQ(notes.find("not supported"), std::string::npos) << notes;
+}
+
+// --- KHR_materials_unlit ---------------------------------------------------------------------
+
+// The base colour becomes the emission (the texture moves to the emissive slot), the surface
+// reflects nothing (a black Lambertian, so no GGX code is compiled for it), and what the
+// extension says an unlit surface ignores (normal texture, KHR_materials_specular) is neither
+// read nor reported.
+TEST(GltfUnlit, BaseColourBecomesTheEmissionOfASurfaceThatReflectsNothing) {
+    std::string notes;
+    const Scene scene = loadWithVariant("unlit.gltf", "", &notes);
+    EXPECT_EQ(notes, "");
+    ASSERT_EQ(scene.materials.size(), 3u);
+    const SceneMaterial& orange = scene.materials[0];
+    EXPECT_TRUE(orange.unlit);
+    EXPECT_EQ(orange.emission, glm::vec3(1.0f, 0.25f, 0.0f));
+    EXPECT_LT(orange.emissiveTexture.texture, 0);
+    EXPECT_EQ(orange.baseColor, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+    EXPECT_TRUE(orange.isDiffuseOnly());
+    EXPECT_FALSE(orange.hasNormalMap());
+    EXPECT_FALSE(orange.doubleSided);
+    const SceneMaterial& cutOut = scene.materials[1];
+    EXPECT_EQ(cutOut.emission, glm::vec3(0.5f));
+    EXPECT_GE(cutOut.emissiveTexture.texture, 0);
+    // MASK: the texture's alpha still cuts the surface out, through the base colour slot.
+    EXPECT_EQ(cutOut.alphaMode, AlphaMode::Mask);
+    EXPECT_EQ(cutOut.baseColorTexture.texture, cutOut.emissiveTexture.texture);
+    EXPECT_EQ(glm::vec3(cutOut.baseColor), glm::vec3(0.0f));
+    EXPECT_TRUE(scene.materials[2].doubleSided);
+    const SceneFeatures features = analyseScene(scene);
+    EXPECT_FALSE(features.metallicRoughnessMaterials);
+    EXPECT_FALSE(features.normalTextures);
+    EXPECT_TRUE(features.emissiveTriangles);
+}
+
+TEST(GltfUnlit, UnlitTestSampleLoads) {
+    expectSampleLoadsWithoutNotes("UnlitTest/UnlitTest.glb");
+}
+
+// --- KHR_materials_variants ------------------------------------------------------------------
+
+// Triangle 0 is the mapped primitive, triangle 1 the unmapped one.
+std::vector<std::uint32_t> materialsUnder(const std::string& variant) {
+    const Scene scene = loadWithVariant("variants.gltf", variant);
+    return {scene.materialIndices.at(0), scene.materialIndices.at(1)};
+}
+
+TEST(GltfVariants, ListsTheVariantsAndShowsTheDefaultMaterialsUnlessOneIsChosen) {
+    std::string notes;
+    const Scene scene = loadWithVariant("variants.gltf", "", &notes);
+    EXPECT_EQ(notes, "");
+    EXPECT_EQ(scene.materialVariants, (std::vector<std::string>{"red", "green", "2"}));
+    EXPECT_EQ(scene.materialVariant, -1);
+    EXPECT_EQ(materialsUnder(""), (std::vector<std::uint32_t>{0, 0}));
+}
+
+// A name first, then an index: "2" is the variant named "2", "1" the second variant.
+TEST(GltfVariants, ChoosesByNameOrIndexAndLeavesUnmappedPrimitivesAlone) {
+    EXPECT_EQ(materialsUnder("red"), (std::vector<std::uint32_t>{1, 0}));
+    EXPECT_EQ(materialsUnder("green"), (std::vector<std::uint32_t>{2, 0}));
+    EXPECT_EQ(materialsUnder("2"), (std::vector<std::uint32_t>{2, 0}));
+    EXPECT_EQ(materialsUnder("1"), (std::vector<std::uint32_t>{2, 0}));
+    EXPECT_EQ(materialsUnder("0"), (std::vector<std::uint32_t>{1, 0}));
+    EXPECT_EQ(loadWithVariant("variants.gltf", "green").materialVariant, 1);
+}
+
+void expectVariantRejected(const std::string& file, const std::string& variant,
+                           const std::string& message) {
+    try {
+        loadWithVariant(file, variant);
+        ADD_FAILURE() << variant << " was accepted";
+    } catch (const InputError& error) {
+        EXPECT_EQ(std::string(error.what()), kLoaderDir + file + ": " + message);
+    }
+}
+
+TEST(GltfVariants, AnUnknownVariantIsOneLineListingTheFilesVariants) {
+    expectVariantRejected("variants.gltf", "blue",
+                          "--variant blue: no variant of that name or index (the file's: 0 'red', "
+                          "1 'green', 2 '2')");
+    expectVariantRejected("variants.gltf", "3",
+                          "--variant 3: no variant of that name or index (the file's: 0 'red', "
+                          "1 'green', 2 '2')");
+    expectVariantRejected("glass.gltf", "red",
+                          "--variant red: the file has no KHR_materials_variants");
+}
+
+TEST(GltfVariants, MaterialsVariantsShoeSampleLoadsEachVariant) {
+    expectSampleLoadsWithoutNotes("MaterialsVariantsShoe/MaterialsVariantsShoe.gltf");
+    const std::string path = kSamplesDir + "MaterialsVariantsShoe/MaterialsVariantsShoe.gltf";
+    if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " is not present";
+    for (const char* variant : {"midnight", "beach", "street"}) {
+        LoadOptions options;
+        options.variant = variant;
+        testing::internal::CaptureStderr();
+        const Scene scene = loadGltfScene(path, options);
+        testing::internal::GetCapturedStderr();
+        ASSERT_GT(scene.triangleCount(), 0u);
+        // The shoe's one primitive maps variant i to material i.
+        EXPECT_EQ(scene.materialIndices[0], std::uint32_t(scene.materialVariant)) << variant;
+    }
+}
+
+} // namespace
+} // namespace vkpt
