@@ -89,6 +89,10 @@ std::vector<gpu::Material> makeGpuMaterials(const std::vector<SceneMaterial>& ma
         g.sheenRoughnessTexture = makeSlot(m.sheenRoughnessTexture);
         g.specularTexture = makeSlot(m.specularTexture);
         g.specularColorTexture = makeSlot(m.specularColorTexture);
+        g.anisotropyStrength = m.hasAnisotropy() ? m.anisotropyStrength : 0.0f;
+        g.anisotropyRotationCos = float(std::cos(double(m.anisotropyRotation)));
+        g.anisotropyRotationSin = float(std::sin(double(m.anisotropyRotation)));
+        g.anisotropyTexture = makeSlot(m.anisotropyTexture);
         result.push_back(g);
     }
     return result;

@@ -65,7 +65,7 @@ public:
                  const gltf::InstancingPlan& plan)
         : model_(model), scene_(scene), texcoords_(texcoords), plan_(plan),
           withTangents_(std::any_of(scene.materials.begin(), scene.materials.end(),
-                                    [](const SceneMaterial& m) { return m.hasNormalMap(); })),
+                                    [](const SceneMaterial& m) { return m.needsTangents(); })),
           meshSlots_(model.meshes.size()) {}
 
     void visitNode(int nodeIndex, const glm::dmat4& world) {
@@ -191,12 +191,12 @@ private:
         scene_.cameras.push_back(gltf::placeCamera(model_, nodeIndex, world));
     }
 
-    // Tangents only where a scene has normal textures, generated or read only for the
-    // primitives whose material has one.
+    // Tangents only where a scene has normal textures or anisotropy, generated or read only for
+    // the primitives whose material needs them.
     gltf::Tangents tangentsFor(std::uint32_t material) const {
         if (!withTangents_) return gltf::Tangents::Skip;
-        return scene_.materials[material].hasNormalMap() ? gltf::Tangents::Read
-                                                         : gltf::Tangents::Zero;
+        return scene_.materials[material].needsTangents() ? gltf::Tangents::Read
+                                                          : gltf::Tangents::Zero;
     }
 
     // glTF material indices carry over; a primitive without one gets the default material,
@@ -223,7 +223,7 @@ private:
     Scene& scene_;
     gltf::Texcoords texcoords_;
     const gltf::InstancingPlan& plan_;
-    bool withTangents_; // some material has a normal texture
+    bool withTangents_; // some material has a normal texture or anisotropy
     std::optional<std::uint32_t> defaultMaterial_;
     // Per glTF mesh: not read yet, or its slot in Scene::meshes (nullopt: nothing to keep).
     std::vector<std::optional<std::optional<std::uint32_t>>> meshSlots_;
@@ -299,9 +299,12 @@ Scene buildScene(const std::string& path, const LoadOptions& options) {
     scene.materials = gltf::convertMaterials(model, textures);
     scene.materialVariants = gltf::materialVariantNames(model);
     scene.materialVariant = gltf::chooseMaterialVariant(scene.materialVariants, options.variant);
-    // TEXCOORD_0 is read only to look textures up.
+    // TEXCOORD_0 is read only to look textures up, or to generate the tangents of an anisotropic
+    // material (the direction follows the texture's axes).
+    const bool anisotropy = std::any_of(scene.materials.begin(), scene.materials.end(),
+                                        [](const SceneMaterial& m) { return m.hasAnisotropy(); });
     const gltf::Texcoords texcoords =
-        scene.textures.empty() ? gltf::Texcoords::Skip : gltf::Texcoords::Read;
+        scene.textures.empty() && !anisotropy ? gltf::Texcoords::Skip : gltf::Texcoords::Read;
     const int sceneIndex = gltf::defaultSceneIndex(model);
     const gltf::InstancingPlan plan = gltf::planInstancing(model, sceneIndex, options.instancing);
     // First the scene's extent in double, so that a far-away scene is recentred before its

@@ -22,6 +22,7 @@ constexpr const char* kVolume = "KHR_materials_volume";
 constexpr const char* kClearcoat = "KHR_materials_clearcoat";
 constexpr const char* kSheen = "KHR_materials_sheen";
 constexpr const char* kUnlit = "KHR_materials_unlit";
+constexpr const char* kAnisotropy = "KHR_materials_anisotropy";
 
 std::string materialName(std::size_t index) {
     return "material " + std::to_string(index);
@@ -233,6 +234,21 @@ void readSheen(const tinygltf::Material& material, std::size_t index, TextureTab
         readExtensionTexture(*extension, "sheenRoughnessTexture", textures, where);
 }
 
+// KHR_materials_anisotropy: the strength in [0, 1], the rotation (radians, any finite number)
+// and the texture of direction (RG) and strength (B).
+void readAnisotropy(const tinygltf::Material& material, std::size_t index, TextureTable& textures,
+                    SceneMaterial& converted) {
+    const tinygltf::Value* extension = findExtension(material.extensions, kAnisotropy);
+    if (extension == nullptr) return;
+    const std::string where = materialName(index) + ": " + kAnisotropy;
+    converted.anisotropyStrength =
+        static_cast<float>(readUnitNumber(*extension, "anisotropyStrength", 0.0, where));
+    converted.anisotropyRotation =
+        static_cast<float>(readNumber(*extension, "anisotropyRotation", 0.0, where));
+    converted.anisotropyTexture =
+        readExtensionTexture(*extension, "anisotropyTexture", textures, where);
+}
+
 void readTextures(const tinygltf::Material& material, std::size_t index, TextureTable& textures,
                   SceneMaterial& converted) {
     const std::string where = materialName(index) + ": ";
@@ -295,6 +311,7 @@ SceneMaterial convertMaterial(const tinygltf::Material& material, std::size_t in
     readVolume(material, index, converted);
     readClearcoat(material, index, textures, converted);
     readSheen(material, index, textures, converted);
+    readAnisotropy(material, index, textures, converted);
     return converted;
 }
 

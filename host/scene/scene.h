@@ -61,6 +61,10 @@ struct SceneMaterial {
     float sheenRoughness = 0.0f;            // sheenRoughnessFactor
     TextureReference sheenColorTexture;     // sRGB-encoded RGB
     TextureReference sheenRoughnessTexture; // linear: A roughness
+    // KHR_materials_anisotropy (strength 0: isotropic; the extension's defaults)
+    float anisotropyStrength = 0.0f;    // anisotropyStrength
+    float anisotropyRotation = 0.0f;    // anisotropyRotation, radians counter-clockwise
+    TextureReference anisotropyTexture; // linear: RG direction (2x − 1), B strength
     // KHR_materials_unlit: the loader made the base colour the emission and the rest black
     // (gltf_materials.cpp); kept for reports and tests, shading needs nothing else.
     bool unlit = false;
@@ -79,6 +83,10 @@ struct SceneMaterial {
         return !isDiffuseOnly() &&
                (specularTexture.texture >= 0 || specularColorTexture.texture >= 0);
     }
+    // An anisotropic GGX lobe: a Lambertian material has none to stretch.
+    bool hasAnisotropy() const { return !isDiffuseOnly() && anisotropyStrength > 0.0f; }
+    // Tangent frames are needed: for a normal texture, or for the anisotropy's direction.
+    bool needsTangents() const { return hasNormalMap() || hasAnisotropy(); }
     bool hasSheen() const { return glm::any(glm::greaterThan(sheenColor, glm::vec3(0.0f))); }
 
     // Lambertian only: the glTF model with no metal, no specular layer, no glass and no

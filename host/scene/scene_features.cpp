@@ -70,6 +70,10 @@ void addMaterial(const SceneMaterial& material, SceneFeatures& features) {
             material.sheenColorTexture.texture >= 0 || material.sheenRoughnessTexture.texture >= 0;
     }
     features.specularTextures |= material.hasSpecularTextures();
+    if (material.hasAnisotropy()) {
+        features.anisotropy = true;
+        features.anisotropyTextures |= material.anisotropyTexture.texture >= 0;
+    }
     features.alphaMask |= material.alphaMode == AlphaMode::Mask;
     features.doubleSided |= material.doubleSided;
     features.transmission |= material.usesDielectricExtensions();
@@ -134,6 +138,7 @@ std::array<bool, FEATURE_COUNT> SceneFeatures::kernelFeatures() const {
     on[FEATURE_INSTANCES] = instances;
     on[FEATURE_LIGHT_TREE] = lightTree;
     on[FEATURE_SPECULAR_TEXTURES] = specularTextures;
+    on[FEATURE_ANISOTROPY] = anisotropy;
     return on;
 }
 
@@ -165,6 +170,7 @@ SceneFeatures generalFeatures(const SceneFeatures& used) {
     all.alphaMask = all.doubleSided = all.transmission = true;
     all.clearcoatMaterials = all.sheenMaterials = true;
     all.clearcoatTextures = all.sheenTextures = all.specularTextures = true;
+    all.anisotropy = all.anisotropyTextures = true;
     all.triangles = all.spheres = true;
     all.emissiveTriangles = all.emissiveSpheres = true;
     all.pointLights = all.spotLights = all.directionalLights = true;
@@ -182,6 +188,7 @@ std::string describeFeatures(const SceneFeatures& features) {
     appendIf(features.metallicRoughnessMaterials, "metallic-roughness", names);
     appendIf(features.clearcoatMaterials, "clearcoat", names);
     appendIf(features.sheenMaterials, "sheen", names);
+    appendIf(features.anisotropy, "anisotropy", names);
     std::vector<std::string> textures;
     appendIf(features.baseColorTextures, "base colour", textures);
     appendIf(features.metallicRoughnessTextures, "metallic-roughness", textures);
@@ -191,6 +198,7 @@ std::string describeFeatures(const SceneFeatures& features) {
     appendIf(features.clearcoatTextures, "clearcoat", textures);
     appendIf(features.sheenTextures, "sheen", textures);
     appendIf(features.specularTextures, "specular", textures);
+    appendIf(features.anisotropyTextures, "anisotropy", textures);
     if (!textures.empty()) names.push_back("textures (" + joined(textures) + ")");
     appendIf(features.alphaMask, "alpha mask", names);
     appendIf(features.doubleSided, "double-sided", names);

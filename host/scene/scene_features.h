@@ -31,6 +31,8 @@ struct SceneFeatures {
     bool clearcoatTextures = false;  // clearcoat or clearcoat roughness textures
     bool sheenTextures = false;      // sheen colour or sheen roughness textures
     bool specularTextures = false;   // KHR_materials_specular textures on a GGX material
+    bool anisotropy = false;         // KHR_materials_anisotropy on a GGX material
+    bool anisotropyTextures = false; // its anisotropyTexture
     bool triangles = false;
     bool spheres = false;
     // Meshes placed by instances: a two-level BVH. A layout, not an optional feature: --general
@@ -52,12 +54,12 @@ struct SceneFeatures {
     bool textures() const {
         return baseColorTextures || metallicRoughnessTextures || emissiveTextures ||
                normalTextures || transmissionTextures || clearcoatTextures || sheenTextures ||
-               specularTextures;
+               specularTextures || anisotropyTextures;
     }
     // TEXCOORD_0 is needed only to read textures.
     bool textureCoordinates() const { return textures(); }
-    // Per-corner tangents are needed only for normal textures.
-    bool tangents() const { return normalTextures; }
+    // Per-corner tangents are needed only for normal textures and anisotropy's direction.
+    bool tangents() const { return normalTextures || anisotropy; }
     bool punctualLights() const { return pointLights || spotLights || directionalLights; }
     bool emitterCdf() const { return general || emitterCount > 1; }
 

@@ -21,6 +21,7 @@ const bool featureTransmission = false;
 const bool featureClearcoat = false;
 const bool featureSheen = false;
 const bool featureSpecularTextures = false;
+const bool featureAnisotropy = false;
 #else
 // glTF GGX materials (diffuse-only scenes keep the Lambertian BSDF alone).
 layout(constant_id = FEATURE_METALLIC_ROUGHNESS) const bool featureMetallicRoughness = true;
@@ -32,6 +33,8 @@ layout(constant_id = FEATURE_CLEARCOAT) const bool featureClearcoat = true;
 layout(constant_id = FEATURE_SHEEN) const bool featureSheen = true;
 // Some GGX material has a KHR_materials_specular texture.
 layout(constant_id = FEATURE_SPECULAR_TEXTURES) const bool featureSpecularTextures = true;
+// Some GGX material has KHR_materials_anisotropy: shading reads triangleTangents for its direction.
+layout(constant_id = FEATURE_ANISOTROPY) const bool featureAnisotropy = true;
 #endif
 // Base colour, metallic-roughness or emissive textures, and the TEXCOORD_0 they are read at.
 layout(constant_id = FEATURE_TEXTURES) const bool featureTextures = true;

@@ -89,6 +89,10 @@ bool sceneHasSpecularTextures() {
     return featureSpecularTextures;
 }
 
+bool sceneHasAnisotropy() {
+    return featureAnisotropy;
+}
+
 bool sceneHasInstances() {
     return featureInstances;
 }

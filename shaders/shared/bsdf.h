@@ -34,6 +34,9 @@
 //    from the camera does not use: both renderers evaluate f(wo = towards the camera, wi).
 //    Light the glass transmits below the surface passes the layers once, on wo's side.
 //
+// KHR_materials_anisotropy stretches the base's GGX lobe (ggx_anisotropic.h; baseGgxReflection
+// and its pdf and sampler); the albedo tables then stand in at baseAlbedoAlpha's α per direction.
+//
 // The clearcoat may have its own normal (KHR_materials_clearcoat's clearcoatNormalTexture): its
 // lobe and its albedo are then taken in that normal's frame. A material without
 // MATERIAL_METALLIC_ROUGHNESS is Lambertian and keeps the exact arithmetic of the Lambertian
@@ -44,6 +47,7 @@
 #include "albedo_lookup.h"
 #include "bsdf_dielectric.h"
 #include "ggx.h"
+#include "ggx_anisotropic.h"
 #include "host_device.h"
 #include "sampling.h"
 #include "sheen.h"
@@ -77,6 +81,12 @@ struct ShadingMaterial {
     float iorF0;        // ((ior − 1)/(ior + 1))², the dielectric's F0 before specularColor
     float eta;          // ior beyond the surface / ior on wo's side; thin-walled: the ior
     bool thinWalled;    // no volume behind the surface
+    // KHR_materials_anisotropy: the base's GGX lobe (dielectric highlight and metal) is
+    // stretched to αt = mix(α, 1, strength²) along anisotropyDirection (unit, in this frame's
+    // tangent plane) and keeps α across it (the extension's formula). 0: isotropic.
+    float anisotropy;
+    float alphaT;
+    vec2 anisotropyDirection;
 };
 
 // roughness is perceptual; it is clamped to [0, 1] (the glTF range) before squaring. Opaque,
@@ -101,7 +111,80 @@ VKPT_FN ShadingMaterial makeShadingMaterial(vec3 baseColor, float metallic, floa
     m.iorF0 = 0.04f; // ior 1.5
     m.eta = 1.5f;
     m.thinWalled = true;
+    m.anisotropy = 0.0f;
+    m.alphaT = m.alpha;
+    m.anisotropyDirection = vec2(1.0f, 0.0f);
     return m;
+}
+
+// strength in [0, 1] (KHR_materials_anisotropy), direction a unit vector in the shading frame's
+// tangent plane.
+VKPT_FN ShadingMaterial withAnisotropy(ShadingMaterial m, float strength, vec2 direction) {
+    m.anisotropy = clamp(strength, 0.0f, 1.0f);
+    m.alphaT = mix(m.alpha, 1.0f, m.anisotropy * m.anisotropy);
+    m.anisotropyDirection = direction;
+    return m;
+}
+
+VKPT_FN bool hasAnisotropy(ShadingMaterial m) {
+    return m.anisotropy > 0.0f;
+}
+
+// The base's GGX lobe, its sampler's pdf and its sampler, isotropic or anisotropic; directions
+// in the shading frame.
+VKPT_FN float baseGgxReflection(ShadingMaterial m, vec3 wo, vec3 wi, vec3 h) {
+    if (!hasAnisotropy(m)) return ggxReflection(wo, wi, h, m.alpha);
+    vec2 d = m.anisotropyDirection;
+    return ggxReflectionAnisotropic(toAnisotropyFrame(d, wo), toAnisotropyFrame(d, wi),
+                                    toAnisotropyFrame(d, h), vec2(m.alphaT, m.alpha));
+}
+
+VKPT_FN float baseGgxReflectionPdf(ShadingMaterial m, vec3 wo, vec3 h) {
+    if (!hasAnisotropy(m)) return ggxReflectionPdf(wo, h, m.alpha);
+    vec2 d = m.anisotropyDirection;
+    return ggxReflectionPdfAnisotropic(toAnisotropyFrame(d, wo), toAnisotropyFrame(d, h),
+                                       vec2(m.alphaT, m.alpha));
+}
+
+VKPT_FN vec3 sampleBaseGgxReflection(ShadingMaterial m, vec3 wo, vec2 u) {
+    if (!hasAnisotropy(m)) return sampleGgxReflection(wo, m.alpha, u);
+    vec2 d = m.anisotropyDirection;
+    return fromAnisotropyFrame(
+        d, sampleGgxReflectionAnisotropic(toAnisotropyFrame(d, wo), vec2(m.alphaT, m.alpha), u));
+}
+
+// The α at which the (isotropic) albedo tables stand in for the base's lobe seen from w: α
+// itself, or for an anisotropic lobe the roughness projected on w's azimuth,
+// √(αt² cos²φ + αb² sin²φ) with φ measured from the anisotropy direction: the α of Smith's Λ(w)
+// for the stretched distribution (Heitz 2014, eq. 86), so the masking of w, which decides most
+// of the albedo, is exact. At normal incidence, where φ is undefined, the geometric mean.
+// tests/unit/bsdf_test.cpp measures what remains (AnisotropicFurnace...).
+VKPT_FN float baseAlbedoAlpha(ShadingMaterial m, vec3 w) {
+    if (!hasAnisotropy(m)) return m.alpha;
+    vec3 a = toAnisotropyFrame(m.anisotropyDirection, w);
+    float planar = a.x * a.x + a.y * a.y;
+    float mean = sqrt(m.alphaT * m.alpha);
+    if (!(planar > 0.0f)) return mean;
+    return min(mean,
+               sqrt((m.alphaT * m.alphaT * a.x * a.x + m.alpha * m.alpha * a.y * a.y) / planar));
+}
+
+// The azimuthal mean over a hemisphere of directions of the table's cosine-weighted average
+// albedo, E_avg(α(φ)), by the midpoint rule on 8 azimuths of the quarter circle (α(φ) is even
+// about both axes): what the reciprocal form's normalisation 1 − E_avg needs so that the
+// diffuse base under an anisotropic highlight still integrates to (1 − E(wo))·ρ. xy: F = 1 and
+// Schlick weight tables (ggxAverageAlbedo, ggxFresnelAverageAlbedo).
+VKPT_FN vec2 anisotropicAverageAlbedos(ShadingMaterial m) {
+    vec2 sum = vec2(0.0f);
+    for (int k = 0; k < 8; ++k) {
+        float phi = (float(k) + 0.5f) * (0.5f * VKPT_PI / 8.0f);
+        float c = cos(phi);
+        float s = sin(phi);
+        float alpha = min(sqrt(m.alphaT * m.alpha),
+                          sqrt(m.alphaT * m.alphaT * c * c + m.alpha * m.alpha * s * s));
+        sum += vec2(ggxAverageAlbedo(alpha), ggxFresnelAverageAlbedo(alpha));
+    }
+    return sum * 0.125f;
 }
 
 // factor in [0, 1] (KHR_materials_clearcoat), roughness perceptual.
@@ -156,24 +239,31 @@ VKPT_FN vec3 dielectricF0(ShadingMaterial m) {
 
 // What the specular layer reflects at cos θ, per channel: s (F0 E + (1 − F0) E_w), exact for
 // Schlick's Fresnel, which is linear in F0 (albedo_tables.h).
-VKPT_FN vec3 dielectricSpecularAlbedo(ShadingMaterial m, float cosTheta) {
+VKPT_FN vec3 dielectricSpecularAlbedo(ShadingMaterial m, vec3 w) {
     vec3 f0 = dielectricF0(m);
-    return m.specular * (f0 * ggxAlbedo(cosTheta, m.alpha) +
-                         (vec3(1.0f) - f0) * ggxFresnelAlbedo(cosTheta, m.alpha));
+    float cosTheta = w.z;
+    float alpha = baseAlbedoAlpha(m, w);
+    return m.specular * (f0 * ggxAlbedo(cosTheta, alpha) +
+                         (vec3(1.0f) - f0) * ggxFresnelAlbedo(cosTheta, alpha));
 }
 
 VKPT_FN vec3 dielectricSpecularAverageAlbedo(ShadingMaterial m) {
     vec3 f0 = dielectricF0(m);
+    if (hasAnisotropy(m)) {
+        vec2 average = anisotropicAverageAlbedos(m);
+        return m.specular * (f0 * average.x + (vec3(1.0f) - f0) * average.y);
+    }
+    float alpha = m.alpha;
     return m.specular *
-           (f0 * ggxAverageAlbedo(m.alpha) + (vec3(1.0f) - f0) * ggxFresnelAverageAlbedo(m.alpha));
+           (f0 * ggxAverageAlbedo(alpha) + (vec3(1.0f) - f0) * ggxFresnelAverageAlbedo(alpha));
 }
 
 // The share of light the specular layer leaves to the diffuse base, reciprocally:
 // (1 − E(μo))(1 − E(μi)) / (1 − E_avg). Where the layer reflects (almost) everything on
 // average, the base receives nothing.
-VKPT_FN vec3 diffuseTransmittance(ShadingMaterial m, float cosThetaO, float cosThetaI) {
-    vec3 outgoing = max(vec3(1.0f) - dielectricSpecularAlbedo(m, cosThetaO), vec3(0.0f));
-    vec3 incoming = max(vec3(1.0f) - dielectricSpecularAlbedo(m, cosThetaI), vec3(0.0f));
+VKPT_FN vec3 diffuseTransmittance(ShadingMaterial m, vec3 wo, vec3 wi) {
+    vec3 outgoing = max(vec3(1.0f) - dielectricSpecularAlbedo(m, wo), vec3(0.0f));
+    vec3 incoming = max(vec3(1.0f) - dielectricSpecularAlbedo(m, wi), vec3(0.0f));
     vec3 average = vec3(1.0f) - dielectricSpecularAverageAlbedo(m);
     vec3 result;
     result.x = average.x > 1e-6f ? outgoing.x * incoming.x / average.x : 0.0f;
@@ -187,8 +277,7 @@ VKPT_FN vec3 evaluateOpaqueDielectric(ShadingMaterial m, vec3 wo, vec3 wi, float
                                       float fresnelWeight) {
     vec3 f0 = dielectricF0(m);
     vec3 fresnel = f0 + (vec3(1.0f) - f0) * fresnelWeight;
-    return m.specular * ggx * fresnel +
-           m.baseColor * VKPT_INV_PI * diffuseTransmittance(m, wo.z, wi.z);
+    return m.specular * ggx * fresnel + m.baseColor * VKPT_INV_PI * diffuseTransmittance(m, wo, wi);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -198,9 +287,11 @@ VKPT_FN vec3 evaluateMetal(ShadingMaterial m, float ggx, float fresnelWeight) {
     return ggx * (m.baseColor + (vec3(1.0f) - m.baseColor) * fresnelWeight);
 }
 
-VKPT_FN vec3 metalAlbedo(ShadingMaterial m, float cosTheta) {
-    return m.baseColor * ggxAlbedo(cosTheta, m.alpha) +
-           (vec3(1.0f) - m.baseColor) * ggxFresnelAlbedo(cosTheta, m.alpha);
+VKPT_FN vec3 metalAlbedo(ShadingMaterial m, vec3 w) {
+    float cosTheta = w.z;
+    float alpha = baseAlbedoAlpha(m, w);
+    return m.baseColor * ggxAlbedo(cosTheta, alpha) +
+           (vec3(1.0f) - m.baseColor) * ggxFresnelAlbedo(cosTheta, alpha);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -287,7 +378,7 @@ VKPT_FN float layersTransmittance(ShadingMaterial m, vec3 wo) {
 VKPT_FN vec3 evaluateBase(ShadingMaterial m, vec3 wo, vec3 wi, vec3 glass) {
     vec3 h = normalize(wo + wi);
     float fresnelWeight = halfVectorFresnelWeight(wo, wi, h);
-    float ggx = ggxReflection(wo, wi, h, m.alpha);
+    float ggx = baseGgxReflection(m, wo, wi, h);
     vec3 dielectric = evaluateOpaqueDielectric(m, wo, wi, ggx, fresnelWeight);
     if (m.transmission > 0.0f) dielectric = mix(dielectric, glass, m.transmission);
     vec3 metal = evaluateMetal(m, ggx, fresnelWeight);
@@ -349,9 +440,9 @@ VKPT_FN LobeProbabilities lobeProbabilities(ShadingMaterial m, vec3 wo) {
         below *= 1.0f - sheenAlbedoBound(m, cosThetaO);
     }
     float opaque = 1.0f - m.transmission; // the opaque dielectric's share of the non-metal part
-    vec3 dielectricSpecular = dielectricSpecularAlbedo(m, cosThetaO);
+    vec3 dielectricSpecular = dielectricSpecularAlbedo(m, wo);
     float specularWeight = below * mix(opaque * luminance(dielectricSpecular),
-                                       luminance(metalAlbedo(m, cosThetaO)), m.metallic);
+                                       luminance(metalAlbedo(m, wo)), m.metallic);
     if (!(m.metallic > 0.0f || opaque * m.specular * maxComponent(dielectricF0(m)) > 0.0f))
         specularWeight = 0.0f;
     float diffuseWeight = below * (1.0f - m.metallic) * opaque *
@@ -406,7 +497,7 @@ VKPT_FN float mixtureBsdfPdf(ShadingMaterial m, vec3 wo, vec3 wi, LobeProbabilit
     if (!(wi.z > 0.0f)) return pdf;
     vec3 h = normalize(wo + wi);
     pdf += p.diffuse * wi.z * VKPT_INV_PI;
-    if (p.specular > 0.0f) pdf += p.specular * ggxReflectionPdf(wo, h, m.alpha);
+    if (p.specular > 0.0f) pdf += p.specular * baseGgxReflectionPdf(m, wo, h);
     if (p.clearcoat > 0.0f) pdf += p.clearcoat * clearcoatPdf(m, wo, wi);
     if (p.sheen > 0.0f) pdf += p.sheen * uniformHemispherePdf();
     return pdf;
@@ -478,7 +569,7 @@ VKPT_FN BsdfSample sampleBsdf(ShadingMaterial m, vec3 wo, vec2 uDirection, float
     uLobe -= p.glass;
     vec3 wi;
     if (uLobe < p.specular) {
-        wi = sampleGgxReflection(wo, m.alpha, uDirection);
+        wi = sampleBaseGgxReflection(m, wo, uDirection);
     } else if (uLobe < p.specular + p.clearcoat) {
         // Below the coat's own horizon, or the base's (tested after the branches), the sample
         // is lost, as clearcoatPdf counts it.

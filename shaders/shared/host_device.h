@@ -257,6 +257,14 @@ struct Material {
     // specularColor.
     TextureSlot specularTexture;      // linear; strength in .a
     TextureSlot specularColorTexture; // sRGB; colour in .rgb
+    // KHR_materials_anisotropy, 48 bytes from offset 528 (texels 33–35), read only in scenes
+    // that have it (FEATURE_ANISOTROPY): the strength, and the rotation of the direction from
+    // the tangent as its cosine and sine (computed on the host).
+    float anisotropyStrength;      // anisotropyStrength; 0: isotropic
+    float anisotropyRotationCos;   // cos(anisotropyRotation)
+    float anisotropyRotationSin;   // sin(anisotropyRotation)
+    uint anisotropyUnused;         // keeps the texture slot on a 16-byte texel
+    TextureSlot anisotropyTexture; // linear; direction in .rg (as 2x − 1), strength in .b
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -359,7 +367,8 @@ struct EnvironmentParams {
 #define FEATURE_INSTANCES 13  // a two-level BVH: meshes placed by instances
 #define FEATURE_LIGHT_TREE 14 // emitters chosen by the light BVH (lightTree), not the power CDF
 #define FEATURE_SPECULAR_TEXTURES 15 // KHR_materials_specular textures on a GGX material
-#define FEATURE_COUNT 16
+#define FEATURE_ANISOTROPY 16        // KHR_materials_anisotropy on a GGX material
+#define FEATURE_COUNT 17
 
 // ---------------------------------------------------------------------------------------------
 // The camera (shared/camera.h). Pixel (0, 0) is the top-left; a sample at (x + u, y + v) has
@@ -406,8 +415,10 @@ static_assert(offsetof(Material, normalTexture) == 160 && offsetof(Material, nor
 static_assert(offsetof(Material, transmission) == 208 && offsetof(Material, thickness) == 220 &&
               offsetof(Material, attenuationCoefficient) == 224 &&
               offsetof(Material, transmissionTexture) == 240);
-static_assert(sizeof(Material) == 528 && offsetof(Material, specularTexture) == 464 &&
+static_assert(offsetof(Material, specularTexture) == 464 &&
               offsetof(Material, specularColorTexture) == 496);
+static_assert(sizeof(Material) == 576 && offsetof(Material, anisotropyStrength) == 528 &&
+              offsetof(Material, anisotropyTexture) == 544);
 static_assert(offsetof(Material, sheenColor) == 272 && offsetof(Material, sheenRoughness) == 284 &&
               offsetof(Material, clearcoat) == 288 &&
               offsetof(Material, clearcoatRoughness) == 292 &&

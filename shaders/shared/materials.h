@@ -22,7 +22,8 @@ VKPT_FN bool hasTexture(TextureSlot slot VKPT_SCENE_PARAM) {
 }
 
 // The layers' textures count only in scenes with the layer (FEATURE_CLEARCOAT, FEATURE_SHEEN),
-// the specular ones only in scenes with them (FEATURE_SPECULAR_TEXTURES).
+// the specular ones only in scenes with them (FEATURE_SPECULAR_TEXTURES), the anisotropy texture
+// only with anisotropy (FEATURE_ANISOTROPY).
 VKPT_FN bool hasLayerTexture(Material m VKPT_SCENE_PARAM) {
     bool clearcoat = sceneHasClearcoat(VKPT_SCENE_ARG_ONLY) &&
                      (hasTexture(m.clearcoatTexture VKPT_SCENE_ARG) ||
@@ -33,7 +34,9 @@ VKPT_FN bool hasLayerTexture(Material m VKPT_SCENE_PARAM) {
     bool specular = sceneHasSpecularTextures(VKPT_SCENE_ARG_ONLY) &&
                     (hasTexture(m.specularTexture VKPT_SCENE_ARG) ||
                      hasTexture(m.specularColorTexture VKPT_SCENE_ARG));
-    return clearcoat || sheen || specular;
+    bool anisotropy =
+        sceneHasAnisotropy(VKPT_SCENE_ARG_ONLY) && hasTexture(m.anisotropyTexture VKPT_SCENE_ARG);
+    return clearcoat || sheen || specular || anisotropy;
 }
 
 VKPT_FN bool hasAnyTexture(Material m VKPT_SCENE_PARAM) {

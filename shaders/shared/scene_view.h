@@ -22,7 +22,7 @@
 //        sceneHasPunctualLights(), sceneHasEnvironment(), sceneHasEmitterCdf(),
 //        sceneHasDoubleSided(), sceneHasNormalMaps(), sceneHasTransmission(),
 //        sceneHasClearcoat(), sceneHasSheen(), sceneHasSpecularTextures(),
-//        sceneHasInstances(), sceneHasLightTree()
+//        sceneHasAnisotropy(), sceneHasInstances(), sceneHasLightTree()
 #ifndef VKPT_SCENE_VIEW_H
 #define VKPT_SCENE_VIEW_H
 
@@ -104,6 +104,9 @@ VKPT_FN bool sceneHasSheen(VKPT_SCENE_PARAM_ONLY) {
 }
 VKPT_FN bool sceneHasSpecularTextures(VKPT_SCENE_PARAM_ONLY) {
     return scene.features[FEATURE_SPECULAR_TEXTURES];
+}
+VKPT_FN bool sceneHasAnisotropy(VKPT_SCENE_PARAM_ONLY) {
+    return scene.features[FEATURE_ANISOTROPY];
 }
 VKPT_FN bool sceneHasInstances(VKPT_SCENE_PARAM_ONLY) {
     return scene.features[FEATURE_INSTANCES];

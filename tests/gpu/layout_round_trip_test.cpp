@@ -111,6 +111,11 @@ SharedStructs makeStructs() {
         m.sheenRoughnessTexture = makeTextureSlot(x);
         m.specularTexture = makeTextureSlot(x);
         m.specularColorTexture = makeTextureSlot(x);
+        m.anisotropyStrength = x.f();
+        m.anisotropyRotationCos = x.f();
+        m.anisotropyRotationSin = x.f();
+        m.anisotropyUnused = x.u();
+        m.anisotropyTexture = makeTextureSlot(x);
         s.materials.push_back(m);
         s.textures.push_back({x.u(), x.u(), x.u(), x.u()});
         s.emitters.push_back(

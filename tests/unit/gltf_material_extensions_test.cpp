@@ -1,7 +1,8 @@
 // gltf_material_extensions_test.cpp — the loader's reading of material extensions beyond the
 // layered BSDF's factors, on the generated files of scenes/loader: KHR_materials_unlit (the base
-// colour as an emitter that reflects nothing) and KHR_materials_variants (--variant), and the
-// Khronos samples of ../shared/scenes that use them.
+// colour as an emitter that reflects nothing), KHR_materials_variants (--variant) and
+// KHR_materials_anisotropy (with scenes/test/features/anisotropy.gltf), and the Khronos samples
+// of ../shared/scenes that use them.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -10,6 +11,7 @@
 
 #include "../support/captured_load.h"
 #include "common/errors.h"
+#include "prepare/gpu_materials.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene_features.h"
 
@@ -145,6 +147,48 @@ TEST(GltfVariants, MaterialsVariantsShoeSampleLoadsEachVariant) {
         // The shoe's one primitive maps variant i to material i.
         EXPECT_EQ(scene.materialIndices[0], std::uint32_t(scene.materialVariant)) << variant;
     }
+}
+
+// --- KHR_materials_anisotropy --------------------------------------------------------------
+
+// The brushed floor (stored tangents) and the textured block (generated tangents) of the
+// feature scene: factors and texture read, tangent frames made for both, the feature and the
+// device record's rotation as cosine and sine.
+TEST(GltfAnisotropy, ReadsStrengthRotationAndTextureAndMakesTangents) {
+    std::string notes;
+    const Scene scene =
+        test::loadCapturingNotes(VKPT_SCENES_DIR "/test/features/anisotropy.gltf", &notes);
+    EXPECT_EQ(notes, "");
+    const SceneMaterial& floor = scene.materials.at(1);
+    EXPECT_EQ(floor.anisotropyStrength, 0.8f);
+    EXPECT_EQ(floor.anisotropyRotation, 0.0f);
+    EXPECT_TRUE(floor.hasAnisotropy());
+    EXPECT_TRUE(floor.needsTangents());
+    const SceneMaterial& block = scene.materials.at(2);
+    EXPECT_EQ(block.anisotropyStrength, 1.0f);
+    EXPECT_EQ(block.anisotropyRotation, 0.5f);
+    EXPECT_GE(block.anisotropyTexture.texture, 0);
+    ASSERT_EQ(scene.tangents.size(), scene.positions.size());
+    for (std::size_t t = 0; t < scene.triangleCount(); ++t) {
+        const bool anisotropic = scene.materials[scene.materialIndices[t]].hasAnisotropy();
+        for (std::size_t k = 0; k < 3; ++k)
+            EXPECT_EQ(scene.tangents[3 * t + k].w != 0.0f, anisotropic) << "triangle " << t;
+    }
+    const SceneFeatures features = analyseScene(scene);
+    EXPECT_TRUE(features.anisotropy);
+    EXPECT_TRUE(features.anisotropyTextures);
+    EXPECT_TRUE(features.tangents());
+    EXPECT_TRUE(features.kernelFeatures()[FEATURE_ANISOTROPY]);
+    const std::vector<gpu::Material> device = makeGpuMaterials(scene.materials);
+    EXPECT_EQ(device[2].anisotropyStrength, 1.0f);
+    EXPECT_FLOAT_EQ(device[2].anisotropyRotationCos, std::cos(0.5f));
+    EXPECT_FLOAT_EQ(device[2].anisotropyRotationSin, std::sin(0.5f));
+    EXPECT_EQ(device[0].anisotropyStrength, 0.0f);
+}
+
+TEST(GltfAnisotropy, KhronosSamplesLoad) {
+    expectSampleLoadsWithoutNotes("AnisotropyStrengthTest/AnisotropyStrengthTest.glb");
+    expectSampleLoadsWithoutNotes("AnisotropyRotationTest/AnisotropyRotationTest.glb");
 }
 
 } // namespace

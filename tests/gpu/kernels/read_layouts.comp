@@ -168,6 +168,11 @@ void main() {
     putTextureSlot(materials[i].sheenRoughnessTexture);
     putTextureSlot(materials[i].specularTexture);
     putTextureSlot(materials[i].specularColorTexture);
+    putFloat(materials[i].anisotropyStrength);
+    putFloat(materials[i].anisotropyRotationCos);
+    putFloat(materials[i].anisotropyRotationSin);
+    putUint(materials[i].anisotropyUnused);
+    putTextureSlot(materials[i].anisotropyTexture);
 
     cursor = LAYOUT_OFFSET_TEXTURES + i * LAYOUT_WORDS_TEXTURE_INFO;
     putUint(textures[i].texelOffset);

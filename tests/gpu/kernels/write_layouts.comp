@@ -177,6 +177,11 @@ void main() {
     materials[i].sheenRoughnessTexture = takeTextureSlot();
     materials[i].specularTexture = takeTextureSlot();
     materials[i].specularColorTexture = takeTextureSlot();
+    materials[i].anisotropyStrength = takeFloat();
+    materials[i].anisotropyRotationCos = takeFloat();
+    materials[i].anisotropyRotationSin = takeFloat();
+    materials[i].anisotropyUnused = takeUint();
+    materials[i].anisotropyTexture = takeTextureSlot();
 
     cursor = LAYOUT_OFFSET_TEXTURES + i * LAYOUT_WORDS_TEXTURE_INFO;
     textures[i].texelOffset = takeUint();
