@@ -85,13 +85,12 @@ bool sceneHasSheen() {
     return featureSheen;
 }
 
-bool sceneHasSpecularTextures() {
-    return featureSpecularTextures;
-}
-
-bool sceneHasAnisotropy() {
-    return featureAnisotropy;
-}
+// The features added since: macros rather than functions, so that the condition a guard tests
+// is the specialisation constant itself, which the driver folds as it reads the SPIR-V, and
+// the guarded calls never reach its inliner in a scene without the feature. (One parameter, for
+// the shared code's empty VKPT_SCENE_ARG_ONLY.)
+#define sceneHasSpecularTextures(noSceneArgument) featureSpecularTextures
+#define sceneHasAnisotropy(noSceneArgument) featureAnisotropy
 
 bool sceneHasInstances() {
     return featureInstances;

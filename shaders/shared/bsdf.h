@@ -126,9 +126,18 @@ VKPT_FN ShadingMaterial withAnisotropy(ShadingMaterial m, float strength, vec2 d
     return m;
 }
 
+// In a kernel, whether the scene has anisotropy is a specialisation constant
+// (lib/features.glsl). It guards the anisotropic code where it is called, not inside a function,
+// so that a kernel specialised without the feature drops those calls as it translates the
+// SPIR-V, before inlining copies the lobe into every caller (the Cornell box's pipelines would
+// otherwise take longer to create): a macro for that reason. C++ compiles every feature in.
+#ifdef VKPT_FEATURES_GLSL
+#define hasAnisotropy(m) (featureAnisotropy && (m).anisotropy > 0.0f)
+#else
 VKPT_FN bool hasAnisotropy(ShadingMaterial m) {
     return m.anisotropy > 0.0f;
 }
+#endif
 
 // The base's GGX lobe, its sampler's pdf and its sampler, isotropic or anisotropic; directions
 // in the shading frame.
