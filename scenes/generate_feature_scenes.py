@@ -6,7 +6,8 @@ and stored tangents), KHR_lights_punctual lights, a scene lit only by the enviro
 tiny equirectangular .hdr), an orthographic camera, glass: KHR_materials_transmission,
 KHR_materials_ior and KHR_materials_volume (smooth and rough, solid and thin-walled, clear and
 absorbing), the KHR_materials_clearcoat and KHR_materials_sheen layers, and
-KHR_materials_anisotropy (brushed metal with stored and generated tangents).
+KHR_materials_anisotropy (brushed metal with stored and generated tangents), and
+KHR_materials_iridescence (thin films on spheres).
 
 Run from anywhere:  python3 scenes/generate_feature_scenes.py
 
@@ -35,6 +36,7 @@ TRANSMISSION = "KHR_materials_transmission"
 IOR = "KHR_materials_ior"
 VOLUME = "KHR_materials_volume"
 ANISOTROPY = "KHR_materials_anisotropy"
+IRIDESCENCE = "KHR_materials_iridescence"
 UNSIGNED_SHORT = 5123
 ARRAY_BUFFER = 34962
 FLOAT = 5126
@@ -349,6 +351,31 @@ def anisotropy():
     s.save("anisotropy.gltf")
 
 
+def iridescence():
+    """Thin films (KHR_materials_iridescence) on a dark dielectric sphere (a soap-bubble film,
+    thickness from a texture) and on a metal sphere, before the room's light panel."""
+    s = FeatureScene()
+    s.use(IRIDESCENCE)
+    grey = s.material("grey", (0.6, 0.6, 0.6), diffuse=True)
+    room(s, grey, grey)
+    # G: the thickness between the minimum and maximum; R: the factor.
+    bands = s.texture([[(255, 0, 0, 255), (255, 128, 0, 255), (255, 255, 0, 255)]],
+                      {"magFilter": 9729, "wrapS": 10497, "wrapT": 10497})
+    s.sphere("bubble", (-0.45, 0.35, 0.0), 0.35, s.material(
+        "film on black", (0.02, 0.02, 0.02), roughness=0.1, extensions={IRIDESCENCE: {
+            "iridescenceFactor": 1.0, "iridescenceIor": 1.33,
+            "iridescenceThicknessMinimum": 200.0, "iridescenceThicknessMaximum": 700.0,
+            "iridescenceThicknessTexture": {"index": bands}}}))
+    s.sphere("oily metal", (0.45, 0.35, 0.0), 0.35, s.material(
+        "film on metal", (0.8, 0.8, 0.8), metallic=1.0, roughness=0.25, extensions={
+            IRIDESCENCE: {"iridescenceFactor": 0.8, "iridescenceIor": 1.5,
+                          "iridescenceThicknessMaximum": 450.0}}))
+    s.quad("light", [-1.0, 0.8, -0.95], [2.0, 0.0, 0.0], [0.0, 0.4, 0.0],
+           s.material("light", (0.0, 0.0, 0.0), diffuse=True, emission=(1.0, 1.0, 1.0),
+                      strength=6.0))
+    s.save("iridescence.gltf")
+
+
 def checker(size, a, b):
     return [[a if (x + y) % 2 == 0 else b for x in range(size)] for y in range(size)]
 
@@ -563,6 +590,7 @@ def main():
     clearcoat()
     sheen()
     anisotropy()
+    iridescence()
     write(FEATURES_DIR / "sky.hdr", radiance_hdr(32, 16, sky_texel))
 
 

@@ -106,6 +106,7 @@ void writeFeatures(JsonWriter& json, const RenderReport& r) {
     json.field("clearcoatTextures", f.clearcoatTextures).field("sheenTextures", f.sheenTextures);
     json.field("specularTextures", f.specularTextures);
     json.field("anisotropy", f.anisotropy).field("anisotropyTextures", f.anisotropyTextures);
+    json.field("iridescence", f.iridescence).field("iridescenceTextures", f.iridescenceTextures);
     json.field("textureCoordinates", f.textureCoordinates());
     json.field("alphaMask", f.alphaMask).field("doubleSided", f.doubleSided);
     json.field("transmission", f.transmission);

@@ -93,6 +93,12 @@ std::vector<gpu::Material> makeGpuMaterials(const std::vector<SceneMaterial>& ma
         g.anisotropyRotationCos = float(std::cos(double(m.anisotropyRotation)));
         g.anisotropyRotationSin = float(std::sin(double(m.anisotropyRotation)));
         g.anisotropyTexture = makeSlot(m.anisotropyTexture);
+        g.iridescence = m.hasIridescence() ? m.iridescence : 0.0f;
+        g.iridescenceIor = m.iridescenceIor;
+        g.iridescenceThicknessMinimum = m.iridescenceThicknessMinimum;
+        g.iridescenceThicknessMaximum = m.iridescenceThicknessMaximum;
+        g.iridescenceTexture = makeSlot(m.iridescenceTexture);
+        g.iridescenceThicknessTexture = makeSlot(m.iridescenceThicknessTexture);
         result.push_back(g);
     }
     return result;

@@ -119,7 +119,7 @@ bool needsLayeredBsdf(const SceneFeatures& features) {
 // them as constants, pruned: shaders/CMakeLists.txt).
 bool needsMaterialExtensions(const SceneFeatures& features) {
     const std::array<bool, FEATURE_COUNT> on = features.kernelFeatures();
-    return on[FEATURE_SPECULAR_TEXTURES] || on[FEATURE_ANISOTROPY];
+    return on[FEATURE_SPECULAR_TEXTURES] || on[FEATURE_ANISOTROPY] || on[FEATURE_IRIDESCENCE];
 }
 
 // The kernel's build in one embedded library, if that library has one.

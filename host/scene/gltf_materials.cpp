@@ -23,6 +23,7 @@ constexpr const char* kClearcoat = "KHR_materials_clearcoat";
 constexpr const char* kSheen = "KHR_materials_sheen";
 constexpr const char* kUnlit = "KHR_materials_unlit";
 constexpr const char* kAnisotropy = "KHR_materials_anisotropy";
+constexpr const char* kIridescence = "KHR_materials_iridescence";
 
 std::string materialName(std::size_t index) {
     return "material " + std::to_string(index);
@@ -249,6 +250,30 @@ void readAnisotropy(const tinygltf::Material& material, std::size_t index, Textu
         readExtensionTexture(*extension, "anisotropyTexture", textures, where);
 }
 
+// KHR_materials_iridescence: the film's factor in [0, 1] (R of its texture), ior >= 1 and
+// thickness range in nm (>= 0; G of the thickness texture interpolates it).
+void readIridescence(const tinygltf::Material& material, std::size_t index, TextureTable& textures,
+                     SceneMaterial& converted) {
+    const tinygltf::Value* extension = findExtension(material.extensions, kIridescence);
+    if (extension == nullptr) return;
+    const std::string where = materialName(index) + ": " + kIridescence;
+    converted.iridescence =
+        static_cast<float>(readUnitNumber(*extension, "iridescenceFactor", 0.0, where));
+    const double ior = readNumber(*extension, "iridescenceIor", 1.3, where);
+    if (!(ior >= 1.0)) throw GltfProblem(where + ": iridescenceIor must be >= 1");
+    converted.iridescenceIor = static_cast<float>(ior);
+    const double minimum = readNumber(*extension, "iridescenceThicknessMinimum", 100.0, where);
+    const double maximum = readNumber(*extension, "iridescenceThicknessMaximum", 400.0, where);
+    if (minimum < 0.0 || maximum < 0.0)
+        throw GltfProblem(where + ": the thickness range must not be negative");
+    converted.iridescenceThicknessMinimum = static_cast<float>(minimum);
+    converted.iridescenceThicknessMaximum = static_cast<float>(maximum);
+    converted.iridescenceTexture =
+        readExtensionTexture(*extension, "iridescenceTexture", textures, where);
+    converted.iridescenceThicknessTexture =
+        readExtensionTexture(*extension, "iridescenceThicknessTexture", textures, where);
+}
+
 void readTextures(const tinygltf::Material& material, std::size_t index, TextureTable& textures,
                   SceneMaterial& converted) {
     const std::string where = materialName(index) + ": ";
@@ -312,6 +337,7 @@ SceneMaterial convertMaterial(const tinygltf::Material& material, std::size_t in
     readClearcoat(material, index, textures, converted);
     readSheen(material, index, textures, converted);
     readAnisotropy(material, index, textures, converted);
+    readIridescence(material, index, textures, converted);
     return converted;
 }
 

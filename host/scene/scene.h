@@ -65,6 +65,13 @@ struct SceneMaterial {
     float anisotropyStrength = 0.0f;    // anisotropyStrength
     float anisotropyRotation = 0.0f;    // anisotropyRotation, radians counter-clockwise
     TextureReference anisotropyTexture; // linear: RG direction (2x − 1), B strength
+    // KHR_materials_iridescence (factor 0: no film; the extension's defaults)
+    float iridescence = 0.0f;                     // iridescenceFactor
+    float iridescenceIor = 1.3f;                  // iridescenceIor
+    float iridescenceThicknessMinimum = 100.0f;   // nm
+    float iridescenceThicknessMaximum = 400.0f;   // nm
+    TextureReference iridescenceTexture;          // linear: R factor
+    TextureReference iridescenceThicknessTexture; // linear: G thickness
     // KHR_materials_unlit: the loader made the base colour the emission and the rest black
     // (gltf_materials.cpp); kept for reports and tests, shading needs nothing else.
     bool unlit = false;
@@ -87,6 +94,8 @@ struct SceneMaterial {
     bool hasAnisotropy() const { return !isDiffuseOnly() && anisotropyStrength > 0.0f; }
     // Tangent frames are needed: for a normal texture, or for the anisotropy's direction.
     bool needsTangents() const { return hasNormalMap() || hasAnisotropy(); }
+    // A thin film over the GGX lobe: a Lambertian material has none to colour.
+    bool hasIridescence() const { return !isDiffuseOnly() && iridescence > 0.0f; }
     bool hasSheen() const { return glm::any(glm::greaterThan(sheenColor, glm::vec3(0.0f))); }
 
     // Lambertian only: the glTF model with no metal, no specular layer, no glass and no

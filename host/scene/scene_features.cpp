@@ -70,6 +70,11 @@ void addMaterial(const SceneMaterial& material, SceneFeatures& features) {
             material.sheenColorTexture.texture >= 0 || material.sheenRoughnessTexture.texture >= 0;
     }
     features.specularTextures |= material.hasSpecularTextures();
+    if (material.hasIridescence()) {
+        features.iridescence = true;
+        features.iridescenceTextures |= material.iridescenceTexture.texture >= 0 ||
+                                        material.iridescenceThicknessTexture.texture >= 0;
+    }
     if (material.hasAnisotropy()) {
         features.anisotropy = true;
         features.anisotropyTextures |= material.anisotropyTexture.texture >= 0;
@@ -139,6 +144,7 @@ std::array<bool, FEATURE_COUNT> SceneFeatures::kernelFeatures() const {
     on[FEATURE_LIGHT_TREE] = lightTree;
     on[FEATURE_SPECULAR_TEXTURES] = specularTextures;
     on[FEATURE_ANISOTROPY] = anisotropy;
+    on[FEATURE_IRIDESCENCE] = iridescence;
     return on;
 }
 
@@ -171,6 +177,7 @@ SceneFeatures generalFeatures(const SceneFeatures& used) {
     all.clearcoatMaterials = all.sheenMaterials = true;
     all.clearcoatTextures = all.sheenTextures = all.specularTextures = true;
     all.anisotropy = all.anisotropyTextures = true;
+    all.iridescence = all.iridescenceTextures = true;
     all.triangles = all.spheres = true;
     all.emissiveTriangles = all.emissiveSpheres = true;
     all.pointLights = all.spotLights = all.directionalLights = true;
@@ -189,6 +196,7 @@ std::string describeFeatures(const SceneFeatures& features) {
     appendIf(features.clearcoatMaterials, "clearcoat", names);
     appendIf(features.sheenMaterials, "sheen", names);
     appendIf(features.anisotropy, "anisotropy", names);
+    appendIf(features.iridescence, "iridescence", names);
     std::vector<std::string> textures;
     appendIf(features.baseColorTextures, "base colour", textures);
     appendIf(features.metallicRoughnessTextures, "metallic-roughness", textures);
@@ -199,6 +207,7 @@ std::string describeFeatures(const SceneFeatures& features) {
     appendIf(features.sheenTextures, "sheen", textures);
     appendIf(features.specularTextures, "specular", textures);
     appendIf(features.anisotropyTextures, "anisotropy", textures);
+    appendIf(features.iridescenceTextures, "iridescence", textures);
     if (!textures.empty()) names.push_back("textures (" + joined(textures) + ")");
     appendIf(features.alphaMask, "alpha mask", names);
     appendIf(features.doubleSided, "double-sided", names);

@@ -25,6 +25,7 @@ const bool featureClearcoat = false;
 const bool featureSheen = false;
 const bool featureSpecularTextures = false;
 const bool featureAnisotropy = false;
+const bool featureIridescence = false;
 #else
 // glTF GGX materials (diffuse-only scenes keep the Lambertian BSDF alone).
 layout(constant_id = FEATURE_METALLIC_ROUGHNESS) const bool featureMetallicRoughness = true;
@@ -40,11 +41,14 @@ layout(constant_id = FEATURE_SHEEN) const bool featureSheen = true;
 // module, so that a driver never translates them (docs/gpu.md, "Pipelines").
 const bool featureSpecularTextures = false;
 const bool featureAnisotropy = false;
+const bool featureIridescence = false;
 #else
 // Some GGX material has a KHR_materials_specular texture.
 layout(constant_id = FEATURE_SPECULAR_TEXTURES) const bool featureSpecularTextures = true;
 // Some GGX material has KHR_materials_anisotropy: shading reads triangleTangents for its direction.
 layout(constant_id = FEATURE_ANISOTROPY) const bool featureAnisotropy = true;
+// Some GGX material has a KHR_materials_iridescence film.
+layout(constant_id = FEATURE_IRIDESCENCE) const bool featureIridescence = true;
 #endif
 #endif
 // Base colour, metallic-roughness or emissive textures, and the TEXCOORD_0 they are read at.

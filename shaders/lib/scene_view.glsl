@@ -91,6 +91,7 @@ bool sceneHasSheen() {
 // the shared code's empty VKPT_SCENE_ARG_ONLY.)
 #define sceneHasSpecularTextures(noSceneArgument) featureSpecularTextures
 #define sceneHasAnisotropy(noSceneArgument) featureAnisotropy
+#define sceneHasIridescence(noSceneArgument) featureIridescence
 
 bool sceneHasInstances() {
     return featureInstances;

@@ -34,6 +34,9 @@
 //    from the camera does not use: both renderers evaluate f(wo = towards the camera, wi).
 //    Light the glass transmits below the surface passes the layers once, on wo's side.
 //
+// KHR_materials_iridescence mixes a thin film's Fresnel term (iridescence.h) into the dielectric
+// highlight's and the metal's; the layering then takes the film's albedo as iridescentAlbedo.
+//
 // KHR_materials_anisotropy stretches the base's GGX lobe (ggx_anisotropic.h; baseGgxReflection
 // and its pdf and sampler); the albedo tables then stand in at baseAlbedoAlpha's α per direction.
 //
@@ -49,6 +52,7 @@
 #include "ggx.h"
 #include "ggx_anisotropic.h"
 #include "host_device.h"
+#include "iridescence.h"
 #include "sampling.h"
 #include "sheen.h"
 
@@ -87,6 +91,12 @@ struct ShadingMaterial {
     float anisotropy;
     float alphaT;
     vec2 anisotropyDirection;
+    // KHR_materials_iridescence: a thin film over the base's specular layers (dielectric
+    // highlight and metal) whose Fresnel term (iridescence.h) is mixed in by `iridescence`.
+    // 0: no film.
+    float iridescence;
+    float iridescenceIor;       // the film's index of refraction
+    float iridescenceThickness; // the film's thickness in nanometres
 };
 
 // roughness is perceptual; it is clamped to [0, 1] (the glTF range) before squaring. Opaque,
@@ -114,7 +124,38 @@ VKPT_FN ShadingMaterial makeShadingMaterial(vec3 baseColor, float metallic, floa
     m.anisotropy = 0.0f;
     m.alphaT = m.alpha;
     m.anisotropyDirection = vec2(1.0f, 0.0f);
+    m.iridescence = 0.0f;
+    m.iridescenceIor = 1.3f;
+    m.iridescenceThickness = 400.0f;
     return m;
+}
+
+// factor in [0, 1], the film's ior and thickness in nm (KHR_materials_iridescence).
+VKPT_FN ShadingMaterial withIridescence(ShadingMaterial m, float factor, float ior,
+                                        float thickness) {
+    m.iridescence = clamp(factor, 0.0f, 1.0f);
+    m.iridescenceIor = ior;
+    m.iridescenceThickness = max(thickness, 0.0f);
+    return m;
+}
+
+// A macro in a kernel, for the reason hasAnisotropy's note gives.
+#ifdef VKPT_FEATURES_GLSL
+#define hasIridescence(m) (featureIridescence && (m).iridescence > 0.0f)
+#else
+VKPT_FN bool hasIridescence(ShadingMaterial m) {
+    return m.iridescence > 0.0f;
+}
+#endif
+
+// The base's Fresnel term for normal-incidence reflectance f0 at cosTheta = V·H, whose
+// Schlick weight is schlickWeight: Schlick's, mixed with the film's by the iridescence factor
+// (the extension's mix(F, F_iridescence, factor)).
+VKPT_FN vec3 baseFresnel(ShadingMaterial m, vec3 f0, float cosTheta, float schlickWeight) {
+    vec3 fresnel = f0 + (vec3(1.0f) - f0) * schlickWeight;
+    if (!hasIridescence(m)) return fresnel;
+    vec3 film = iridescenceFresnel(m.iridescenceIor, m.iridescenceThickness, cosTheta, f0);
+    return mix(fresnel, film, m.iridescence);
 }
 
 // strength in [0, 1] (KHR_materials_anisotropy), direction a unit vector in the shading frame's
@@ -246,25 +287,54 @@ VKPT_FN vec3 dielectricF0(ShadingMaterial m) {
     return min(m.iorF0 * m.specularColor, vec3(1.0f));
 }
 
+// What a film over reflectance f0 reflects towards w, for the layering: the Schlick albedo of
+// the tables, F0 E + (1 − F0) E_w, with F0 = F_film(μ), the film's term at w's own angle. The
+// film's term is not linear in F0, so the tables cannot hold ∫ F_film(V·H) f cos; this takes
+// the film's colour at the view and Schlick's rise towards grazing half vectors on top, which
+// keeps it at or above the true albedo (no gain: tests/unit/bsdf_test.cpp measures it).
+VKPT_FN vec3 iridescentAlbedo(ShadingMaterial m, vec3 f0, vec3 w) {
+    vec3 film = iridescenceFresnel(m.iridescenceIor, m.iridescenceThickness, w.z, f0);
+    float alpha = baseAlbedoAlpha(m, w);
+    return film * ggxAlbedo(w.z, alpha) + (vec3(1.0f) - film) * ggxFresnelAlbedo(w.z, alpha);
+}
+
+// Its cosine-weighted average over the hemisphere, 2∫ F_film(μ)E(μ) μ dμ, by the midpoint rule
+// on 8 cosines (the film's colours vary slowly with the angle below its first fringe).
+VKPT_FN vec3 iridescentAverageAlbedo(ShadingMaterial m, vec3 f0) {
+    vec3 sum = vec3(0.0f);
+    for (int k = 0; k < 8; ++k) {
+        float mu = (float(k) + 0.5f) / 8.0f;
+        vec3 w = vec3(sqrt(1.0f - mu * mu), 0.0f, mu);
+        sum += iridescentAlbedo(m, f0, w) * mu;
+    }
+    return sum * (2.0f / 8.0f);
+}
+
 // What the specular layer reflects at cos θ, per channel: s (F0 E + (1 − F0) E_w), exact for
-// Schlick's Fresnel, which is linear in F0 (albedo_tables.h).
+// Schlick's Fresnel, which is linear in F0 (albedo_tables.h); a film's share by
+// iridescentAlbedo.
 VKPT_FN vec3 dielectricSpecularAlbedo(ShadingMaterial m, vec3 w) {
     vec3 f0 = dielectricF0(m);
     float cosTheta = w.z;
     float alpha = baseAlbedoAlpha(m, w);
-    return m.specular * (f0 * ggxAlbedo(cosTheta, alpha) +
-                         (vec3(1.0f) - f0) * ggxFresnelAlbedo(cosTheta, alpha));
+    vec3 albedo =
+        f0 * ggxAlbedo(cosTheta, alpha) + (vec3(1.0f) - f0) * ggxFresnelAlbedo(cosTheta, alpha);
+    if (hasIridescence(m)) albedo = mix(albedo, iridescentAlbedo(m, f0, w), m.iridescence);
+    return m.specular * albedo;
 }
 
 VKPT_FN vec3 dielectricSpecularAverageAlbedo(ShadingMaterial m) {
     vec3 f0 = dielectricF0(m);
+    vec3 average;
     if (hasAnisotropy(m)) {
-        vec2 average = anisotropicAverageAlbedos(m);
-        return m.specular * (f0 * average.x + (vec3(1.0f) - f0) * average.y);
+        vec2 albedos = anisotropicAverageAlbedos(m);
+        average = f0 * albedos.x + (vec3(1.0f) - f0) * albedos.y;
+    } else {
+        average =
+            f0 * ggxAverageAlbedo(m.alpha) + (vec3(1.0f) - f0) * ggxFresnelAverageAlbedo(m.alpha);
     }
-    float alpha = m.alpha;
-    return m.specular *
-           (f0 * ggxAverageAlbedo(alpha) + (vec3(1.0f) - f0) * ggxFresnelAverageAlbedo(alpha));
+    if (hasIridescence(m)) average = mix(average, iridescentAverageAlbedo(m, f0), m.iridescence);
+    return m.specular * average;
 }
 
 // The share of light the specular layer leaves to the diffuse base, reciprocally:
@@ -281,26 +351,28 @@ VKPT_FN vec3 diffuseTransmittance(ShadingMaterial m, vec3 wo, vec3 wi) {
     return result;
 }
 
-// ggx is D G2 / (4 μo μi) at the half vector, fresnelWeight Schlick's (1 − V·H)^5 there.
-VKPT_FN vec3 evaluateOpaqueDielectric(ShadingMaterial m, vec3 wo, vec3 wi, float ggx,
+// ggx is D G2 / (4 μo μi) at the half vector, cosVH its V·H and fresnelWeight Schlick's
+// (1 − V·H)^5 there.
+VKPT_FN vec3 evaluateOpaqueDielectric(ShadingMaterial m, vec3 wo, vec3 wi, float ggx, float cosVH,
                                       float fresnelWeight) {
-    vec3 f0 = dielectricF0(m);
-    vec3 fresnel = f0 + (vec3(1.0f) - f0) * fresnelWeight;
+    vec3 fresnel = baseFresnel(m, dielectricF0(m), cosVH, fresnelWeight);
     return m.specular * ggx * fresnel + m.baseColor * VKPT_INV_PI * diffuseTransmittance(m, wo, wi);
 }
 
 // ---------------------------------------------------------------------------------------------
 // The metal: the GGX lobe with Schlick's Fresnel of F0 = baseColor.
 
-VKPT_FN vec3 evaluateMetal(ShadingMaterial m, float ggx, float fresnelWeight) {
-    return ggx * (m.baseColor + (vec3(1.0f) - m.baseColor) * fresnelWeight);
+VKPT_FN vec3 evaluateMetal(ShadingMaterial m, float ggx, float cosVH, float fresnelWeight) {
+    return ggx * baseFresnel(m, m.baseColor, cosVH, fresnelWeight);
 }
 
 VKPT_FN vec3 metalAlbedo(ShadingMaterial m, vec3 w) {
     float cosTheta = w.z;
     float alpha = baseAlbedoAlpha(m, w);
-    return m.baseColor * ggxAlbedo(cosTheta, alpha) +
-           (vec3(1.0f) - m.baseColor) * ggxFresnelAlbedo(cosTheta, alpha);
+    vec3 albedo = m.baseColor * ggxAlbedo(cosTheta, alpha) +
+                  (vec3(1.0f) - m.baseColor) * ggxFresnelAlbedo(cosTheta, alpha);
+    if (hasIridescence(m)) albedo = mix(albedo, iridescentAlbedo(m, m.baseColor, w), m.iridescence);
+    return albedo;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -387,10 +459,11 @@ VKPT_FN float layersTransmittance(ShadingMaterial m, vec3 wo) {
 VKPT_FN vec3 evaluateBase(ShadingMaterial m, vec3 wo, vec3 wi, vec3 glass) {
     vec3 h = normalize(wo + wi);
     float fresnelWeight = halfVectorFresnelWeight(wo, wi, h);
+    float cosVH = 0.5f * (dot(wo, h) + dot(wi, h)); // as halfVectorFresnelWeight takes it
     float ggx = baseGgxReflection(m, wo, wi, h);
-    vec3 dielectric = evaluateOpaqueDielectric(m, wo, wi, ggx, fresnelWeight);
+    vec3 dielectric = evaluateOpaqueDielectric(m, wo, wi, ggx, cosVH, fresnelWeight);
     if (m.transmission > 0.0f) dielectric = mix(dielectric, glass, m.transmission);
-    vec3 metal = evaluateMetal(m, ggx, fresnelWeight);
+    vec3 metal = evaluateMetal(m, ggx, cosVH, fresnelWeight);
     return mix(dielectric, metal, m.metallic);
 }
 

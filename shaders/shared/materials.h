@@ -36,7 +36,10 @@ VKPT_FN bool hasLayerTexture(Material m VKPT_SCENE_PARAM) {
                      hasTexture(m.specularColorTexture VKPT_SCENE_ARG));
     bool anisotropy =
         sceneHasAnisotropy(VKPT_SCENE_ARG_ONLY) && hasTexture(m.anisotropyTexture VKPT_SCENE_ARG);
-    return clearcoat || sheen || specular || anisotropy;
+    bool iridescence = sceneHasIridescence(VKPT_SCENE_ARG_ONLY) &&
+                       (hasTexture(m.iridescenceTexture VKPT_SCENE_ARG) ||
+                        hasTexture(m.iridescenceThicknessTexture VKPT_SCENE_ARG));
+    return clearcoat || sheen || specular || anisotropy || iridescence;
 }
 
 VKPT_FN bool hasAnyTexture(Material m VKPT_SCENE_PARAM) {

@@ -22,7 +22,8 @@
 //        sceneHasPunctualLights(), sceneHasEnvironment(), sceneHasEmitterCdf(),
 //        sceneHasDoubleSided(), sceneHasNormalMaps(), sceneHasTransmission(),
 //        sceneHasClearcoat(), sceneHasSheen(), sceneHasSpecularTextures(),
-//        sceneHasAnisotropy(), sceneHasInstances(), sceneHasLightTree()
+//        sceneHasAnisotropy(), sceneHasIridescence(), sceneHasInstances(),
+//        sceneHasLightTree()
 #ifndef VKPT_SCENE_VIEW_H
 #define VKPT_SCENE_VIEW_H
 
@@ -107,6 +108,9 @@ VKPT_FN bool sceneHasSpecularTextures(VKPT_SCENE_PARAM_ONLY) {
 }
 VKPT_FN bool sceneHasAnisotropy(VKPT_SCENE_PARAM_ONLY) {
     return scene.features[FEATURE_ANISOTROPY];
+}
+VKPT_FN bool sceneHasIridescence(VKPT_SCENE_PARAM_ONLY) {
+    return scene.features[FEATURE_IRIDESCENCE];
 }
 VKPT_FN bool sceneHasInstances(VKPT_SCENE_PARAM_ONLY) {
     return scene.features[FEATURE_INSTANCES];

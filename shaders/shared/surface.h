@@ -204,6 +204,18 @@ VKPT_FN ShadingMaterial withSurfaceAnisotropy(ShadingMaterial shading, SurfacePo
     return withAnisotropy(shading, strength, local / sqrt(length2));
 }
 
+// KHR_materials_iridescence at the point: the factor times iridescenceTexture.r, the thickness
+// mix(minimum, maximum, iridescenceThicknessTexture.g), or the maximum without the texture.
+VKPT_FN ShadingMaterial withSurfaceIridescence(ShadingMaterial shading, Material m,
+                                               vec2 uv VKPT_SCENE_PARAM) {
+    float factor = m.iridescence * sampleSlot(m.iridescenceTexture, uv, false VKPT_SCENE_ARG).x;
+    float thickness = m.iridescenceThicknessMaximum;
+    if (hasTexture(m.iridescenceThicknessTexture VKPT_SCENE_ARG))
+        thickness = mix(m.iridescenceThicknessMinimum, m.iridescenceThicknessMaximum,
+                        sampleSlot(m.iridescenceThicknessTexture, uv, false VKPT_SCENE_ARG).y);
+    return withIridescence(shading, factor, m.iridescenceIor, thickness);
+}
+
 // The material at the point: factors times textures (each read only when present). Needs
 // s.outgoing for the normal texture's bend.
 VKPT_FN void fillMaterial(VKPT_INOUT(SurfacePoint) s, Triangle primitive,
@@ -237,6 +249,8 @@ VKPT_FN void fillMaterial(VKPT_INOUT(SurfacePoint) s, Triangle primitive,
     if (sceneHasTransmission(VKPT_SCENE_ARG_ONLY))
         applyDielectricExtensions(s.shading, m, s.frontFace, uv VKPT_SCENE_ARG);
     if (metallicRoughness) s.shading = withMaterialLayers(s.shading, m, uv VKPT_SCENE_ARG);
+    if (sceneHasIridescence(VKPT_SCENE_ARG_ONLY) && metallicRoughness && m.iridescence > 0.0f)
+        s.shading = withSurfaceIridescence(s.shading, m, uv VKPT_SCENE_ARG);
     if (sceneHasAnisotropy(VKPT_SCENE_ARG_ONLY) && metallicRoughness &&
         m.anisotropyStrength > 0.0f && length(s.rawShadingNormal) > 0.0f)
         s.shading = withSurfaceAnisotropy(s.shading, s, m, hit, uv VKPT_SCENE_ARG);

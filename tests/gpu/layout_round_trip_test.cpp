@@ -116,6 +116,12 @@ SharedStructs makeStructs() {
         m.anisotropyRotationSin = x.f();
         m.anisotropyUnused = x.u();
         m.anisotropyTexture = makeTextureSlot(x);
+        m.iridescence = x.f();
+        m.iridescenceIor = x.f();
+        m.iridescenceThicknessMinimum = x.f();
+        m.iridescenceThicknessMaximum = x.f();
+        m.iridescenceTexture = makeTextureSlot(x);
+        m.iridescenceThicknessTexture = makeTextureSlot(x);
         s.materials.push_back(m);
         s.textures.push_back({x.u(), x.u(), x.u(), x.u()});
         s.emitters.push_back(

@@ -186,6 +186,39 @@ TEST(GltfAnisotropy, ReadsStrengthRotationAndTextureAndMakesTangents) {
     EXPECT_EQ(device[0].anisotropyStrength, 0.0f);
 }
 
+// --- KHR_materials_iridescence ------------------------------------------------------------
+
+TEST(GltfIridescence, ReadsFactorIorThicknessRangeAndTextures) {
+    std::string notes;
+    const Scene scene =
+        test::loadCapturingNotes(VKPT_SCENES_DIR "/test/features/iridescence.gltf", &notes);
+    EXPECT_EQ(notes, "");
+    const SceneMaterial& bubble = scene.materials.at(1);
+    EXPECT_EQ(bubble.iridescence, 1.0f);
+    EXPECT_EQ(bubble.iridescenceIor, 1.33f);
+    EXPECT_EQ(bubble.iridescenceThicknessMinimum, 200.0f);
+    EXPECT_EQ(bubble.iridescenceThicknessMaximum, 700.0f);
+    EXPECT_GE(bubble.iridescenceThicknessTexture.texture, 0);
+    EXPECT_TRUE(bubble.hasIridescence());
+    const SceneMaterial& metal = scene.materials.at(2);
+    EXPECT_EQ(metal.iridescence, 0.8f);
+    EXPECT_EQ(metal.iridescenceThicknessMinimum, 100.0f); // the extension's default
+    EXPECT_LT(metal.iridescenceTexture.texture, 0);
+    const SceneFeatures features = analyseScene(scene);
+    EXPECT_TRUE(features.iridescence);
+    EXPECT_TRUE(features.iridescenceTextures);
+    EXPECT_TRUE(features.kernelFeatures()[FEATURE_IRIDESCENCE]);
+    const std::vector<gpu::Material> device = makeGpuMaterials(scene.materials);
+    EXPECT_EQ(device[1].iridescence, 1.0f);
+    EXPECT_EQ(device[1].iridescenceThicknessMaximum, 700.0f);
+    EXPECT_EQ(device[0].iridescence, 0.0f);
+}
+
+// IridescenceSuzanne requires the extension: it was refused, and now loads with no note.
+TEST(GltfIridescence, IridescenceSuzanneLoads) {
+    expectSampleLoadsWithoutNotes("IridescenceSuzanne/IridescenceSuzanne.glb");
+}
+
 TEST(GltfAnisotropy, KhronosSamplesLoad) {
     expectSampleLoadsWithoutNotes("AnisotropyStrengthTest/AnisotropyStrengthTest.glb");
     expectSampleLoadsWithoutNotes("AnisotropyRotationTest/AnisotropyRotationTest.glb");
