@@ -47,11 +47,11 @@ endfunction()
 # One custom command per kernel: .comp → .spv (with depfile) → .spv.cpp (the word array).
 # Constant conditions (a build's `const bool` features, through glslang's short-circuit phis)
 # folded, then the branches and the functions only they called removed; twice, for conditions
-# that fold only once the first branches are gone.
+# that fold only once the first branches are gone. No --simplify-instructions: it rewrote float
+# arithmetic enough that normal_map.gltf's image left the full build's on 4 pixels.
 set(VKPT_SPIRV_PRUNE_PASSES
-    --eliminate-dead-branches --merge-blocks --simplify-instructions --ccp
-    --eliminate-dead-branches --merge-blocks --simplify-instructions --eliminate-dead-branches
-    --eliminate-dead-functions CACHE INTERNAL "")
+    --eliminate-dead-branches --merge-blocks --ccp --eliminate-dead-branches --merge-blocks --ccp
+    --eliminate-dead-branches --eliminate-dead-functions CACHE INTERNAL "")
 
 function(_vkpt_compile_kernel source out_dir namespace glslang_flags optimize prune out_cpp
          out_name out_symbol)
