@@ -5,7 +5,9 @@ materials, textures with KHR_texture_transform and alpha MASK, normal textures (
 and stored tangents), KHR_lights_punctual lights, a scene lit only by the environment (with a
 tiny equirectangular .hdr), an orthographic camera, glass: KHR_materials_transmission,
 KHR_materials_ior and KHR_materials_volume (smooth and rough, solid and thin-walled, clear and
-absorbing), and the KHR_materials_clearcoat and KHR_materials_sheen layers.
+absorbing), the KHR_materials_clearcoat and KHR_materials_sheen layers, and
+KHR_materials_anisotropy (brushed metal with stored and generated tangents), and
+KHR_materials_iridescence (thin films on spheres).
 
 Run from anywhere:  python3 scenes/generate_feature_scenes.py
 
@@ -33,6 +35,8 @@ SHAPES = "KHR_implicit_shapes"
 TRANSMISSION = "KHR_materials_transmission"
 IOR = "KHR_materials_ior"
 VOLUME = "KHR_materials_volume"
+ANISOTROPY = "KHR_materials_anisotropy"
+IRIDESCENCE = "KHR_materials_iridescence"
 UNSIGNED_SHORT = 5123
 ARRAY_BUFFER = 34962
 FLOAT = 5126
@@ -318,6 +322,60 @@ def sheen():
     s.save("sheen.gltf")
 
 
+def anisotropy():
+    """Brushed metal (KHR_materials_anisotropy) before a light panel on the back wall, whose
+    stretched reflections cover much of the image: a floor stretched along its stored TANGENT (+X), and a
+    block (generated tangents) whose direction comes from a texture (along u or along v, per
+    texel) turned by anisotropyRotation."""
+    s = FeatureScene()
+    s.use(ANISOTROPY)
+    grey = s.material("grey", (0.6, 0.6, 0.6), diffuse=True)
+    brushed = s.material("brushed floor", (0.9, 0.8, 0.7), metallic=1.0, roughness=0.3,
+                         extensions={ANISOTROPY: {"anisotropyStrength": 0.8}})
+    s.quad("floor", [-1.5, 0.0, 1.5], [3.0, 0.0, 0.0], [0.0, 0.0, -3.0], brushed, uv_scale=3.0,
+           tangent=[1.0, 0.0, 0.0, 1.0])
+    s.quad("back wall", [-1.5, 0.0, -1.0], [3.0, 0.0, 0.0], [0.0, 2.0, 0.0], grey)
+    # Low enough that the light panel's reflection in the floor is in view.
+    s.camera([0.0, 0.35, 2.2], 50.0)
+    # RG: the direction as (d + 1)/2, B: the strength. (255, 128) is +u, (128, 255) is +v.
+    directions = s.texture([[(255, 128, 255, 255), (128, 255, 200, 255)],
+                            [(128, 255, 200, 255), (255, 128, 255, 255)]],
+                           {"magFilter": 9728, "wrapS": 10497, "wrapT": 10497})
+    s.box("block", [-0.5, 0.0, -0.6], [0.5, 0.5, -0.2],
+          s.material("textured anisotropy", (0.3, 0.5, 0.8), roughness=0.4, extensions={
+              ANISOTROPY: {"anisotropyStrength": 1.0, "anisotropyRotation": 0.5,
+                           "anisotropyTexture": {"index": directions}}}))
+    s.quad("light", [-1.0, 0.8, -0.95], [2.0, 0.0, 0.0], [0.0, 0.4, 0.0],
+           s.material("light", (0.0, 0.0, 0.0), diffuse=True, emission=(1.0, 1.0, 1.0),
+                      strength=6.0))
+    s.save("anisotropy.gltf")
+
+
+def iridescence():
+    """Thin films (KHR_materials_iridescence) on a dark dielectric sphere (a soap-bubble film,
+    thickness from a texture) and on a metal sphere, before the room's light panel."""
+    s = FeatureScene()
+    s.use(IRIDESCENCE)
+    grey = s.material("grey", (0.6, 0.6, 0.6), diffuse=True)
+    room(s, grey, grey)
+    # G: the thickness between the minimum and maximum; R: the factor.
+    bands = s.texture([[(255, 0, 0, 255), (255, 128, 0, 255), (255, 255, 0, 255)]],
+                      {"magFilter": 9729, "wrapS": 10497, "wrapT": 10497})
+    s.sphere("bubble", (-0.45, 0.35, 0.0), 0.35, s.material(
+        "film on black", (0.02, 0.02, 0.02), roughness=0.1, extensions={IRIDESCENCE: {
+            "iridescenceFactor": 1.0, "iridescenceIor": 1.33,
+            "iridescenceThicknessMinimum": 200.0, "iridescenceThicknessMaximum": 700.0,
+            "iridescenceThicknessTexture": {"index": bands}}}))
+    s.sphere("oily metal", (0.45, 0.35, 0.0), 0.35, s.material(
+        "film on metal", (0.8, 0.8, 0.8), metallic=1.0, roughness=0.25, extensions={
+            IRIDESCENCE: {"iridescenceFactor": 0.8, "iridescenceIor": 1.5,
+                          "iridescenceThicknessMaximum": 450.0}}))
+    s.quad("light", [-1.0, 0.8, -0.95], [2.0, 0.0, 0.0], [0.0, 0.4, 0.0],
+           s.material("light", (0.0, 0.0, 0.0), diffuse=True, emission=(1.0, 1.0, 1.0),
+                      strength=6.0))
+    s.save("iridescence.gltf")
+
+
 def checker(size, a, b):
     return [[a if (x + y) % 2 == 0 else b for x in range(size)] for y in range(size)]
 
@@ -531,6 +589,8 @@ def main():
     absorbing_slab()
     clearcoat()
     sheen()
+    anisotropy()
+    iridescence()
     write(FEATURES_DIR / "sky.hdr", radiance_hdr(32, 16, sky_texel))
 
 

@@ -4,7 +4,7 @@
 scenes/loader/   valid files, each exercising one way of storing geometry (index types,
                  non-indexed, missing normals, interleaved vertices, .glb, transforms, ...) or
                  one part of the scene model (textures, texture transforms, spheres, lights,
-                 KHR_materials_specular).
+                 KHR_materials_specular, _unlit, _variants).
 scenes/invalid/  broken files, one per kind of bad input; loading each must end with one
                  InputError line naming the file and the place.
 
@@ -582,19 +582,23 @@ def far_away():
 
 
 def specular():
-    # Material 0: metallic 0 and specularFactor 0, Lambertian only. Material 1: specular 0.5,
-    # colour (1, 0.5, 0.25) and a specularTexture (not read: one note). Material 2: no extension.
+    # Material 0: metallic 0 and specularFactor 0, Lambertian only, with a specularTexture that
+    # multiplies 0. Material 1: specular 0.5, colour (1, 0.5, 0.25), a specularTexture and a
+    # specularColorTexture (with a KHR_texture_transform). Material 2: no extension.
     gltf = Gltf()
-    gltf.doc["extensionsUsed"] = ["KHR_materials_specular"]
+    gltf.doc["extensionsUsed"] = ["KHR_materials_specular", "KHR_texture_transform"]
     gltf.doc["images"] = [{"uri": data_uri(TEXTURE_PNG, "image/png")}]
     gltf.doc["textures"] = [{"source": 0}]
     gltf.doc["materials"] = [
         {"name": "lambert", "pbrMetallicRoughness": {"metallicFactor": 0},
-         "extensions": {"KHR_materials_specular": {"specularFactor": 0}}},
+         "extensions": {"KHR_materials_specular": {"specularFactor": 0,
+                                                   "specularTexture": {"index": 0}}}},
         {"name": "tinted", "pbrMetallicRoughness": {"metallicFactor": 0},
          "extensions": {"KHR_materials_specular": {
              "specularFactor": 0.5, "specularColorFactor": [1, 0.5, 0.25],
-             "specularTexture": {"index": 0}}}},
+             "specularTexture": {"index": 0},
+             "specularColorTexture": {"index": 0, "extensions": {
+                 "KHR_texture_transform": {"offset": [0.5, 0]}}}}}},
         {"name": "core", "pbrMetallicRoughness": {"metallicFactor": 0}},
     ]
     position = gltf.positions(TRIANGLE_POSITIONS)
@@ -754,6 +758,62 @@ def morph():
     return gltf
 
 
+def unlit():
+    # A unit quad seen by a camera 2 above it along +Z (yfov 0.2: the quad fills the view).
+    # Material 0: KHR_materials_unlit, orange (1, 0.25, 0) with a specular extension and a normal
+    # texture that an unlit surface does not read. Material 1: unlit with the test image as base
+    # colour texture and alphaMode MASK. Material 2: unlit, blue, double-sided.
+    gltf = Gltf()
+    gltf.doc["extensionsUsed"] = ["KHR_materials_specular", "KHR_materials_unlit"]
+    gltf.doc["extensionsRequired"] = ["KHR_materials_unlit"]
+    gltf.doc["images"] = [{"uri": data_uri(TEXTURE_PNG, "image/png")}]
+    gltf.doc["textures"] = [{"source": 0}]
+    gltf.doc["materials"] = [
+        {"name": "orange", "pbrMetallicRoughness": {"baseColorFactor": [1, 0.25, 0, 1]},
+         "normalTexture": {"index": 0},
+         "extensions": {"KHR_materials_unlit": {},
+                        "KHR_materials_specular": {"specularFactor": 0.5}}},
+        {"name": "cut out", "alphaMode": "MASK",
+         "pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.5, 0.5, 1],
+                                  "baseColorTexture": {"index": 0}},
+         "extensions": {"KHR_materials_unlit": {}}},
+        {"name": "blue", "doubleSided": True,
+         "pbrMetallicRoughness": {"baseColorFactor": [0, 0, 1, 1]},
+         "extensions": {"KHR_materials_unlit": {}}},
+    ]
+    gltf.doc["cameras"] = [{"type": "perspective", "perspective": {"yfov": 0.2, "znear": 0.1}}]
+    position = gltf.positions(QUAD_POSITIONS)
+    normal = gltf.normals(QUAD_NORMALS)
+    texcoord = gltf.texcoords(QUAD_TEXCOORDS)
+    index = gltf.indices(QUAD_INDICES)
+    quads = [primitive(position, normal, index, material=m, texcoord=texcoord) for m in (1, 2)]
+    gltf.scene([gltf.node(mesh=gltf.mesh([primitive(position, normal, index, material=0)])),
+                gltf.node(mesh=gltf.mesh(quads), translation=[0, 0, -5]),
+                gltf.node(camera=0, translation=[0.5, 0.5, 2])])
+    return gltf
+
+
+def variants():
+    # Three variants; mesh 0's primitive maps variant 0 ("red") to material 1 and variants 1
+    # and 2 to material 2, and has material 0 of its own; mesh 1's primitive has no mapping.
+    gltf = Gltf()
+    gltf.doc["extensionsUsed"] = ["KHR_materials_variants"]
+    gltf.doc["extensions"] = {"KHR_materials_variants": {
+        "variants": [{"name": "red"}, {"name": "green"}, {"name": "2"}]}}
+    gltf.doc["materials"] = [
+        {"name": "default", "pbrMetallicRoughness": {"baseColorFactor": [1, 1, 1, 1]}},
+        {"name": "red", "pbrMetallicRoughness": {"baseColorFactor": [1, 0, 0, 1]}},
+        {"name": "green", "pbrMetallicRoughness": {"baseColorFactor": [0, 1, 0, 1]}},
+    ]
+    position = gltf.positions(TRIANGLE_POSITIONS)
+    mapped = primitive(position, material=0)
+    mapped["extensions"] = {"KHR_materials_variants": {"mappings": [
+        {"material": 1, "variants": [0]}, {"material": 2, "variants": [1, 2]}]}}
+    gltf.scene([gltf.node(mesh=gltf.mesh([mapped])),
+                gltf.node(mesh=gltf.mesh([primitive(position, material=0)]))])
+    return gltf
+
+
 VALID_SCENES = [
     # (file, builder, writer, what it exercises)
     ("indices_u8.gltf", lambda: quad(UNSIGNED_BYTE), write_embedded,
@@ -791,7 +851,7 @@ VALID_SCENES = [
     ("lights.gltf", lights, write_embedded, "KHR_lights_punctual point, spot, directional lights"),
     ("far_away.gltf", far_away, write_embedded,
      "a triangle, a sphere and a point light 1e6 from the origin: recentred together"),
-    ("specular.gltf", specular, write_embedded, "KHR_materials_specular factors and a texture"),
+    ("specular.gltf", specular, write_embedded, "KHR_materials_specular factors and textures"),
     ("glass.gltf", glass, write_embedded,
      "KHR_materials_transmission, KHR_materials_ior and KHR_materials_volume"),
     ("skin.gltf", skin, write_embedded,
@@ -800,6 +860,10 @@ VALID_SCENES = [
      "a triangle with two morph targets (one sparse) under mesh weights, node weights and a "
      "weights animation"),
     ("sparse.gltf", sparse, write_embedded, "a triangle whose sparse POSITION moves vertex 1"),
+    ("unlit.gltf", unlit, write_embedded,
+     "KHR_materials_unlit: a plain, a textured alpha-masked and a double-sided material"),
+    ("variants.gltf", variants, write_embedded,
+     "KHR_materials_variants: three variants, a mapped primitive and an unmapped one"),
     ("instancing.gltf", instancing, write_embedded,
      "a triangle mesh placed by two nodes, a mirrored node and three EXT_mesh_gpu_instancing "
      "instances; an emissive quad mesh placed twice"),
@@ -1012,6 +1076,16 @@ def glass_material_scene(extensions):
     gltf.doc["extensionsUsed"] = sorted(extensions)
     gltf.doc["materials"] = [{"pbrMetallicRoughness": {"metallicFactor": 0},
                               "extensions": extensions}]
+    return embedded_text(gltf)
+
+
+def variant_out_of_range():
+    gltf = triangle(material=0)
+    gltf.doc["extensionsUsed"] = ["KHR_materials_variants"]
+    gltf.doc["extensions"] = {"KHR_materials_variants": {"variants": [{"name": "only"}]}}
+    gltf.doc["materials"] = [{}, {}]
+    gltf.doc["meshes"][0]["primitives"][0]["extensions"] = {"KHR_materials_variants": {
+        "mappings": [{"material": 1, "variants": [0, 3]}]}}
     return embedded_text(gltf)
 
 
@@ -1267,6 +1341,8 @@ def write_invalid_scenes():
         ("attenuation_distance_zero.gltf", glass_material_scene(
             {"KHR_materials_volume": {"thicknessFactor": 1, "attenuationDistance": 0}}),
          "an attenuationDistance of 0"),
+        ("variant_out_of_range.gltf", variant_out_of_range(),
+         "a KHR_materials_variants mapping of variant 3 of 1"),
         ("light_type.gltf", light_scene({"type": "area"}), "a light of type 'area'"),
         ("light_negative_intensity.gltf", light_scene({"type": "point", "intensity": -2}),
          "a point light of intensity -2"),

@@ -178,6 +178,12 @@ void addSceneOptions(CommandLine& cl, RenderSettings& s) {
                 if (!std::isfinite(time)) throw InputError("option --time: T must be finite");
                 s.animationTime = double(time);
             }});
+    cl.add({"variant",
+            {},
+            "NAME|N",
+            "KHR_materials_variants: show variant NAME (or number N) instead of the default "
+            "materials (--verbose lists them)",
+            [&s](auto v) { s.variant = v[0]; }});
     cl.add({"animation",
             {},
             "N|NAME",
@@ -186,7 +192,7 @@ void addSceneOptions(CommandLine& cl, RenderSettings& s) {
     cl.add({"verbose",
             {'v'},
             "",
-            "print the scene's feature set, animations and setup details",
+            "print the scene's feature set, animations, variants and setup details",
             [&s](auto) { s.verbose = true; }});
 }
 

@@ -45,6 +45,7 @@ void writeSettings(JsonWriter& json, const RenderSettings& s) {
                                                               : "off");
     if (s.animationTime) json.field("time", *s.animationTime);
     json.field("animation", s.animation); // "" all of them
+    json.field("variant", s.variant); // "" = the default materials
     json.endObject();
 }
 
@@ -105,6 +106,9 @@ void writeFeatures(JsonWriter& json, const RenderReport& r) {
     json.field("clearcoatMaterials", f.clearcoatMaterials);
     json.field("sheenMaterials", f.sheenMaterials);
     json.field("clearcoatTextures", f.clearcoatTextures).field("sheenTextures", f.sheenTextures);
+    json.field("specularTextures", f.specularTextures);
+    json.field("anisotropy", f.anisotropy).field("anisotropyTextures", f.anisotropyTextures);
+    json.field("iridescence", f.iridescence).field("iridescenceTextures", f.iridescenceTextures);
     json.field("textureCoordinates", f.textureCoordinates());
     json.field("alphaMask", f.alphaMask).field("doubleSided", f.doubleSided);
     json.field("transmission", f.transmission);

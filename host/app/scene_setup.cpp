@@ -45,6 +45,18 @@ void lightIfUnlit(Scene& scene, const RenderSettings& settings, const std::strin
                  describeLightingReason(decision.measure).c_str());
 }
 
+// "vkpt: material variants: 0 'midnight', 1 'beach' (shown), 2 'street'" for --verbose.
+void listVariants(const Scene& scene, const std::string& program) {
+    if (scene.materialVariants.empty()) return;
+    std::string list;
+    for (std::size_t i = 0; i < scene.materialVariants.size(); ++i) {
+        list += (i == 0 ? "" : ", ") + std::to_string(i) + " '" + scene.materialVariants[i] + "'";
+        if (int(i) == scene.materialVariant) list += " (shown)";
+    }
+    if (scene.materialVariant < 0) list += "; shown: the default materials (--variant NAME|N)";
+    std::fprintf(stderr, "%s: material variants: %s\n", program.c_str(), list.c_str());
+}
+
 // " (16438 stored: 2 meshes placed by 12544 instances)" for a two-level scene.
 std::string instancingNote(const Scene& scene) {
     if (scene.instances.empty()) return "";
@@ -87,11 +99,15 @@ SceneSetup setUpScene(const RenderSettings& settings, const std::string& program
     loadOptions.instancing = settings.instancing;
     loadOptions.time = settings.animationTime;
     loadOptions.animation = settings.animation;
+    loadOptions.variant = settings.variant;
     std::optional<GltfSceneSource> once;
     std::optional<GltfSceneSource>& read = source != nullptr ? *source : once;
     if (!read) read.emplace(settings.scenePath);
     Scene scene = read->pose(loadOptions);
-    if (settings.verbose) listAnimations(scene, settings, program);
+    if (settings.verbose) {
+        listAnimations(scene, settings, program);
+        listVariants(scene, program);
+    }
     scene.environment = loadEnvironment(settings);
     lightIfUnlit(scene, settings, program);
     loadPhase.end();

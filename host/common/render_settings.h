@@ -74,7 +74,10 @@ struct RenderSettings {
     // --time T: the scene posed by its animations at T seconds; nullopt: at rest.
     std::optional<double> animationTime;
     std::string animation; // --animation N|NAME: the one that plays; "" all of them
-    bool verbose = false;  // --verbose: the scene's feature set and more on stderr
+    // --variant: the KHR_materials_variants variant whose materials are shown, by name or index;
+    // empty: the file's default materials.
+    std::string variant;
+    bool verbose = false; // --verbose: the scene's feature set and more on stderr
     std::string statsJsonPath;
     bool quiet = false; // no progress bar
     // --preview S: the image so far written to the output path every S seconds (0: never).

@@ -87,6 +87,18 @@ std::vector<gpu::Material> makeGpuMaterials(const std::vector<SceneMaterial>& ma
         g.clearcoatNormalScale = m.clearcoatNormalScale;
         g.sheenColorTexture = makeSlot(m.sheenColorTexture);
         g.sheenRoughnessTexture = makeSlot(m.sheenRoughnessTexture);
+        g.specularTexture = makeSlot(m.specularTexture);
+        g.specularColorTexture = makeSlot(m.specularColorTexture);
+        g.anisotropyStrength = m.hasAnisotropy() ? m.anisotropyStrength : 0.0f;
+        g.anisotropyRotationCos = float(std::cos(double(m.anisotropyRotation)));
+        g.anisotropyRotationSin = float(std::sin(double(m.anisotropyRotation)));
+        g.anisotropyTexture = makeSlot(m.anisotropyTexture);
+        g.iridescence = m.hasIridescence() ? m.iridescence : 0.0f;
+        g.iridescenceIor = m.iridescenceIor;
+        g.iridescenceThicknessMinimum = m.iridescenceThicknessMinimum;
+        g.iridescenceThicknessMaximum = m.iridescenceThicknessMaximum;
+        g.iridescenceTexture = makeSlot(m.iridescenceTexture);
+        g.iridescenceThicknessTexture = makeSlot(m.iridescenceThicknessTexture);
         result.push_back(g);
     }
     return result;

@@ -9,8 +9,8 @@ namespace vkpt::gltf {
 namespace {
 
 // Extensions that change what vkpt renders and that it implements. (KHR_implicit_shapes only
-// for spheres, gltf_shapes.cpp; KHR_materials_specular without its textures;
-// KHR_materials_volume without thicknessTexture, which a path tracer does not need.) The
+// for spheres, gltf_shapes.cpp; KHR_materials_volume without thicknessTexture, which a path
+// tracer does not need; KHR_materials_unlit as an emitter, docs/scene-model.md.) The
 // compression extensions are decoded while loading: Draco (gltf_draco.cpp), meshopt
 // (gltf_meshopt.cpp), quantized attributes (gltf_accessors.cpp) and WebP images (gltf_webp.cpp).
 const std::vector<std::string> kSupportedExtensions = {"KHR_materials_emissive_strength",
@@ -23,6 +23,10 @@ const std::vector<std::string> kSupportedExtensions = {"KHR_materials_emissive_s
                                                        "KHR_materials_volume",
                                                        "KHR_materials_clearcoat",
                                                        "KHR_materials_sheen",
+                                                       "KHR_materials_unlit",
+                                                       "KHR_materials_anisotropy",
+                                                       "KHR_materials_iridescence",
+                                                       "KHR_materials_variants",
                                                        "KHR_draco_mesh_compression",
                                                        "EXT_meshopt_compression",
                                                        "KHR_mesh_quantization",
@@ -47,12 +51,17 @@ bool isSupportedExtension(const std::string& extension) {
            kSupportedExtensions.end();
 }
 
+// KHR_texture_basisu's KTX2 images have no decoder packaged for Debian 12 (the platform vkpt
+// builds on), so the line says what to convert them to.
 void checkRequiredExtensions(const std::vector<std::string>& extensionsRequired) {
     const std::vector<std::string> unsupported = ignoredExtensions(extensionsRequired);
     if (unsupported.empty()) return;
+    const bool basisu = std::find(unsupported.begin(), unsupported.end(), "KHR_texture_basisu") !=
+                        unsupported.end();
     throw GltfProblem(
         std::string(unsupported.size() == 1 ? "required extension " : "required extensions ") +
-        joinNames(unsupported) + (unsupported.size() == 1 ? " is" : " are") + " not supported");
+        joinNames(unsupported) + (unsupported.size() == 1 ? " is" : " are") + " not supported" +
+        (basisu ? " (convert the KTX2 textures to PNG, JPEG or WebP)" : ""));
 }
 
 std::vector<std::string> ignoredExtensions(const std::vector<std::string>& extensionsUsed) {

@@ -30,6 +30,7 @@
 #include "scene/gltf_shapes.h"
 #include "scene/gltf_skins.h"
 #include "scene/gltf_textures.h"
+#include "scene/gltf_variants.h"
 
 namespace vkpt {
 namespace {
@@ -70,7 +71,7 @@ public:
         : model_(model), scene_(scene), texcoords_(texcoords), plan_(plan), pose_(pose),
           worlds_(worlds), skinJoints_(model.skins.size()),
           withTangents_(std::any_of(scene.materials.begin(), scene.materials.end(),
-                                    [](const SceneMaterial& m) { return m.hasNormalMap(); })),
+                                    [](const SceneMaterial& m) { return m.needsTangents(); })),
           meshSlots_(model.meshes.size()) {}
 
     void visitNode(int nodeIndex, const glm::dmat4& world) {
@@ -224,7 +225,10 @@ private:
             const std::string where =
                 "mesh " + std::to_string(meshIndex) + ", primitive " + std::to_string(p);
             const tinygltf::Primitive& primitive = mesh.primitives[p];
-            const std::uint32_t material = materialIndex(primitive.material, where);
+            const std::uint32_t material =
+                materialIndex(gltf::variantMaterial(primitive, scene_.materialVariant,
+                                                    scene_.materialVariants.size(), where),
+                              where);
             const bool emitting = scene_.materials[material].emits();
             if ((kinds == PrimitiveKinds::Emitting && !emitting) ||
                 (kinds == PrimitiveKinds::NotEmitting && emitting))
@@ -255,12 +259,12 @@ private:
         scene_.cameras.push_back(gltf::placeCamera(model_, nodeIndex, world));
     }
 
-    // Tangents only where a scene has normal textures, generated or read only for the
-    // primitives whose material has one.
+    // Tangents only where a scene has normal textures or anisotropy, generated or read only for
+    // the primitives whose material needs them.
     gltf::Tangents tangentsFor(std::uint32_t material) const {
         if (!withTangents_) return gltf::Tangents::Skip;
-        return scene_.materials[material].hasNormalMap() ? gltf::Tangents::Read
-                                                         : gltf::Tangents::Zero;
+        return scene_.materials[material].needsTangents() ? gltf::Tangents::Read
+                                                          : gltf::Tangents::Zero;
     }
 
     // glTF material indices carry over; a primitive without one gets the default material,
@@ -290,7 +294,7 @@ private:
     const gltf::ScenePose* pose_; // nullptr: at rest
     const gltf::NodeWorlds& worlds_;
     std::vector<std::optional<std::vector<glm::dmat4>>> skinJoints_; // per skin, when first used
-    bool withTangents_; // some material has a normal texture
+    bool withTangents_; // some material has a normal texture or anisotropy
     std::optional<std::uint32_t> defaultMaterial_;
     // Per glTF mesh: not read yet, or its slot in Scene::meshes (nullopt: nothing to keep).
     std::vector<std::optional<std::optional<std::uint32_t>>> meshSlots_;
@@ -413,8 +417,13 @@ std::unique_ptr<GltfSceneSource::Parsed> parse(const std::string& path) {
     scene.sourcePath = path;
     gltf::TextureTable textures(model, scene.textures, scene.images);
     scene.materials = gltf::convertMaterials(model, textures);
-    // TEXCOORD_0 is read only to look textures up.
-    parsed->texcoords = scene.textures.empty() ? gltf::Texcoords::Skip : gltf::Texcoords::Read;
+    scene.materialVariants = gltf::materialVariantNames(model);
+    // TEXCOORD_0 is read only to look textures up, or to generate the tangents of an anisotropic
+    // material (the direction follows the texture's axes).
+    const bool anisotropy = std::any_of(scene.materials.begin(), scene.materials.end(),
+                                        [](const SceneMaterial& m) { return m.hasAnisotropy(); });
+    parsed->texcoords = scene.textures.empty() && !anisotropy ? gltf::Texcoords::Skip
+                                                              : gltf::Texcoords::Read;
     parsed->sceneIndex = gltf::defaultSceneIndex(model);
     parsed->animations = gltf::readAnimations(model);
     scene.animations = summarise(parsed->animations);
@@ -425,6 +434,7 @@ Scene buildScene(const GltfSceneSource::Parsed& parsed, const LoadOptions& optio
     const tinygltf::Model& model = parsed.model;
     const int sceneIndex = parsed.sceneIndex;
     Scene scene = parsed.base;
+    scene.materialVariant = gltf::chooseMaterialVariant(scene.materialVariants, options.variant);
     const std::vector<std::size_t> playing =
         gltf::selectAnimations(parsed.animations, options.animation);
     std::optional<gltf::ScenePose> pose;

@@ -20,20 +20,26 @@ struct LoadOptions {
     // rest, as the file stores its nodes (morph weights and skins still apply).
     std::optional<double> time;
     std::string animation; // which one plays at `time`: "" all, else an index or a name
+    // KHR_materials_variants (--variant): a variant's name, or its index in decimal; empty: the
+    // primitives' own (default) materials.
+    std::string variant;
 };
 
 // Loads the default scene (`scene`, else scene 0): TRIANGLES primitives of every mesh node (and of
 // every EXT_mesh_gpu_instancing instance), morphed by their weights and skinned by their skins,
-// posed by the animations at options.time when given, with their materials, flattened into world
-// space or kept once per mesh and placed by instances as options.instancing decides; the textures
-// those materials use (decoded; TEXCOORD_0 read only then); KHR_lights_punctual lights;
-// KHR_implicit_shapes spheres (gltf_shapes.cpp); and the perspective cameras. Compressed files are
-// decoded on the way: Draco and meshopt geometry, quantized attributes, WebP images
-// (docs/scene-model.md, "Compressed files"). Throws InputError, one line naming the file and the
-// place, for any bad input (malformed skins and animations too), including other
-// primitive modes, undecodable images and unsupported required extensions. What it ignores
-// (orthographic cameras, unsupported extensions in extensionsUsed, KHR_materials_specular textures)
-// it notes on stderr, one line each, and only once the load has succeeded.
+// posed by the animations at options.time when given, with their materials (with
+// options.variant, each primitive takes the material its KHR_materials_variants mapping gives
+// that variant; Scene::materialVariants lists them all), flattened into world space or kept
+// once per mesh and placed by instances as options.instancing decides; the textures those
+// materials use (decoded; TEXCOORD_0 read only then, or for an anisotropic material's
+// tangents); KHR_lights_punctual lights; KHR_implicit_shapes spheres (gltf_shapes.cpp); and the
+// perspective cameras. Compressed files are decoded on the way: Draco and meshopt geometry,
+// quantized attributes, WebP images (docs/scene-model.md, "Compressed files"). Throws
+// InputError, one line naming the file and the place, for any bad input (malformed skins and
+// animations too), including other primitive modes, undecodable images and unsupported
+// required extensions. What it ignores (orthographic cameras, unsupported extensions in
+// extensionsUsed, KHR_materials_volume's thicknessTexture) it notes on stderr, one line each,
+// and only once the load has succeeded.
 Scene loadGltfScene(const std::string& path, const LoadOptions& options = {});
 
 // A file read once and posed many times: an animation's frames share the parsed document, the

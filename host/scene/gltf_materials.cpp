@@ -1,7 +1,8 @@
 // gltf_materials.cpp — reads the core material factors, the base colour, metallic-roughness,
-// emissive and normal textures, KHR_materials_emissive_strength, KHR_materials_specular, the
-// glass of KHR_materials_transmission, KHR_materials_ior and KHR_materials_volume, and the
-// layers of KHR_materials_clearcoat and KHR_materials_sheen.
+// emissive and normal textures, KHR_materials_emissive_strength, KHR_materials_specular (factors
+// and textures), the glass of KHR_materials_transmission, KHR_materials_ior and
+// KHR_materials_volume, the layers of KHR_materials_clearcoat and KHR_materials_sheen, and
+// KHR_materials_unlit as an emitter of the base colour that reflects nothing.
 #include "scene/gltf_materials.h"
 
 #include <algorithm>
@@ -20,6 +21,9 @@ constexpr const char* kIor = "KHR_materials_ior";
 constexpr const char* kVolume = "KHR_materials_volume";
 constexpr const char* kClearcoat = "KHR_materials_clearcoat";
 constexpr const char* kSheen = "KHR_materials_sheen";
+constexpr const char* kUnlit = "KHR_materials_unlit";
+constexpr const char* kAnisotropy = "KHR_materials_anisotropy";
+constexpr const char* kIridescence = "KHR_materials_iridescence";
 
 std::string materialName(std::size_t index) {
     return "material " + std::to_string(index);
@@ -71,26 +75,6 @@ void checkFinite(const SceneMaterial& material, std::size_t index) {
     }
 }
 
-// KHR_materials_specular: the strength (specularFactor, in [0, 1]) and colour
-// (specularColorFactor, >= 0) of the dielectric specular layer; absent, both are 1, the core
-// glTF model. Its textures are not read (materialNotes says so).
-void readSpecular(const tinygltf::Material& material, std::size_t index, SceneMaterial& converted) {
-    const tinygltf::Value* extension = findExtension(material.extensions, kSpecular);
-    if (extension == nullptr) return;
-    const std::string where = materialName(index) + ": " + kSpecular;
-    const double factor = readNumber(*extension, "specularFactor", 1.0, where);
-    if (factor < 0.0 || factor > 1.0) {
-        throw GltfProblem(where + ": specularFactor must be in [0, 1]");
-    }
-    const std::vector<double> color =
-        readNumbers(*extension, "specularColorFactor", {1.0, 1.0, 1.0}, where);
-    if (color[0] < 0.0 || color[1] < 0.0 || color[2] < 0.0) {
-        throw GltfProblem(where + ": specularColorFactor must not be negative");
-    }
-    converted.specular = static_cast<float>(factor);
-    converted.specularColor = glm::vec3(glm::dvec3(color[0], color[1], color[2]));
-}
-
 // glTF normalTexture: a textureInfo with a scale for the X and Y of the decoded normals.
 void readNormalTexture(const tinygltf::NormalTextureInfo& normal, TextureTable& textures,
                        const std::string& where, SceneMaterial& converted) {
@@ -130,6 +114,32 @@ double readUnitNumber(const tinygltf::Value& object, const std::string& key, dou
     const double value = readNumber(object, key, fallback, where);
     if (value < 0.0 || value > 1.0) throw GltfProblem(where + ": " + key + " must be in [0, 1]");
     return value;
+}
+
+// KHR_materials_specular: the strength (specularFactor, in [0, 1], times the A channel of
+// specularTexture) and colour (specularColorFactor, >= 0, times the RGB of the sRGB
+// specularColorTexture) of the dielectric specular layer; absent, both are 1, the core glTF
+// model.
+void readSpecular(const tinygltf::Material& material, std::size_t index, TextureTable& textures,
+                  SceneMaterial& converted) {
+    const tinygltf::Value* extension = findExtension(material.extensions, kSpecular);
+    if (extension == nullptr) return;
+    const std::string where = materialName(index) + ": " + kSpecular;
+    const double factor = readNumber(*extension, "specularFactor", 1.0, where);
+    if (factor < 0.0 || factor > 1.0) {
+        throw GltfProblem(where + ": specularFactor must be in [0, 1]");
+    }
+    const std::vector<double> color =
+        readNumbers(*extension, "specularColorFactor", {1.0, 1.0, 1.0}, where);
+    if (color[0] < 0.0 || color[1] < 0.0 || color[2] < 0.0) {
+        throw GltfProblem(where + ": specularColorFactor must not be negative");
+    }
+    converted.specular = static_cast<float>(factor);
+    converted.specularColor = glm::vec3(glm::dvec3(color[0], color[1], color[2]));
+    converted.specularTexture =
+        readExtensionTexture(*extension, "specularTexture", textures, where);
+    converted.specularColorTexture =
+        readExtensionTexture(*extension, "specularColorTexture", textures, where);
 }
 
 // KHR_materials_transmission: the share of the non-metal part that is glass
@@ -225,6 +235,45 @@ void readSheen(const tinygltf::Material& material, std::size_t index, TextureTab
         readExtensionTexture(*extension, "sheenRoughnessTexture", textures, where);
 }
 
+// KHR_materials_anisotropy: the strength in [0, 1], the rotation (radians, any finite number)
+// and the texture of direction (RG) and strength (B).
+void readAnisotropy(const tinygltf::Material& material, std::size_t index, TextureTable& textures,
+                    SceneMaterial& converted) {
+    const tinygltf::Value* extension = findExtension(material.extensions, kAnisotropy);
+    if (extension == nullptr) return;
+    const std::string where = materialName(index) + ": " + kAnisotropy;
+    converted.anisotropyStrength =
+        static_cast<float>(readUnitNumber(*extension, "anisotropyStrength", 0.0, where));
+    converted.anisotropyRotation =
+        static_cast<float>(readNumber(*extension, "anisotropyRotation", 0.0, where));
+    converted.anisotropyTexture =
+        readExtensionTexture(*extension, "anisotropyTexture", textures, where);
+}
+
+// KHR_materials_iridescence: the film's factor in [0, 1] (R of its texture), ior >= 1 and
+// thickness range in nm (>= 0; G of the thickness texture interpolates it).
+void readIridescence(const tinygltf::Material& material, std::size_t index, TextureTable& textures,
+                     SceneMaterial& converted) {
+    const tinygltf::Value* extension = findExtension(material.extensions, kIridescence);
+    if (extension == nullptr) return;
+    const std::string where = materialName(index) + ": " + kIridescence;
+    converted.iridescence =
+        static_cast<float>(readUnitNumber(*extension, "iridescenceFactor", 0.0, where));
+    const double ior = readNumber(*extension, "iridescenceIor", 1.3, where);
+    if (!(ior >= 1.0)) throw GltfProblem(where + ": iridescenceIor must be >= 1");
+    converted.iridescenceIor = static_cast<float>(ior);
+    const double minimum = readNumber(*extension, "iridescenceThicknessMinimum", 100.0, where);
+    const double maximum = readNumber(*extension, "iridescenceThicknessMaximum", 400.0, where);
+    if (minimum < 0.0 || maximum < 0.0)
+        throw GltfProblem(where + ": the thickness range must not be negative");
+    converted.iridescenceThicknessMinimum = static_cast<float>(minimum);
+    converted.iridescenceThicknessMaximum = static_cast<float>(maximum);
+    converted.iridescenceTexture =
+        readExtensionTexture(*extension, "iridescenceTexture", textures, where);
+    converted.iridescenceThicknessTexture =
+        readExtensionTexture(*extension, "iridescenceThicknessTexture", textures, where);
+}
+
 void readTextures(const tinygltf::Material& material, std::size_t index, TextureTable& textures,
                   SceneMaterial& converted) {
     const std::string where = materialName(index) + ": ";
@@ -236,6 +285,32 @@ void readTextures(const tinygltf::Material& material, std::size_t index, Texture
     converted.emissiveTexture =
         readTextureReference(material.emissiveTexture, textures, where + "emissiveTexture");
     readNormalTexture(material.normalTexture, textures, where + "normalTexture", converted);
+}
+
+// KHR_materials_unlit: the surface shows its base colour (factor × texture), whatever lights
+// it. vkpt makes that colour the radiance it emits, from the front face (both faces when
+// double-sided), and lets it reflect nothing (a black Lambertian base), so every ray sees the
+// same colour and light sampling finds it like any emitter (docs/scene-model.md, "Unlit").
+// The base colour texture moves to the emissive slot (both sRGB); it stays the base colour's
+// too only for alphaMode MASK, whose cut-outs it decides. The extension's other properties,
+// and every other material extension, do not apply to an unlit surface and are not read.
+SceneMaterial unlitMaterial(const tinygltf::Material& material, std::size_t index,
+                            TextureTable& textures, const SceneMaterial& core) {
+    SceneMaterial unlit;
+    unlit.name = core.name;
+    unlit.unlit = true;
+    unlit.emission = glm::vec3(core.baseColor);
+    unlit.emissiveTexture =
+        readTextureReference(material.pbrMetallicRoughness.baseColorTexture, textures,
+                             materialName(index) + ": baseColorTexture");
+    unlit.baseColor = glm::vec4(0.0f, 0.0f, 0.0f, core.baseColor.a);
+    unlit.metallic = 0.0f;
+    unlit.specular = 0.0f;
+    unlit.doubleSided = core.doubleSided;
+    unlit.alphaMode = core.alphaMode;
+    unlit.alphaCutoff = core.alphaCutoff;
+    if (unlit.alphaMode == AlphaMode::Mask) unlit.baseColorTexture = unlit.emissiveTexture;
+    return unlit;
 }
 
 SceneMaterial convertMaterial(const tinygltf::Material& material, std::size_t index,
@@ -252,20 +327,18 @@ SceneMaterial convertMaterial(const tinygltf::Material& material, std::size_t in
     converted.alphaMode = alphaModeOf(material, index);
     converted.alphaCutoff = static_cast<float>(material.alphaCutoff);
     checkFinite(converted, index);
-    readSpecular(material, index, converted);
+    if (findExtension(material.extensions, kUnlit) != nullptr)
+        return unlitMaterial(material, index, textures, converted);
     readTextures(material, index, textures, converted);
+    readSpecular(material, index, textures, converted);
     readTransmission(material, index, textures, converted);
     readIor(material, index, converted);
     readVolume(material, index, converted);
     readClearcoat(material, index, textures, converted);
     readSheen(material, index, textures, converted);
+    readAnisotropy(material, index, textures, converted);
+    readIridescence(material, index, textures, converted);
     return converted;
-}
-
-bool hasSpecularTexture(const tinygltf::Material& material) {
-    const tinygltf::Value* extension = findExtension(material.extensions, kSpecular);
-    return extension != nullptr && (findMember(*extension, "specularTexture") != nullptr ||
-                                    findMember(*extension, "specularColorTexture") != nullptr);
 }
 
 } // namespace
@@ -289,15 +362,10 @@ std::string materialCount(std::size_t count) {
 }
 
 std::vector<std::string> materialNotes(const tinygltf::Model& model) {
-    std::size_t specularTextures = 0, thicknessTextures = 0;
-    for (const tinygltf::Material& material : model.materials) {
-        specularTextures += hasSpecularTexture(material) ? 1 : 0;
+    std::size_t thicknessTextures = 0;
+    for (const tinygltf::Material& material : model.materials)
         thicknessTextures += hasThicknessTexture(material) ? 1 : 0;
-    }
     std::vector<std::string> notes;
-    if (specularTextures > 0)
-        notes.push_back("ignoring the " + std::string(kSpecular) + " textures of " +
-                        materialCount(specularTextures) + " (only its factors are supported)");
     if (thicknessTextures > 0)
         notes.push_back("ignoring the " + std::string(kVolume) + " thicknessTexture of " +
                         materialCount(thicknessTextures) +

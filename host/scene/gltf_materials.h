@@ -1,6 +1,7 @@
 // gltf_materials.h — glTF metallic-roughness materials to SceneMaterial: factors, emission,
-// KHR_materials_specular, the base colour, metallic-roughness and emissive textures, and glass:
-// KHR_materials_transmission (factor and texture), KHR_materials_ior, KHR_materials_volume.
+// KHR_materials_specular (factors and textures), the base colour, metallic-roughness and
+// emissive textures, glass: KHR_materials_transmission (factor and texture), KHR_materials_ior,
+// KHR_materials_volume; the clearcoat and sheen layers; KHR_materials_unlit.
 #pragma once
 
 #include <string>
@@ -18,8 +19,7 @@ namespace vkpt::gltf {
 // not read.
 std::vector<SceneMaterial> convertMaterials(const tinygltf::Model& model, TextureTable& textures);
 
-// What the conversion left out, one stderr line each: the KHR_materials_specular textures and
-// KHR_materials_volume's thicknessTexture.
+// What the conversion left out, one stderr line each: KHR_materials_volume's thicknessTexture.
 std::vector<std::string> materialNotes(const tinygltf::Model& model);
 
 // The material the glTF specification prescribes for a primitive without one: white, fully

@@ -32,7 +32,8 @@ std::string textureName(int index) {
     for (const char* extension : kExtensionSources) {
         if (findExtension(texture.extensions, extension) != nullptr) {
             throw GltfProblem(name + " has only a " + extension +
-                              " image, which vkpt does not support (only PNG and JPEG)");
+                              " image, which vkpt does not decode; convert it to PNG, JPEG or "
+                              "WebP");
         }
     }
     throw GltfProblem(name + " has no source image");

@@ -32,6 +32,8 @@ struct SceneMaterial {
     float alphaCutoff = 0.5f;
     float specular = 1.0f;                     // KHR_materials_specular specularFactor
     glm::vec3 specularColor{1.0f};             // KHR_materials_specular specularColorFactor
+    TextureReference specularTexture;          // linear: A strength (KHR_materials_specular)
+    TextureReference specularColorTexture;     // sRGB-encoded RGB colour (KHR_materials_specular)
     TextureReference baseColorTexture;         // sRGB-encoded RGBA
     TextureReference metallicRoughnessTexture; // linear: G roughness, B metallic
     TextureReference emissiveTexture;          // sRGB-encoded RGB
@@ -59,6 +61,20 @@ struct SceneMaterial {
     float sheenRoughness = 0.0f;            // sheenRoughnessFactor
     TextureReference sheenColorTexture;     // sRGB-encoded RGB
     TextureReference sheenRoughnessTexture; // linear: A roughness
+    // KHR_materials_anisotropy (strength 0: isotropic; the extension's defaults)
+    float anisotropyStrength = 0.0f;    // anisotropyStrength
+    float anisotropyRotation = 0.0f;    // anisotropyRotation, radians counter-clockwise
+    TextureReference anisotropyTexture; // linear: RG direction (2x − 1), B strength
+    // KHR_materials_iridescence (factor 0: no film; the extension's defaults)
+    float iridescence = 0.0f;                     // iridescenceFactor
+    float iridescenceIor = 1.3f;                  // iridescenceIor
+    float iridescenceThicknessMinimum = 100.0f;   // nm
+    float iridescenceThicknessMaximum = 400.0f;   // nm
+    TextureReference iridescenceTexture;          // linear: R factor
+    TextureReference iridescenceThicknessTexture; // linear: G thickness
+    // KHR_materials_unlit: the loader made the base colour the emission and the rest black
+    // (gltf_materials.cpp); kept for reports and tests, shading needs nothing else.
+    bool unlit = false;
 
     bool hasClearcoat() const { return clearcoat > 0.0f; }
     // Some colour of emission: such a material's triangles are never instanced (Scene::meshes).
@@ -68,6 +84,18 @@ struct SceneMaterial {
         return normalTexture.texture >= 0 ||
                (hasClearcoat() && clearcoatNormalTexture.texture >= 0);
     }
+    // KHR_materials_specular textures that shade: on a GGX material (a Lambertian one has
+    // specular 0, which they multiply).
+    bool hasSpecularTextures() const {
+        return !isDiffuseOnly() &&
+               (specularTexture.texture >= 0 || specularColorTexture.texture >= 0);
+    }
+    // An anisotropic GGX lobe: a Lambertian material has none to stretch.
+    bool hasAnisotropy() const { return !isDiffuseOnly() && anisotropyStrength > 0.0f; }
+    // Tangent frames are needed: for a normal texture, or for the anisotropy's direction.
+    bool needsTangents() const { return hasNormalMap() || hasAnisotropy(); }
+    // A thin film over the GGX lobe: a Lambertian material has none to colour.
+    bool hasIridescence() const { return !isDiffuseOnly() && iridescence > 0.0f; }
     bool hasSheen() const { return glm::any(glm::greaterThan(sheenColor, glm::vec3(0.0f))); }
 
     // Lambertian only: the glTF model with no metal, no specular layer, no glass and no
@@ -234,6 +262,10 @@ struct Scene : TriangleSoup {
     // so that floats keep their precision there; rendering does not depend on it.
     glm::dvec3 worldOrigin{0.0};
     GeometryRepairs repairs;
+    // KHR_materials_variants: the file's variant names, and the one whose materials the
+    // primitives show (-1: the default materials).
+    std::vector<std::string> materialVariants;
+    int materialVariant = -1;
 
     // The triangles a render sees: the soup's and every instance's mesh's.
     std::uint64_t placedTriangleCount() const;

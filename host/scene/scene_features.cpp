@@ -71,6 +71,16 @@ void addMaterial(const SceneMaterial& material, SceneFeatures& features) {
         features.sheenTextures |=
             material.sheenColorTexture.texture >= 0 || material.sheenRoughnessTexture.texture >= 0;
     }
+    features.specularTextures |= material.hasSpecularTextures();
+    if (material.hasIridescence()) {
+        features.iridescence = true;
+        features.iridescenceTextures |= material.iridescenceTexture.texture >= 0 ||
+                                        material.iridescenceThicknessTexture.texture >= 0;
+    }
+    if (material.hasAnisotropy()) {
+        features.anisotropy = true;
+        features.anisotropyTextures |= material.anisotropyTexture.texture >= 0;
+    }
     features.alphaMask |= material.alphaMode == AlphaMode::Mask;
     features.doubleSided |= material.doubleSided;
     features.transmission |= material.usesDielectricExtensions();
@@ -134,6 +144,9 @@ std::array<bool, FEATURE_COUNT> SceneFeatures::kernelFeatures() const {
     on[FEATURE_SHEEN] = sheenMaterials;
     on[FEATURE_INSTANCES] = instances;
     on[FEATURE_LIGHT_TREE] = lightTree;
+    on[FEATURE_SPECULAR_TEXTURES] = specularTextures;
+    on[FEATURE_ANISOTROPY] = anisotropy;
+    on[FEATURE_IRIDESCENCE] = iridescence;
     return on;
 }
 
@@ -164,7 +177,9 @@ SceneFeatures generalFeatures(const SceneFeatures& used) {
     all.normalTextures = all.transmissionTextures = true;
     all.alphaMask = all.doubleSided = all.transmission = true;
     all.clearcoatMaterials = all.sheenMaterials = true;
-    all.clearcoatTextures = all.sheenTextures = true;
+    all.clearcoatTextures = all.sheenTextures = all.specularTextures = true;
+    all.anisotropy = all.anisotropyTextures = true;
+    all.iridescence = all.iridescenceTextures = true;
     all.triangles = all.spheres = true;
     all.emissiveTriangles = all.emissiveSpheres = true;
     all.pointLights = all.spotLights = all.directionalLights = true;
@@ -182,6 +197,8 @@ std::string describeFeatures(const SceneFeatures& features) {
     appendIf(features.metallicRoughnessMaterials, "metallic-roughness", names);
     appendIf(features.clearcoatMaterials, "clearcoat", names);
     appendIf(features.sheenMaterials, "sheen", names);
+    appendIf(features.anisotropy, "anisotropy", names);
+    appendIf(features.iridescence, "iridescence", names);
     std::vector<std::string> textures;
     appendIf(features.baseColorTextures, "base colour", textures);
     appendIf(features.metallicRoughnessTextures, "metallic-roughness", textures);
@@ -190,6 +207,9 @@ std::string describeFeatures(const SceneFeatures& features) {
     appendIf(features.transmissionTextures, "transmission", textures);
     appendIf(features.clearcoatTextures, "clearcoat", textures);
     appendIf(features.sheenTextures, "sheen", textures);
+    appendIf(features.specularTextures, "specular", textures);
+    appendIf(features.anisotropyTextures, "anisotropy", textures);
+    appendIf(features.iridescenceTextures, "iridescence", textures);
     if (!textures.empty()) names.push_back("textures (" + joined(textures) + ")");
     appendIf(features.alphaMask, "alpha mask", names);
     appendIf(features.doubleSided, "double-sided", names);

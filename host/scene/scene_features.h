@@ -26,10 +26,15 @@ struct SceneFeatures {
     // KHR_materials_transmission / _ior / _volume: some material transmits, bounds a volume
     // or has an ior other than 1.5 (shared/bsdf_dielectric.h).
     bool transmission = false;
-    bool clearcoatMaterials = false; // KHR_materials_clearcoat layers present
-    bool sheenMaterials = false;     // KHR_materials_sheen layers present
-    bool clearcoatTextures = false;  // clearcoat or clearcoat roughness textures
-    bool sheenTextures = false;      // sheen colour or sheen roughness textures
+    bool clearcoatMaterials = false;  // KHR_materials_clearcoat layers present
+    bool sheenMaterials = false;      // KHR_materials_sheen layers present
+    bool clearcoatTextures = false;   // clearcoat or clearcoat roughness textures
+    bool sheenTextures = false;       // sheen colour or sheen roughness textures
+    bool specularTextures = false;    // KHR_materials_specular textures on a GGX material
+    bool anisotropy = false;          // KHR_materials_anisotropy on a GGX material
+    bool anisotropyTextures = false;  // its anisotropyTexture
+    bool iridescence = false;         // KHR_materials_iridescence on a GGX material
+    bool iridescenceTextures = false; // its factor or thickness texture
     bool triangles = false;
     bool spheres = false;
     // Meshes placed by instances: a two-level BVH. A layout, not an optional feature: --general
@@ -50,12 +55,13 @@ struct SceneFeatures {
 
     bool textures() const {
         return baseColorTextures || metallicRoughnessTextures || emissiveTextures ||
-               normalTextures || transmissionTextures || clearcoatTextures || sheenTextures;
+               normalTextures || transmissionTextures || clearcoatTextures || sheenTextures ||
+               specularTextures || anisotropyTextures || iridescenceTextures;
     }
     // TEXCOORD_0 is needed only to read textures.
     bool textureCoordinates() const { return textures(); }
-    // Per-corner tangents are needed only for normal textures.
-    bool tangents() const { return normalTextures; }
+    // Per-corner tangents are needed only for normal textures and anisotropy's direction.
+    bool tangents() const { return normalTextures || anisotropy; }
     bool punctualLights() const { return pointLights || spotLights || directionalLights; }
     bool emitterCdf() const { return general || emitterCount > 1; }
 

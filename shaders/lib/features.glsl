@@ -11,6 +11,9 @@
 #ifndef VKPT_DIFFUSE_ONLY
 #define VKPT_DIFFUSE_ONLY 0
 #endif
+#ifndef VKPT_CORE_MATERIALS
+#define VKPT_CORE_MATERIALS 0
+#endif
 
 #if VKPT_DIFFUSE_ONLY
 // The build for scenes whose materials are all Lambertian (shaders/CMakeLists.txt): the layered
@@ -20,6 +23,9 @@ const bool featureMetallicRoughness = false;
 const bool featureTransmission = false;
 const bool featureClearcoat = false;
 const bool featureSheen = false;
+const bool featureSpecularTextures = false;
+const bool featureAnisotropy = false;
+const bool featureIridescence = false;
 #else
 // glTF GGX materials (diffuse-only scenes keep the Lambertian BSDF alone).
 layout(constant_id = FEATURE_METALLIC_ROUGHNESS) const bool featureMetallicRoughness = true;
@@ -29,6 +35,21 @@ layout(constant_id = FEATURE_TRANSMISSION) const bool featureTransmission = true
 layout(constant_id = FEATURE_CLEARCOAT) const bool featureClearcoat = true;
 // Some material has a KHR_materials_sheen layer.
 layout(constant_id = FEATURE_SHEEN) const bool featureSheen = true;
+#if VKPT_CORE_MATERIALS
+// The build for scenes without the material extensions below (shaders/CMakeLists.txt): they are
+// constants of the build, and the dead branches and functions they leave are pruned from the
+// module, so that a driver never translates them (docs/gpu.md, "Pipelines").
+const bool featureSpecularTextures = false;
+const bool featureAnisotropy = false;
+const bool featureIridescence = false;
+#else
+// Some GGX material has a KHR_materials_specular texture.
+layout(constant_id = FEATURE_SPECULAR_TEXTURES) const bool featureSpecularTextures = true;
+// Some GGX material has KHR_materials_anisotropy: shading reads triangleTangents for its direction.
+layout(constant_id = FEATURE_ANISOTROPY) const bool featureAnisotropy = true;
+// Some GGX material has a KHR_materials_iridescence film.
+layout(constant_id = FEATURE_IRIDESCENCE) const bool featureIridescence = true;
+#endif
 #endif
 // Base colour, metallic-roughness or emissive textures, and the TEXCOORD_0 they are read at.
 layout(constant_id = FEATURE_TEXTURES) const bool featureTextures = true;

@@ -62,7 +62,7 @@ TriangleTangents fetchTriangleTangents(uint i) {
                             texelVec4(RECORD_TEXEL(triangleTangents, 3u, i, 2u)));
 }
 
-#define MATERIAL_TEXELS 29u // sizeof(Material) / 16
+#define MATERIAL_TEXELS 41u // sizeof(Material) / 16
 
 TextureSlot textureSlotFrom(uvec4 a, uvec4 b) {
     return TextureSlot(texelVec3(a), a.w, texelVec3(b), b.w);
@@ -73,9 +73,11 @@ TextureSlot fetchTextureSlot(uint material, uint first) {
                            RECORD_TEXEL(materials, MATERIAL_TEXELS, material, first + 1u));
 }
 
-// Twenty-nine texels, of which the compiler keeps the fetches of the fields a kernel reads.
+// Forty-one texels, of which the compiler keeps the fetches of the fields a kernel reads.
 // Texels 10–12: the normal texture; 13–16: transmission, ior and volume; 17–28: clearcoat and
-// sheen (read only where FEATURE_CLEARCOAT or FEATURE_SHEEN keeps the code that reads them).
+// sheen (read only where FEATURE_CLEARCOAT or FEATURE_SHEEN keeps the code that reads them);
+// 29–32: the specular textures (FEATURE_SPECULAR_TEXTURES); 33–35: anisotropy
+// (FEATURE_ANISOTROPY); 36–40: iridescence (FEATURE_IRIDESCENCE).
 Material fetchMaterial(uint i) {
     uvec4 colour = RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 0u);
     uvec4 emission = RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 1u);
@@ -85,6 +87,8 @@ Material fetchMaterial(uint i) {
     uvec4 volume = RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 14u);
     uvec4 sheen = RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 17u);
     uvec4 clearcoat = RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 18u);
+    uvec4 anisotropy = RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 33u);
+    vec4 iridescence = texelVec4(RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 36u));
     return Material(texelVec4(colour), texelVec3(emission), emission.w,
                     uintBitsToFloat(factors.x), uintBitsToFloat(factors.y),
                     uintBitsToFloat(factors.z), factors.w, texelVec3(specular),
@@ -96,7 +100,11 @@ Material fetchMaterial(uint i) {
                     uintBitsToFloat(clearcoat.x), uintBitsToFloat(clearcoat.y),
                     uintBitsToFloat(clearcoat.z), clearcoat.w, fetchTextureSlot(i, 19u),
                     fetchTextureSlot(i, 21u), fetchTextureSlot(i, 23u), fetchTextureSlot(i, 25u),
-                    fetchTextureSlot(i, 27u));
+                    fetchTextureSlot(i, 27u), fetchTextureSlot(i, 29u),
+                    fetchTextureSlot(i, 31u), uintBitsToFloat(anisotropy.x),
+                    uintBitsToFloat(anisotropy.y), uintBitsToFloat(anisotropy.z), anisotropy.w,
+                    fetchTextureSlot(i, 34u), iridescence.x, iridescence.y, iridescence.z,
+                    iridescence.w, fetchTextureSlot(i, 37u), fetchTextureSlot(i, 39u));
 }
 
 #define INSTANCE_TEXELS 7u // sizeof(Instance) / 16

@@ -85,6 +85,14 @@ bool sceneHasSheen() {
     return featureSheen;
 }
 
+// The features added since: macros rather than functions, so that the condition a guard tests
+// is the specialisation constant itself, which the driver folds as it reads the SPIR-V, and
+// the guarded calls never reach its inliner in a scene without the feature. (One parameter, for
+// the shared code's empty VKPT_SCENE_ARG_ONLY.)
+#define sceneHasSpecularTextures(noSceneArgument) featureSpecularTextures
+#define sceneHasAnisotropy(noSceneArgument) featureAnisotropy
+#define sceneHasIridescence(noSceneArgument) featureIridescence
+
 bool sceneHasInstances() {
     return featureInstances;
 }

@@ -83,12 +83,14 @@ constexpr bool bindingsNumberedOnce() {
     return true;
 }
 static_assert(bindingsNumberedOnce(), "a binding number is used twice or leaves a gap");
+static_assert(FEATURE_COUNT <= 31, "the scene features' specialisation ids reach SPEC_AOVS");
 } // namespace vkpt
 #endif
 
 // Specialisation constant: the render records AOVs (lib/aovs.glsl). A setting of the render,
-// not a feature of the scene, with an id between the scene features' and the chunk constants'.
-#define SPEC_AOVS 15
+// not a feature of the scene, with an id between the scene features' (0 to FEATURE_COUNT − 1,
+// room for 31) and the chunk constants'.
+#define SPEC_AOVS 31
 
 // A scene array larger than one binding may hold (maxStorageBufferRange, maxTexelBufferElements,
 // maxMemoryAllocationSize) is split into up to SCENE_ARRAY_MAX_CHUNKS buffers of 2^k elements
@@ -96,8 +98,8 @@ static_assert(bindingsNumberedOnce(), "a binding number is used twice or leaves 
 // specialisation constants per scene binding say into how many chunks, and k; the defaults (one
 // chunk) leave the kernels reading element 0 only, as if there were no arrays.
 #define SCENE_ARRAY_MAX_CHUNKS 4
-#define SPEC_SCENE_ARRAY_CHUNKS(binding) (16 + 2 * (binding))
-#define SPEC_SCENE_ARRAY_CHUNK_LOG2(binding) (17 + 2 * (binding))
+#define SPEC_SCENE_ARRAY_CHUNKS(binding) (32 + 2 * (binding))
+#define SPEC_SCENE_ARRAY_CHUNK_LOG2(binding) (33 + 2 * (binding))
 
 #ifdef __cplusplus
 namespace vkpt::gpu {

@@ -34,6 +34,12 @@
 //    from the camera does not use: both renderers evaluate f(wo = towards the camera, wi).
 //    Light the glass transmits below the surface passes the layers once, on wo's side.
 //
+// KHR_materials_iridescence mixes a thin film's Fresnel term (iridescence.h) into the dielectric
+// highlight's and the metal's; the layering then takes the film's albedo as iridescentAlbedo.
+//
+// KHR_materials_anisotropy stretches the base's GGX lobe (ggx_anisotropic.h; baseGgxReflection
+// and its pdf and sampler); the albedo tables then stand in at baseAlbedoAlpha's α per direction.
+//
 // The clearcoat may have its own normal (KHR_materials_clearcoat's clearcoatNormalTexture): its
 // lobe and its albedo are then taken in that normal's frame. A material without
 // MATERIAL_METALLIC_ROUGHNESS is Lambertian and keeps the exact arithmetic of the Lambertian
@@ -44,7 +50,9 @@
 #include "albedo_lookup.h"
 #include "bsdf_dielectric.h"
 #include "ggx.h"
+#include "ggx_anisotropic.h"
 #include "host_device.h"
+#include "iridescence.h"
 #include "sampling.h"
 #include "sheen.h"
 
@@ -77,6 +85,18 @@ struct ShadingMaterial {
     float iorF0;        // ((ior − 1)/(ior + 1))², the dielectric's F0 before specularColor
     float eta;          // ior beyond the surface / ior on wo's side; thin-walled: the ior
     bool thinWalled;    // no volume behind the surface
+    // KHR_materials_anisotropy: the base's GGX lobe (dielectric highlight and metal) is
+    // stretched to αt = mix(α, 1, strength²) along anisotropyDirection (unit, in this frame's
+    // tangent plane) and keeps α across it (the extension's formula). 0: isotropic.
+    float anisotropy;
+    float alphaT;
+    vec2 anisotropyDirection;
+    // KHR_materials_iridescence: a thin film over the base's specular layers (dielectric
+    // highlight and metal) whose Fresnel term (iridescence.h) is mixed in by `iridescence`.
+    // 0: no film.
+    float iridescence;
+    float iridescenceIor;       // the film's index of refraction
+    float iridescenceThickness; // the film's thickness in nanometres
 };
 
 // roughness is perceptual; it is clamped to [0, 1] (the glTF range) before squaring. Opaque,
@@ -101,7 +121,120 @@ VKPT_FN ShadingMaterial makeShadingMaterial(vec3 baseColor, float metallic, floa
     m.iorF0 = 0.04f; // ior 1.5
     m.eta = 1.5f;
     m.thinWalled = true;
+    m.anisotropy = 0.0f;
+    m.alphaT = m.alpha;
+    m.anisotropyDirection = vec2(1.0f, 0.0f);
+    m.iridescence = 0.0f;
+    m.iridescenceIor = 1.3f;
+    m.iridescenceThickness = 400.0f;
     return m;
+}
+
+// factor in [0, 1], the film's ior and thickness in nm (KHR_materials_iridescence).
+VKPT_FN ShadingMaterial withIridescence(ShadingMaterial m, float factor, float ior,
+                                        float thickness) {
+    m.iridescence = clamp(factor, 0.0f, 1.0f);
+    m.iridescenceIor = ior;
+    m.iridescenceThickness = max(thickness, 0.0f);
+    return m;
+}
+
+// A macro in a kernel, for the reason hasAnisotropy's note gives.
+#ifdef VKPT_FEATURES_GLSL
+#define hasIridescence(m) (featureIridescence && (m).iridescence > 0.0f)
+#else
+VKPT_FN bool hasIridescence(ShadingMaterial m) {
+    return m.iridescence > 0.0f;
+}
+#endif
+
+// The base's Fresnel term for normal-incidence reflectance f0 at cosTheta = V·H, whose
+// Schlick weight is schlickWeight: Schlick's, mixed with the film's by the iridescence factor
+// (the extension's mix(F, F_iridescence, factor)).
+VKPT_FN vec3 baseFresnel(ShadingMaterial m, vec3 f0, float cosTheta, float schlickWeight) {
+    vec3 fresnel = f0 + (vec3(1.0f) - f0) * schlickWeight;
+    if (!hasIridescence(m)) return fresnel;
+    vec3 film = iridescenceFresnel(m.iridescenceIor, m.iridescenceThickness, cosTheta, f0);
+    return mix(fresnel, film, m.iridescence);
+}
+
+// strength in [0, 1] (KHR_materials_anisotropy), direction a unit vector in the shading frame's
+// tangent plane.
+VKPT_FN ShadingMaterial withAnisotropy(ShadingMaterial m, float strength, vec2 direction) {
+    m.anisotropy = clamp(strength, 0.0f, 1.0f);
+    m.alphaT = mix(m.alpha, 1.0f, m.anisotropy * m.anisotropy);
+    m.anisotropyDirection = direction;
+    return m;
+}
+
+// In a kernel, whether the scene has anisotropy is a specialisation constant
+// (lib/features.glsl). It guards the anisotropic code where it is called, not inside a function,
+// so that a kernel specialised without the feature drops those calls as it translates the
+// SPIR-V, before inlining copies the lobe into every caller (the Cornell box's pipelines would
+// otherwise take longer to create): a macro for that reason. C++ compiles every feature in.
+#ifdef VKPT_FEATURES_GLSL
+#define hasAnisotropy(m) (featureAnisotropy && (m).anisotropy > 0.0f)
+#else
+VKPT_FN bool hasAnisotropy(ShadingMaterial m) {
+    return m.anisotropy > 0.0f;
+}
+#endif
+
+// The base's GGX lobe, its sampler's pdf and its sampler, isotropic or anisotropic; directions
+// in the shading frame.
+VKPT_FN float baseGgxReflection(ShadingMaterial m, vec3 wo, vec3 wi, vec3 h) {
+    if (!hasAnisotropy(m)) return ggxReflection(wo, wi, h, m.alpha);
+    vec2 d = m.anisotropyDirection;
+    return ggxReflectionAnisotropic(toAnisotropyFrame(d, wo), toAnisotropyFrame(d, wi),
+                                    toAnisotropyFrame(d, h), vec2(m.alphaT, m.alpha));
+}
+
+VKPT_FN float baseGgxReflectionPdf(ShadingMaterial m, vec3 wo, vec3 h) {
+    if (!hasAnisotropy(m)) return ggxReflectionPdf(wo, h, m.alpha);
+    vec2 d = m.anisotropyDirection;
+    return ggxReflectionPdfAnisotropic(toAnisotropyFrame(d, wo), toAnisotropyFrame(d, h),
+                                       vec2(m.alphaT, m.alpha));
+}
+
+VKPT_FN vec3 sampleBaseGgxReflection(ShadingMaterial m, vec3 wo, vec2 u) {
+    if (!hasAnisotropy(m)) return sampleGgxReflection(wo, m.alpha, u);
+    vec2 d = m.anisotropyDirection;
+    return fromAnisotropyFrame(
+        d, sampleGgxReflectionAnisotropic(toAnisotropyFrame(d, wo), vec2(m.alphaT, m.alpha), u));
+}
+
+// The α at which the (isotropic) albedo tables stand in for the base's lobe seen from w: α
+// itself, or for an anisotropic lobe the roughness projected on w's azimuth,
+// √(αt² cos²φ + αb² sin²φ) with φ measured from the anisotropy direction: the α of Smith's Λ(w)
+// for the stretched distribution (Heitz 2014, eq. 86), so the masking of w, which decides most
+// of the albedo, is exact. At normal incidence, where φ is undefined, the geometric mean.
+// tests/unit/bsdf_test.cpp measures what remains (AnisotropicFurnace...).
+VKPT_FN float baseAlbedoAlpha(ShadingMaterial m, vec3 w) {
+    if (!hasAnisotropy(m)) return m.alpha;
+    vec3 a = toAnisotropyFrame(m.anisotropyDirection, w);
+    float planar = a.x * a.x + a.y * a.y;
+    float mean = sqrt(m.alphaT * m.alpha);
+    if (!(planar > 0.0f)) return mean;
+    return min(mean,
+               sqrt((m.alphaT * m.alphaT * a.x * a.x + m.alpha * m.alpha * a.y * a.y) / planar));
+}
+
+// The azimuthal mean over a hemisphere of directions of the table's cosine-weighted average
+// albedo, E_avg(α(φ)), by the midpoint rule on 8 azimuths of the quarter circle (α(φ) is even
+// about both axes): what the reciprocal form's normalisation 1 − E_avg needs so that the
+// diffuse base under an anisotropic highlight still integrates to (1 − E(wo))·ρ. xy: F = 1 and
+// Schlick weight tables (ggxAverageAlbedo, ggxFresnelAverageAlbedo).
+VKPT_FN vec2 anisotropicAverageAlbedos(ShadingMaterial m) {
+    vec2 sum = vec2(0.0f);
+    for (int k = 0; k < 8; ++k) {
+        float phi = (float(k) + 0.5f) * (0.5f * VKPT_PI / 8.0f);
+        float c = cos(phi);
+        float s = sin(phi);
+        float alpha = min(sqrt(m.alphaT * m.alpha),
+                          sqrt(m.alphaT * m.alphaT * c * c + m.alpha * m.alpha * s * s));
+        sum += vec2(ggxAverageAlbedo(alpha), ggxFresnelAverageAlbedo(alpha));
+    }
+    return sum * 0.125f;
 }
 
 // factor in [0, 1] (KHR_materials_clearcoat), roughness perceptual.
@@ -154,26 +287,62 @@ VKPT_FN vec3 dielectricF0(ShadingMaterial m) {
     return min(m.iorF0 * m.specularColor, vec3(1.0f));
 }
 
+// What a film over reflectance f0 reflects towards w, for the layering: the Schlick albedo of
+// the tables, F0 E + (1 − F0) E_w, with F0 = F_film(μ), the film's term at w's own angle. The
+// film's term is not linear in F0, so the tables cannot hold ∫ F_film(V·H) f cos; this takes
+// the film's colour at the view and Schlick's rise towards grazing half vectors on top, which
+// keeps it at or above the true albedo (no gain: tests/unit/bsdf_test.cpp measures it).
+VKPT_FN vec3 iridescentAlbedo(ShadingMaterial m, vec3 f0, vec3 w) {
+    vec3 film = iridescenceFresnel(m.iridescenceIor, m.iridescenceThickness, w.z, f0);
+    float alpha = baseAlbedoAlpha(m, w);
+    return film * ggxAlbedo(w.z, alpha) + (vec3(1.0f) - film) * ggxFresnelAlbedo(w.z, alpha);
+}
+
+// Its cosine-weighted average over the hemisphere, 2∫ F_film(μ)E(μ) μ dμ, by the midpoint rule
+// on 8 cosines (the film's colours vary slowly with the angle below its first fringe).
+VKPT_FN vec3 iridescentAverageAlbedo(ShadingMaterial m, vec3 f0) {
+    vec3 sum = vec3(0.0f);
+    for (int k = 0; k < 8; ++k) {
+        float mu = (float(k) + 0.5f) / 8.0f;
+        vec3 w = vec3(sqrt(1.0f - mu * mu), 0.0f, mu);
+        sum += iridescentAlbedo(m, f0, w) * mu;
+    }
+    return sum * (2.0f / 8.0f);
+}
+
 // What the specular layer reflects at cos θ, per channel: s (F0 E + (1 − F0) E_w), exact for
-// Schlick's Fresnel, which is linear in F0 (albedo_tables.h).
-VKPT_FN vec3 dielectricSpecularAlbedo(ShadingMaterial m, float cosTheta) {
+// Schlick's Fresnel, which is linear in F0 (albedo_tables.h); a film's share by
+// iridescentAlbedo.
+VKPT_FN vec3 dielectricSpecularAlbedo(ShadingMaterial m, vec3 w) {
     vec3 f0 = dielectricF0(m);
-    return m.specular * (f0 * ggxAlbedo(cosTheta, m.alpha) +
-                         (vec3(1.0f) - f0) * ggxFresnelAlbedo(cosTheta, m.alpha));
+    float cosTheta = w.z;
+    float alpha = baseAlbedoAlpha(m, w);
+    vec3 albedo =
+        f0 * ggxAlbedo(cosTheta, alpha) + (vec3(1.0f) - f0) * ggxFresnelAlbedo(cosTheta, alpha);
+    if (hasIridescence(m)) albedo = mix(albedo, iridescentAlbedo(m, f0, w), m.iridescence);
+    return m.specular * albedo;
 }
 
 VKPT_FN vec3 dielectricSpecularAverageAlbedo(ShadingMaterial m) {
     vec3 f0 = dielectricF0(m);
-    return m.specular *
-           (f0 * ggxAverageAlbedo(m.alpha) + (vec3(1.0f) - f0) * ggxFresnelAverageAlbedo(m.alpha));
+    vec3 average;
+    if (hasAnisotropy(m)) {
+        vec2 albedos = anisotropicAverageAlbedos(m);
+        average = f0 * albedos.x + (vec3(1.0f) - f0) * albedos.y;
+    } else {
+        average =
+            f0 * ggxAverageAlbedo(m.alpha) + (vec3(1.0f) - f0) * ggxFresnelAverageAlbedo(m.alpha);
+    }
+    if (hasIridescence(m)) average = mix(average, iridescentAverageAlbedo(m, f0), m.iridescence);
+    return m.specular * average;
 }
 
 // The share of light the specular layer leaves to the diffuse base, reciprocally:
 // (1 − E(μo))(1 − E(μi)) / (1 − E_avg). Where the layer reflects (almost) everything on
 // average, the base receives nothing.
-VKPT_FN vec3 diffuseTransmittance(ShadingMaterial m, float cosThetaO, float cosThetaI) {
-    vec3 outgoing = max(vec3(1.0f) - dielectricSpecularAlbedo(m, cosThetaO), vec3(0.0f));
-    vec3 incoming = max(vec3(1.0f) - dielectricSpecularAlbedo(m, cosThetaI), vec3(0.0f));
+VKPT_FN vec3 diffuseTransmittance(ShadingMaterial m, vec3 wo, vec3 wi) {
+    vec3 outgoing = max(vec3(1.0f) - dielectricSpecularAlbedo(m, wo), vec3(0.0f));
+    vec3 incoming = max(vec3(1.0f) - dielectricSpecularAlbedo(m, wi), vec3(0.0f));
     vec3 average = vec3(1.0f) - dielectricSpecularAverageAlbedo(m);
     vec3 result;
     result.x = average.x > 1e-6f ? outgoing.x * incoming.x / average.x : 0.0f;
@@ -182,25 +351,28 @@ VKPT_FN vec3 diffuseTransmittance(ShadingMaterial m, float cosThetaO, float cosT
     return result;
 }
 
-// ggx is D G2 / (4 μo μi) at the half vector, fresnelWeight Schlick's (1 − V·H)^5 there.
-VKPT_FN vec3 evaluateOpaqueDielectric(ShadingMaterial m, vec3 wo, vec3 wi, float ggx,
+// ggx is D G2 / (4 μo μi) at the half vector, cosVH its V·H and fresnelWeight Schlick's
+// (1 − V·H)^5 there.
+VKPT_FN vec3 evaluateOpaqueDielectric(ShadingMaterial m, vec3 wo, vec3 wi, float ggx, float cosVH,
                                       float fresnelWeight) {
-    vec3 f0 = dielectricF0(m);
-    vec3 fresnel = f0 + (vec3(1.0f) - f0) * fresnelWeight;
-    return m.specular * ggx * fresnel +
-           m.baseColor * VKPT_INV_PI * diffuseTransmittance(m, wo.z, wi.z);
+    vec3 fresnel = baseFresnel(m, dielectricF0(m), cosVH, fresnelWeight);
+    return m.specular * ggx * fresnel + m.baseColor * VKPT_INV_PI * diffuseTransmittance(m, wo, wi);
 }
 
 // ---------------------------------------------------------------------------------------------
 // The metal: the GGX lobe with Schlick's Fresnel of F0 = baseColor.
 
-VKPT_FN vec3 evaluateMetal(ShadingMaterial m, float ggx, float fresnelWeight) {
-    return ggx * (m.baseColor + (vec3(1.0f) - m.baseColor) * fresnelWeight);
+VKPT_FN vec3 evaluateMetal(ShadingMaterial m, float ggx, float cosVH, float fresnelWeight) {
+    return ggx * baseFresnel(m, m.baseColor, cosVH, fresnelWeight);
 }
 
-VKPT_FN vec3 metalAlbedo(ShadingMaterial m, float cosTheta) {
-    return m.baseColor * ggxAlbedo(cosTheta, m.alpha) +
-           (vec3(1.0f) - m.baseColor) * ggxFresnelAlbedo(cosTheta, m.alpha);
+VKPT_FN vec3 metalAlbedo(ShadingMaterial m, vec3 w) {
+    float cosTheta = w.z;
+    float alpha = baseAlbedoAlpha(m, w);
+    vec3 albedo = m.baseColor * ggxAlbedo(cosTheta, alpha) +
+                  (vec3(1.0f) - m.baseColor) * ggxFresnelAlbedo(cosTheta, alpha);
+    if (hasIridescence(m)) albedo = mix(albedo, iridescentAlbedo(m, m.baseColor, w), m.iridescence);
+    return albedo;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -287,10 +459,11 @@ VKPT_FN float layersTransmittance(ShadingMaterial m, vec3 wo) {
 VKPT_FN vec3 evaluateBase(ShadingMaterial m, vec3 wo, vec3 wi, vec3 glass) {
     vec3 h = normalize(wo + wi);
     float fresnelWeight = halfVectorFresnelWeight(wo, wi, h);
-    float ggx = ggxReflection(wo, wi, h, m.alpha);
-    vec3 dielectric = evaluateOpaqueDielectric(m, wo, wi, ggx, fresnelWeight);
+    float cosVH = 0.5f * (dot(wo, h) + dot(wi, h)); // as halfVectorFresnelWeight takes it
+    float ggx = baseGgxReflection(m, wo, wi, h);
+    vec3 dielectric = evaluateOpaqueDielectric(m, wo, wi, ggx, cosVH, fresnelWeight);
     if (m.transmission > 0.0f) dielectric = mix(dielectric, glass, m.transmission);
-    vec3 metal = evaluateMetal(m, ggx, fresnelWeight);
+    vec3 metal = evaluateMetal(m, ggx, cosVH, fresnelWeight);
     return mix(dielectric, metal, m.metallic);
 }
 
@@ -349,9 +522,9 @@ VKPT_FN LobeProbabilities lobeProbabilities(ShadingMaterial m, vec3 wo) {
         below *= 1.0f - sheenAlbedoBound(m, cosThetaO);
     }
     float opaque = 1.0f - m.transmission; // the opaque dielectric's share of the non-metal part
-    vec3 dielectricSpecular = dielectricSpecularAlbedo(m, cosThetaO);
+    vec3 dielectricSpecular = dielectricSpecularAlbedo(m, wo);
     float specularWeight = below * mix(opaque * luminance(dielectricSpecular),
-                                       luminance(metalAlbedo(m, cosThetaO)), m.metallic);
+                                       luminance(metalAlbedo(m, wo)), m.metallic);
     if (!(m.metallic > 0.0f || opaque * m.specular * maxComponent(dielectricF0(m)) > 0.0f))
         specularWeight = 0.0f;
     float diffuseWeight = below * (1.0f - m.metallic) * opaque *
@@ -406,7 +579,7 @@ VKPT_FN float mixtureBsdfPdf(ShadingMaterial m, vec3 wo, vec3 wi, LobeProbabilit
     if (!(wi.z > 0.0f)) return pdf;
     vec3 h = normalize(wo + wi);
     pdf += p.diffuse * wi.z * VKPT_INV_PI;
-    if (p.specular > 0.0f) pdf += p.specular * ggxReflectionPdf(wo, h, m.alpha);
+    if (p.specular > 0.0f) pdf += p.specular * baseGgxReflectionPdf(m, wo, h);
     if (p.clearcoat > 0.0f) pdf += p.clearcoat * clearcoatPdf(m, wo, wi);
     if (p.sheen > 0.0f) pdf += p.sheen * uniformHemispherePdf();
     return pdf;
@@ -478,7 +651,7 @@ VKPT_FN BsdfSample sampleBsdf(ShadingMaterial m, vec3 wo, vec2 uDirection, float
     uLobe -= p.glass;
     vec3 wi;
     if (uLobe < p.specular) {
-        wi = sampleGgxReflection(wo, m.alpha, uDirection);
+        wi = sampleBaseGgxReflection(m, wo, uDirection);
     } else if (uLobe < p.specular + p.clearcoat) {
         // Below the coat's own horizon, or the base's (tested after the branches), the sample
         // is lost, as clearcoatPdf counts it.

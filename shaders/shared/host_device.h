@@ -37,6 +37,7 @@ using glm::min;
 using glm::mix;
 using glm::normalize;
 using glm::pow;
+using glm::smoothstep;
 using glm::uintBitsToFloat;
 using glm::uvec2;
 using glm::uvec3;
@@ -255,6 +256,27 @@ struct Material {
                                            // the base's shading normal, as the extension says)
     TextureSlot sheenColorTexture;         // sRGB; colour in .rgb
     TextureSlot sheenRoughnessTexture;     // linear; roughness in .a
+    // KHR_materials_specular's textures, 64 bytes from offset 464 (texels 29–32), read only in
+    // scenes that have them (FEATURE_SPECULAR_TEXTURES): they multiply specular and
+    // specularColor.
+    TextureSlot specularTexture;      // linear; strength in .a
+    TextureSlot specularColorTexture; // sRGB; colour in .rgb
+    // KHR_materials_anisotropy, 48 bytes from offset 528 (texels 33–35), read only in scenes
+    // that have it (FEATURE_ANISOTROPY): the strength, and the rotation of the direction from
+    // the tangent as its cosine and sine (computed on the host).
+    float anisotropyStrength;      // anisotropyStrength; 0: isotropic
+    float anisotropyRotationCos;   // cos(anisotropyRotation)
+    float anisotropyRotationSin;   // sin(anisotropyRotation)
+    uint anisotropyUnused;         // keeps the texture slot on a 16-byte texel
+    TextureSlot anisotropyTexture; // linear; direction in .rg (as 2x − 1), strength in .b
+    // KHR_materials_iridescence, 80 bytes from offset 576 (texels 36–40), read only in scenes
+    // that have it (FEATURE_IRIDESCENCE).
+    float iridescence;                       // iridescenceFactor; 0: no film
+    float iridescenceIor;                    // iridescenceIor
+    float iridescenceThicknessMinimum;       // nm, at thickness texture G = 0
+    float iridescenceThicknessMaximum;       // nm, at G = 1, and without the texture
+    TextureSlot iridescenceTexture;          // linear; factor in .r
+    TextureSlot iridescenceThicknessTexture; // linear; thickness in .g
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -356,7 +378,10 @@ struct EnvironmentParams {
 #define FEATURE_SHEEN 12
 #define FEATURE_INSTANCES 13  // a two-level BVH: meshes placed by instances
 #define FEATURE_LIGHT_TREE 14 // emitters chosen by the light BVH (lightTree), not the power CDF
-#define FEATURE_COUNT 15
+#define FEATURE_SPECULAR_TEXTURES 15 // KHR_materials_specular textures on a GGX material
+#define FEATURE_ANISOTROPY 16        // KHR_materials_anisotropy on a GGX material
+#define FEATURE_IRIDESCENCE 17       // KHR_materials_iridescence on a GGX material
+#define FEATURE_COUNT 18
 
 // ---------------------------------------------------------------------------------------------
 // The camera (shared/camera.h). Pixel (0, 0) is the top-left; a sample at (x + u, y + v) has
@@ -403,8 +428,15 @@ static_assert(offsetof(Material, normalTexture) == 160 && offsetof(Material, nor
 static_assert(offsetof(Material, transmission) == 208 && offsetof(Material, thickness) == 220 &&
               offsetof(Material, attenuationCoefficient) == 224 &&
               offsetof(Material, transmissionTexture) == 240);
-static_assert(sizeof(Material) == 464 && offsetof(Material, sheenColor) == 272 &&
-              offsetof(Material, sheenRoughness) == 284 && offsetof(Material, clearcoat) == 288 &&
+static_assert(offsetof(Material, specularTexture) == 464 &&
+              offsetof(Material, specularColorTexture) == 496);
+static_assert(offsetof(Material, anisotropyStrength) == 528 &&
+              offsetof(Material, anisotropyTexture) == 544);
+static_assert(sizeof(Material) == 656 && offsetof(Material, iridescence) == 576 &&
+              offsetof(Material, iridescenceTexture) == 592 &&
+              offsetof(Material, iridescenceThicknessTexture) == 624);
+static_assert(offsetof(Material, sheenColor) == 272 && offsetof(Material, sheenRoughness) == 284 &&
+              offsetof(Material, clearcoat) == 288 &&
               offsetof(Material, clearcoatRoughness) == 292 &&
               offsetof(Material, clearcoatNormalScale) == 296 &&
               offsetof(Material, clearcoatTexture) == 304 &&

@@ -21,7 +21,9 @@ VKPT_FN bool hasTexture(TextureSlot slot VKPT_SCENE_PARAM) {
     return sceneHasTextures(VKPT_SCENE_ARG_ONLY) && slot.texture != NO_TEXTURE;
 }
 
-// The layers' textures count only in scenes with the layer (FEATURE_CLEARCOAT, FEATURE_SHEEN).
+// The layers' textures count only in scenes with the layer (FEATURE_CLEARCOAT, FEATURE_SHEEN),
+// the specular ones only in scenes with them (FEATURE_SPECULAR_TEXTURES), the anisotropy texture
+// only with anisotropy (FEATURE_ANISOTROPY).
 VKPT_FN bool hasLayerTexture(Material m VKPT_SCENE_PARAM) {
     bool clearcoat = sceneHasClearcoat(VKPT_SCENE_ARG_ONLY) &&
                      (hasTexture(m.clearcoatTexture VKPT_SCENE_ARG) ||
@@ -29,7 +31,15 @@ VKPT_FN bool hasLayerTexture(Material m VKPT_SCENE_PARAM) {
     bool sheen =
         sceneHasSheen(VKPT_SCENE_ARG_ONLY) && (hasTexture(m.sheenColorTexture VKPT_SCENE_ARG) ||
                                                hasTexture(m.sheenRoughnessTexture VKPT_SCENE_ARG));
-    return clearcoat || sheen;
+    bool specular = sceneHasSpecularTextures(VKPT_SCENE_ARG_ONLY) &&
+                    (hasTexture(m.specularTexture VKPT_SCENE_ARG) ||
+                     hasTexture(m.specularColorTexture VKPT_SCENE_ARG));
+    bool anisotropy =
+        sceneHasAnisotropy(VKPT_SCENE_ARG_ONLY) && hasTexture(m.anisotropyTexture VKPT_SCENE_ARG);
+    bool iridescence = sceneHasIridescence(VKPT_SCENE_ARG_ONLY) &&
+                       (hasTexture(m.iridescenceTexture VKPT_SCENE_ARG) ||
+                        hasTexture(m.iridescenceThicknessTexture VKPT_SCENE_ARG));
+    return clearcoat || sheen || specular || anisotropy || iridescence;
 }
 
 VKPT_FN bool hasAnyTexture(Material m VKPT_SCENE_PARAM) {

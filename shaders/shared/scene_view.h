@@ -21,7 +21,9 @@
 //   bool sceneHasMetallicRoughness(), sceneHasTextures(), sceneHasSpheres(),
 //        sceneHasPunctualLights(), sceneHasEnvironment(), sceneHasEmitterCdf(),
 //        sceneHasDoubleSided(), sceneHasNormalMaps(), sceneHasTransmission(),
-//        sceneHasClearcoat(), sceneHasSheen(), sceneHasInstances(), sceneHasLightTree()
+//        sceneHasClearcoat(), sceneHasSheen(), sceneHasSpecularTextures(),
+//        sceneHasAnisotropy(), sceneHasIridescence(), sceneHasInstances(),
+//        sceneHasLightTree()
 #ifndef VKPT_SCENE_VIEW_H
 #define VKPT_SCENE_VIEW_H
 
@@ -100,6 +102,15 @@ VKPT_FN bool sceneHasClearcoat(VKPT_SCENE_PARAM_ONLY) {
 }
 VKPT_FN bool sceneHasSheen(VKPT_SCENE_PARAM_ONLY) {
     return scene.features[FEATURE_SHEEN];
+}
+VKPT_FN bool sceneHasSpecularTextures(VKPT_SCENE_PARAM_ONLY) {
+    return scene.features[FEATURE_SPECULAR_TEXTURES];
+}
+VKPT_FN bool sceneHasAnisotropy(VKPT_SCENE_PARAM_ONLY) {
+    return scene.features[FEATURE_ANISOTROPY];
+}
+VKPT_FN bool sceneHasIridescence(VKPT_SCENE_PARAM_ONLY) {
+    return scene.features[FEATURE_IRIDESCENCE];
 }
 VKPT_FN bool sceneHasInstances(VKPT_SCENE_PARAM_ONLY) {
     return scene.features[FEATURE_INSTANCES];

@@ -165,6 +165,57 @@ VKPT_FN vec3 clearcoatLocalNormal(SurfacePoint s, Material m, TriangleHit hit, v
     return normalize(worldToBasis(makeBasis(s.shadingNormal), normal));
 }
 
+// KHR_materials_specular's strength (A of specularTexture) and colour (RGB of the sRGB
+// specularColorTexture), each factor times its texture, read only in scenes that have them.
+VKPT_FN void applySpecularTextures(VKPT_INOUT(ShadingMaterial) shading, Material m,
+                                   vec2 uv VKPT_SCENE_PARAM) {
+    shading.specular *= sampleSlot(m.specularTexture, uv, false VKPT_SCENE_ARG).w;
+    shading.specularColor *= vec3(sampleSlot(m.specularColorTexture, uv, true VKPT_SCENE_ARG));
+}
+
+// KHR_materials_anisotropy at the point: the direction (1, 0), or anisotropyTexture.rg·2 − 1,
+// turned counter-clockwise by anisotropyRotation in the tangent frame of the mesh's TANGENT
+// (bitangent w·cross(n, t)), the strength times anisotropyTexture.b (the extension's formulas);
+// then projected into the shading normal's plane and expressed in the frame of
+// makeBasis(shadingNormal), where bsdf.h works. A primitive without a tangent frame (a sphere)
+// or a direction along the normal stays isotropic.
+VKPT_FN ShadingMaterial withSurfaceAnisotropy(ShadingMaterial shading, SurfacePoint s, Material m,
+                                              TriangleHit hit, vec2 uv VKPT_SCENE_PARAM) {
+    vec4 tangent = surfaceTangent(s, hit VKPT_SCENE_ARG);
+    if (tangent.w == 0.0f) return shading;
+    float strength = m.anisotropyStrength;
+    vec2 d = vec2(1.0f, 0.0f);
+    if (hasTexture(m.anisotropyTexture VKPT_SCENE_ARG)) {
+        vec4 texel = sampleSlot(m.anisotropyTexture, uv, false VKPT_SCENE_ARG);
+        d = vec2(texel.x, texel.y) * 2.0f - vec2(1.0f);
+        strength *= texel.z;
+    }
+    float c = m.anisotropyRotationCos;
+    float sn = m.anisotropyRotationSin;
+    vec2 turned = vec2(c * d.x - sn * d.y, sn * d.x + c * d.y);
+    vec3 n = normalize(s.rawShadingNormal);
+    vec3 t = vec3(tangent) - dot(vec3(tangent), n) * n;
+    float handedness = tangent.w < 0.0f ? -1.0f : 1.0f;
+    vec3 direction = turned.x * t + turned.y * (handedness * cross(n, t));
+    Basis basis = makeBasis(s.shadingNormal);
+    vec2 local = vec2(dot(direction, basis.tangent), dot(direction, basis.bitangent));
+    float length2 = dot(local, local);
+    if (!(length2 > 0.0f) || !(strength > 0.0f)) return shading;
+    return withAnisotropy(shading, strength, local / sqrt(length2));
+}
+
+// KHR_materials_iridescence at the point: the factor times iridescenceTexture.r, the thickness
+// mix(minimum, maximum, iridescenceThicknessTexture.g), or the maximum without the texture.
+VKPT_FN ShadingMaterial withSurfaceIridescence(ShadingMaterial shading, Material m,
+                                               vec2 uv VKPT_SCENE_PARAM) {
+    float factor = m.iridescence * sampleSlot(m.iridescenceTexture, uv, false VKPT_SCENE_ARG).x;
+    float thickness = m.iridescenceThicknessMaximum;
+    if (hasTexture(m.iridescenceThicknessTexture VKPT_SCENE_ARG))
+        thickness = mix(m.iridescenceThicknessMinimum, m.iridescenceThicknessMaximum,
+                        sampleSlot(m.iridescenceThicknessTexture, uv, false VKPT_SCENE_ARG).y);
+    return withIridescence(shading, factor, m.iridescenceIor, thickness);
+}
+
 // The material at the point: factors times textures (each read only when present). Needs
 // s.outgoing for the normal texture's bend.
 VKPT_FN void fillMaterial(VKPT_INOUT(SurfacePoint) s, Triangle primitive,
@@ -194,9 +245,16 @@ VKPT_FN void fillMaterial(VKPT_INOUT(SurfacePoint) s, Triangle primitive,
                              (m.flags & MATERIAL_METALLIC_ROUGHNESS) != 0u;
     s.shading = makeShadingMaterial(vec3(baseColor), metallic, roughness, m.specular,
                                     m.specularColor, metallicRoughness);
+    if (sceneHasSpecularTextures(VKPT_SCENE_ARG_ONLY) && metallicRoughness)
+        applySpecularTextures(s.shading, m, uv VKPT_SCENE_ARG);
     if (sceneHasTransmission(VKPT_SCENE_ARG_ONLY))
         applyDielectricExtensions(s.shading, m, s.frontFace, uv VKPT_SCENE_ARG);
     if (metallicRoughness) s.shading = withMaterialLayers(s.shading, m, uv VKPT_SCENE_ARG);
+    if (sceneHasIridescence(VKPT_SCENE_ARG_ONLY) && metallicRoughness && m.iridescence > 0.0f)
+        s.shading = withSurfaceIridescence(s.shading, m, uv VKPT_SCENE_ARG);
+    if (sceneHasAnisotropy(VKPT_SCENE_ARG_ONLY) && metallicRoughness &&
+        m.anisotropyStrength > 0.0f && length(s.rawShadingNormal) > 0.0f)
+        s.shading = withSurfaceAnisotropy(s.shading, s, m, hit, uv VKPT_SCENE_ARG);
     if (normalMapped && hasClearcoat(s.shading) &&
         (hasTexture(m.normalTexture VKPT_SCENE_ARG) ||
          hasTexture(m.clearcoatNormalTexture VKPT_SCENE_ARG))) {

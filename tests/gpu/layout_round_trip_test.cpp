@@ -109,6 +109,19 @@ SharedStructs makeStructs() {
         m.clearcoatNormalTexture = makeTextureSlot(x);
         m.sheenColorTexture = makeTextureSlot(x);
         m.sheenRoughnessTexture = makeTextureSlot(x);
+        m.specularTexture = makeTextureSlot(x);
+        m.specularColorTexture = makeTextureSlot(x);
+        m.anisotropyStrength = x.f();
+        m.anisotropyRotationCos = x.f();
+        m.anisotropyRotationSin = x.f();
+        m.anisotropyUnused = x.u();
+        m.anisotropyTexture = makeTextureSlot(x);
+        m.iridescence = x.f();
+        m.iridescenceIor = x.f();
+        m.iridescenceThicknessMinimum = x.f();
+        m.iridescenceThicknessMaximum = x.f();
+        m.iridescenceTexture = makeTextureSlot(x);
+        m.iridescenceThicknessTexture = makeTextureSlot(x);
         s.materials.push_back(m);
         s.textures.push_back({x.u(), x.u(), x.u(), x.u()});
         s.emitters.push_back(

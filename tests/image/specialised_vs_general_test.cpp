@@ -209,6 +209,35 @@ TEST_F(SceneUpload, LambertianScenesTakeTheDiffuseBuildAndRenderTheSameBits) {
     EXPECT_EQ(lean.stats.rays.total(), whole.stats.rays.total());
 }
 
+// GGX scenes without the newer material extensions take the core build of shade_hits
+// (shaders/CMakeLists.txt: those features pruned), smaller than the full one, and render the
+// full build's image bit for bit; a scene with anisotropy takes the full build. The GGX
+// feature scene, 16 x 16 at 4 spp: every pixel compared.
+TEST_F(SceneUpload, GgxScenesWithoutTheNewerExtensionsTakeTheCoreBuild) {
+    LoadedTestScene ggx = loadFeatureTestScene("test/features/ggx.gltf");
+    const SceneFeatures& features = ggx.prepared.features;
+    ASSERT_TRUE(features.metallicRoughnessMaterials);
+    const auto core = kernelSpirv(WavefrontKernel::ShadeHits, features);
+    const auto full = kernelSpirv(WavefrontKernel::ShadeHits, features, KernelBuilds::Full);
+    EXPECT_LT(core.size(), full.size());
+    SceneFeatures anisotropic = features;
+    anisotropic.anisotropy = true;
+    EXPECT_EQ(kernelSpirv(WavefrontKernel::ShadeHits, anisotropic).size(), full.size());
+
+    RenderSettings settings = testSettings(16, 4);
+    settings.seed = 10;
+    WavefrontOptions fullBuild;
+    fullBuild.kernelBuilds = KernelBuilds::Full;
+    const WavefrontResult lean = render(context(), ggx, settings);
+    const WavefrontResult whole = render(context(), ggx, settings, fullBuild);
+    std::printf("pipelines: %.3f s with the core shade_hits (%zu words), %.3f s with the full one "
+                "(%zu words)\n",
+                lean.pipelineCreationSeconds, core.size(), whole.pipelineCreationSeconds,
+                full.size());
+    EXPECT_EQ(lean.output.image.pixels, whole.output.image.pixels);
+    EXPECT_EQ(lean.stats.rays.total(), whole.stats.rays.total());
+}
+
 // Kernels built without a feature the scene uses would drop it silently: refused instead.
 TEST_F(SceneUpload, KernelsWithoutAFeatureTheSceneUsesAreRefused) {
     LoadedTestScene spheres = prepareTestScene(sphereScene());

@@ -191,5 +191,20 @@ TEST(AlphaMask, MaskedScreenLetsRaysThroughBelowTheCutoff) {
     }
 }
 
+// KHR_materials_unlit (scenes/loader/unlit.gltf): the camera sees only the orange quad, whose
+// radiance is its base colour exactly at every depth, since it reflects nothing of what it
+// receives (the blue quad 5 behind it lights its back face, which an unlit surface does not
+// reflect). 5 × 5 pixels, 2 samples: every sample is the same exact value.
+TEST(Unlit, SurfaceShowsItsBaseColourExactly) {
+    test::LoadedTestScene scene = test::loadTestScene("loader/unlit.gltf");
+    for (std::uint32_t depth : {0u, 16u}) {
+        RenderSettings settings = test::testSettings(5, 2);
+        settings.maxDepth = depth;
+        const RenderOutput output = test::renderTestScene(scene, settings);
+        for (const glm::vec3& pixel : output.image.pixels)
+            ASSERT_EQ(pixel, glm::vec3(1.0f, 0.25f, 0.0f)) << "max depth " << depth;
+    }
+}
+
 } // namespace
 } // namespace vkpt

@@ -279,7 +279,8 @@ const InvalidCase kInvalidCases[] = {
      "mesh 0, primitive 0: POSITION: accessor 0: sparse index 5 >= count 3"},
     {"NoTriangles", "no_triangles.gltf", "the scene has no triangles"},
     {"UnsupportedRequiredExtension", "required_extension.gltf",
-     "required extensions KHR_texture_basisu, EXT_lights_image_based are not supported"},
+     "required extensions KHR_texture_basisu, EXT_lights_image_based are not supported (convert "
+     "the KTX2 textures to PNG, JPEG or WebP)"},
     {"InstancingAttributeCountsDiffer", "instancing_count_mismatch.gltf",
      "node 0: EXT_mesh_gpu_instancing: SCALE has 2 elements, TRANSLATION 3"},
     {"InstancingWithoutAttributes", "instancing_without_attributes.gltf",
@@ -299,6 +300,9 @@ const InvalidCase kInvalidCases[] = {
      "mesh 0, primitive 0: NORMAL has 2 elements but POSITION has 3"},
     {"MissingAccessor", "missing_accessor.gltf",
      "mesh 0, primitive 0: POSITION: accessor 7 does not exist (the file has 3 accessors)"},
+    {"VariantOutOfRange", "variant_out_of_range.gltf",
+     "mesh 0, primitive 0: KHR_materials_variants: mapping 0: variants[1] is not the index of "
+     "one of the file's 1 variants"},
     {"UnknownLightType", "light_type.gltf",
      "light 0: type 'area' is not point, spot or directional"},
     {"TransmissionOutOfRange", "transmission_out_of_range.gltf",
@@ -314,7 +318,7 @@ const InvalidCase kInvalidCases[] = {
      "node 1: sphere under non-uniform scale (1, 2, 1)"},
     {"TextureWithoutSource", "texture_without_source.gltf",
      "material 0: baseColorTexture: texture 0 has only a KHR_texture_basisu image, which vkpt "
-     "does not support (only PNG and JPEG)"},
+     "does not decode; convert it to PNG, JPEG or WebP"},
     {"UndecodableImage", "image_undecodable.gltf",
      "image 0: cannot decode the PNG data (bad zlib header)"},
     {"ImageNotPngOrJpeg", "image_not_png.gltf",

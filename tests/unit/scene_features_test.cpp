@@ -43,6 +43,7 @@ std::string kinds(const SceneFeatures& f) {
         {f.sheenMaterials, "sheen"},
         {f.clearcoatTextures, "clearcoatTex"},
         {f.sheenTextures, "sheenTex"},
+        {f.specularTextures, "specularTex"},
         {f.alphaMask, "mask"},
         {f.doubleSided, "doubleSided"},
         {f.transmission, "transmission"},
@@ -78,7 +79,8 @@ TEST(SceneFeatures, OfTheLoaderScenes) {
     // KHR_materials_transmission (with a texture), _ior and _volume.
     EXPECT_EQ(kinds(featuresOf("glass.gltf")), "mr transmissionTex transmission triangles | 0");
     EXPECT_EQ(kinds(featuresOf("lights.gltf")), "mr triangles point spot directional | 3");
-    EXPECT_EQ(kinds(featuresOf("specular.gltf")), "diffuse mr triangles | 0");
+    // KHR_materials_specular textures count on the GGX material only.
+    EXPECT_EQ(kinds(featuresOf("specular.gltf")), "diffuse mr specularTex triangles | 0");
 }
 
 // --- Scenes built here ---------------------------------------------------------------------
@@ -202,6 +204,12 @@ TEST(SceneFeatures, MapToTheKernelSpecialisationConstants) {
     f = {};
     f.transmissionTextures = true;
     EXPECT_EQ(f.kernelFeatures(), only(FEATURE_TEXTURES));
+    // Specular textures are textures (their coordinates) and a switch of their own.
+    f = {};
+    f.specularTextures = true;
+    std::array<bool, FEATURE_COUNT> specular = only(FEATURE_SPECULAR_TEXTURES);
+    specular[FEATURE_TEXTURES] = true;
+    EXPECT_EQ(f.kernelFeatures(), specular);
     // Kinds that need no kernel switch of their own.
     f = {};
     f.diffuseMaterials = f.triangles = f.emissiveTriangles = f.emissiveSpheres = true;
@@ -216,7 +224,7 @@ TEST(SceneFeatures, GeneralTurnsEverythingOnAndKeepsTheEmitterCount) {
     const SceneFeatures general = generalFeatures(used);
     EXPECT_EQ(kinds(general),
               "diffuse mr baseColorTex mrTex emissiveTex normalTex transmissionTex clearcoat sheen "
-              "clearcoatTex sheenTex mask doubleSided transmission triangles spheres "
+              "clearcoatTex sheenTex specularTex mask doubleSided transmission triangles spheres "
               "emissiveTriangles emissiveSpheres point spot directional environment "
               "environmentMap | 1");
     EXPECT_TRUE(general.general);

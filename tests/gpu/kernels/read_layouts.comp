@@ -166,6 +166,19 @@ void main() {
     putTextureSlot(materials[i].clearcoatNormalTexture);
     putTextureSlot(materials[i].sheenColorTexture);
     putTextureSlot(materials[i].sheenRoughnessTexture);
+    putTextureSlot(materials[i].specularTexture);
+    putTextureSlot(materials[i].specularColorTexture);
+    putFloat(materials[i].anisotropyStrength);
+    putFloat(materials[i].anisotropyRotationCos);
+    putFloat(materials[i].anisotropyRotationSin);
+    putUint(materials[i].anisotropyUnused);
+    putTextureSlot(materials[i].anisotropyTexture);
+    putFloat(materials[i].iridescence);
+    putFloat(materials[i].iridescenceIor);
+    putFloat(materials[i].iridescenceThicknessMinimum);
+    putFloat(materials[i].iridescenceThicknessMaximum);
+    putTextureSlot(materials[i].iridescenceTexture);
+    putTextureSlot(materials[i].iridescenceThicknessTexture);
 
     cursor = LAYOUT_OFFSET_TEXTURES + i * LAYOUT_WORDS_TEXTURE_INFO;
     putUint(textures[i].texelOffset);

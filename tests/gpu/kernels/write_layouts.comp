@@ -175,6 +175,19 @@ void main() {
     materials[i].clearcoatNormalTexture = takeTextureSlot();
     materials[i].sheenColorTexture = takeTextureSlot();
     materials[i].sheenRoughnessTexture = takeTextureSlot();
+    materials[i].specularTexture = takeTextureSlot();
+    materials[i].specularColorTexture = takeTextureSlot();
+    materials[i].anisotropyStrength = takeFloat();
+    materials[i].anisotropyRotationCos = takeFloat();
+    materials[i].anisotropyRotationSin = takeFloat();
+    materials[i].anisotropyUnused = takeUint();
+    materials[i].anisotropyTexture = takeTextureSlot();
+    materials[i].iridescence = takeFloat();
+    materials[i].iridescenceIor = takeFloat();
+    materials[i].iridescenceThicknessMinimum = takeFloat();
+    materials[i].iridescenceThicknessMaximum = takeFloat();
+    materials[i].iridescenceTexture = takeTextureSlot();
+    materials[i].iridescenceThicknessTexture = takeTextureSlot();
 
     cursor = LAYOUT_OFFSET_TEXTURES + i * LAYOUT_WORDS_TEXTURE_INFO;
     textures[i].texelOffset = takeUint();
