@@ -72,6 +72,11 @@ struct DenoiseParams {
 #define DENOISE_PRIOR_SAMPLES 16.0f
 // The reach of the window over which a candidate's error estimate is averaged (denoise_filter.h).
 #define DENOISE_ERROR_RADIUS 2
+// The raw candidate's estimate counts 1 + DENOISE_RAW_PRIOR / n times (denoise_filter.h): its
+// estimate, (A − B)² / 4 from two half means, is the noisiest of all, and a pixel that a low draw
+// leaves raw keeps all its noise. The factor goes to 1 as the samples grow, so the choice stays
+// consistent; 16, 64 and 256 were measured (docs/trade/denoise.md), 64 kept.
+#define DENOISE_RAW_PRIOR 64.0f
 
 // Dividing by a dark albedo channel would lift its noise beyond what the filter can take; a
 // pixel without a surface (albedo 0: sky, emitters seen directly) is filtered as it is.

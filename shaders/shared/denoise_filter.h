@@ -114,6 +114,10 @@ VKPT_FN DenoiseValue filterPixel(DENOISE_SOURCE_PARAM uint x, uint y, DenoisePar
     float error = neighbourhoodError(x, y, params);
 #endif
     DenoiseValue result = centreValue;
+    // The raw candidate's estimate (first pass) weighed up by 1 + DENOISE_RAW_PRIOR / n
+    // (denoise.h).
+    if (params.step == 1u && error != DENOISE_NO_ESTIMATE)
+        error *= 1.0f + DENOISE_RAW_PRIOR / max(float(centre.sampleCount), 1.0f);
     if (error < centreValue.chosen.w)
         result.chosen = vec4(centreValue.full.x, centreValue.full.y, centreValue.full.z, error);
     if (params.step == 0u) return result;
