@@ -40,12 +40,15 @@ struct DenoisePixel {
 
 // One pixel of an iterate: the filtered whole estimate and the two filtered halves, each the
 // demodulated radiance (rgb) and the variance of its mean luminance (w); and the candidate chosen
-// so far (rgb, demodulated) with its estimated error (w; DENOISE_NO_ESTIMATE before the first).
+// so far (rgb, demodulated) with its estimated error (w; DENOISE_NO_ESTIMATE before the first);
+// and this pixel's share of the iterate's error estimate (estimate.x, candidateError; estimate.y
+// 1 where the pixel has two halves, else 0), which the next pass averages over a window.
 struct DenoiseValue {
     vec4 full;
     vec4 halfA;
     vec4 halfB;
     vec4 chosen;
+    vec4 estimate;
 };
 
 // The filter's settings (push constants of both kernels).
@@ -103,25 +106,6 @@ VKPT_FN vec4 demodulatedEstimate(vec3 radiance, float variance, vec3 albedo) {
     return vec4(demodulated, variance * scale * scale);
 }
 
-// The first iterate: the whole estimate and the halves demodulated, nothing chosen yet. A half's
-// mean has the variance of the whole's times n / n_half (one variance per sample, fewer samples):
-// the render keeps one variance for the pixel, so this is the one statistic the two halves'
-// filters share (their means, and so their gates' differences, are their own).
-VKPT_FN DenoiseValue demodulatedPixel(DenoisePixel pixel) {
-    vec3 albedo = demodulationAlbedo(pixel.albedo);
-    DenoiseValue value;
-    value.full = demodulatedEstimate(pixel.radiance, pixel.luminanceVariance, albedo);
-    float samples = float(pixel.sampleCount);
-    float varianceA =
-        hasHalves(pixel) ? pixel.luminanceVariance * samples / pixel.halfCountA : 0.0f;
-    float varianceB =
-        hasHalves(pixel) ? pixel.luminanceVariance * samples / pixel.halfCountB : 0.0f;
-    value.halfA = demodulatedEstimate(pixel.halfA, varianceA, albedo);
-    value.halfB = demodulatedEstimate(pixel.halfB, varianceB, albedo);
-    value.chosen = vec4(value.full.x, value.full.y, value.full.z, DENOISE_NO_ESTIMATE);
-    return value;
-}
-
 // The chosen candidate with the albedo multiplied back.
 VKPT_FN vec3 modulatedRadiance(DenoisePixel pixel, DenoiseValue value) {
     return vec3(value.chosen.x, value.chosen.y, value.chosen.z) * demodulationAlbedo(pixel.albedo);
@@ -175,6 +159,36 @@ VKPT_FN float gateWeight(vec3 centre, vec3 neighbour, float variance, float gate
     return falloff * falloff;
 }
 
+// The iterate `value`'s candidateError at `pixel` (DenoiseValue.estimate).
+VKPT_FN vec4 pixelEstimate(DenoisePixel pixel, DenoiseValue value) {
+    if (!hasHalves(pixel)) return vec4(0.0f);
+    vec3 albedo = demodulationAlbedo(pixel.albedo);
+    float error = candidateError(vec3(value.halfA.x, value.halfA.y, value.halfA.z),
+                                 vec3(value.halfB.x, value.halfB.y, value.halfB.z),
+                                 pixel.halfA / albedo, pixel.halfB / albedo, albedo);
+    return vec4(error, 1.0f, 0.0f, 0.0f);
+}
+
+// The first iterate: the whole estimate and the halves demodulated, nothing chosen yet. A half's
+// mean has the variance of the whole's times n / n_half (one variance per sample, fewer samples):
+// the render keeps one variance for the pixel, so this is the one statistic the two halves'
+// filters share (their means, and so their gates' differences, are their own).
+VKPT_FN DenoiseValue demodulatedPixel(DenoisePixel pixel) {
+    vec3 albedo = demodulationAlbedo(pixel.albedo);
+    DenoiseValue value;
+    value.full = demodulatedEstimate(pixel.radiance, pixel.luminanceVariance, albedo);
+    float samples = float(pixel.sampleCount);
+    float varianceA =
+        hasHalves(pixel) ? pixel.luminanceVariance * samples / pixel.halfCountA : 0.0f;
+    float varianceB =
+        hasHalves(pixel) ? pixel.luminanceVariance * samples / pixel.halfCountB : 0.0f;
+    value.halfA = demodulatedEstimate(pixel.halfA, varianceA, albedo);
+    value.halfB = demodulatedEstimate(pixel.halfB, varianceB, albedo);
+    value.chosen = vec4(value.full.x, value.full.y, value.full.z, DENOISE_NO_ESTIMATE);
+    value.estimate = pixelEstimate(pixel, value);
+    return value;
+}
+
 VKPT_FN bool hasSurface(DenoisePixel pixel) {
     return !isinf(pixel.depth);
 }
@@ -203,7 +217,7 @@ VKPT_FN float atrousTap(int offset) {
 
 #ifdef __cplusplus
 static_assert(sizeof(DenoisePixel) == 80 && offsetof(DenoisePixel, halfB) == 64);
-static_assert(sizeof(DenoiseValue) == 64);
+static_assert(sizeof(DenoiseValue) == 80);
 static_assert(sizeof(DenoiseParams) == 32);
 } // namespace vkpt::gpu
 #endif

@@ -58,13 +58,13 @@ VKPT_FN vec3 centreTestVariances(DENOISE_SOURCE_PARAM uint x, uint y, DenoisePar
                         (samples + DENOISE_PRIOR_SAMPLES));
 }
 
-// The error estimate of the current iterate as the pixel's output (denoise.h, candidateError),
-// averaged over its 5×5 neighbourhood with the tent weights (3 − |dx|)(3 − |dy|) (as many
-// independent estimates as 18 pixels): one pixel's estimate is the square of a noisy difference,
-// too noisy to choose by alone (and may come out negative), and a pixel left raw by a chance
-// low estimate keeps all its noise. (Wider windows measured worse: they mix in the errors of
-// other surfaces and edges.) DENOISE_NO_ESTIMATE where no pixel of the neighbourhood has two
-// halves: the candidate is not taken.
+// The error estimate of the current iterate as the pixel's output: the pixels' shares
+// (DenoiseValue.estimate, computed as each pass wrote them) averaged over its 5×5 neighbourhood
+// with the tent weights (3 − |dx|)(3 − |dy|) (as many independent estimates as 18 pixels): one
+// pixel's estimate is the square of a noisy difference, too noisy to choose by alone (and may come
+// out negative), and a pixel left raw by a chance low estimate keeps all its noise. (Wider windows
+// measured worse: they mix in the errors of other surfaces and edges.) DENOISE_NO_ESTIMATE where no
+// pixel of the neighbourhood has two halves: the candidate is not taken.
 VKPT_FN float neighbourhoodError(DENOISE_SOURCE_PARAM uint x, uint y, DenoiseParams params) {
     float total = 0.0f;
     float weights = 0.0f;
@@ -73,16 +73,10 @@ VKPT_FN float neighbourhoodError(DENOISE_SOURCE_PARAM uint x, uint y, DenoisePar
             int qx = int(x) + dx;
             int qy = int(y) + dy;
             if (qx < 0 || qy < 0 || qx >= int(params.width) || qy >= int(params.height)) continue;
-            uint index = uint(qy) * params.width + uint(qx);
-            DenoisePixel pixel = DENOISE_PIXEL(index);
-            if (!hasHalves(pixel)) continue;
-            DenoiseValue value = DENOISE_VALUE(index);
-            vec3 albedo = demodulationAlbedo(pixel.albedo);
-            float weight =
-                float((DENOISE_ERROR_RADIUS + 1 - abs(dx)) * (DENOISE_ERROR_RADIUS + 1 - abs(dy)));
-            total += weight * candidateError(vec3(value.halfA.x, value.halfA.y, value.halfA.z),
-                                             vec3(value.halfB.x, value.halfB.y, value.halfB.z),
-                                             pixel.halfA / albedo, pixel.halfB / albedo, albedo);
+            vec4 estimate = DENOISE_VALUE(uint(qy) * params.width + uint(qx)).estimate;
+            float weight = estimate.y * float((DENOISE_ERROR_RADIUS + 1 - abs(dx)) *
+                                              (DENOISE_ERROR_RADIUS + 1 - abs(dy)));
+            total += weight * estimate.x;
             weights += weight;
         }
     }
@@ -165,6 +159,7 @@ VKPT_FN DenoiseValue filterPixel(DENOISE_SOURCE_PARAM uint x, uint y, DenoisePar
     result.full = vec4(centreFull + differenceFull / weightSums.x, variances.x);
     result.halfA = vec4(centreA + differenceA / weightSums.y, variances.y);
     result.halfB = vec4(centreB + differenceB / weightSums.z, variances.z);
+    result.estimate = pixelEstimate(centre, result);
     return result;
 }
 
