@@ -95,8 +95,9 @@ PeriodicWrite periodicWrites(const RenderSettings& settings, RenderPart& part, D
         checkpoint = {part.checkpointSeconds(), part.checkpointWriter()};
     PeriodicWrite preview;
     if (settings.previewSeconds > 0.0)
-        preview = {settings.previewSeconds,
-                   previewWriter(settings, part.plan().crop, part.checkpointWriter(), denoiser)};
+        preview = {
+            settings.previewSeconds,
+            previewWriter(settings, part.plan().crop, part.checkpointWriter(denoiser), denoiser)};
     return combinePeriodicWrites(std::move(checkpoint), std::move(preview));
 }
 

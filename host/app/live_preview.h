@@ -35,7 +35,7 @@ struct PeriodicWrite {
 // The preview of a render of `width` × `height` whose records cover `crop`: the image so far
 // (0 outside the crop) — denoised by `denoiser` when one is given (--denoise) — or for an .exr
 // output the state written by `stateWriter` (the .exr is the image, its layers and the state in
-// one file).
+// one file; RenderPart::checkpointWriter(denoiser) adds the denoised image there).
 RecordsWriter previewWriter(const RenderSettings& settings, const PixelRect& crop,
                             RecordsWriter stateWriter, Denoiser* denoiser = nullptr);
 

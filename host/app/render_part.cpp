@@ -113,10 +113,13 @@ void RenderPart::writeState(const RenderState& state, const std::string& path, c
 }
 
 std::function<void(const std::vector<PixelRecord>&, const std::vector<FeatureRecord>&)>
-RenderPart::checkpointWriter() {
-    return [this](const std::vector<PixelRecord>& records,
-                  const std::vector<FeatureRecord>& features) {
-        writeState(stateOf(records, features), statePathFor(settings_.outputPath), "checkpoint");
+RenderPart::checkpointWriter(Denoiser* denoiser) {
+    return [this, denoiser](const std::vector<PixelRecord>& records,
+                            const std::vector<FeatureRecord>& features) {
+        RenderState state = stateOf(records, features);
+        if (denoiser && !features.empty() && features.size() == records.size())
+            state.denoised = denoiseWindow(*denoiser, plan_.crop, records, features);
+        writeState(state, statePathFor(settings_.outputPath), "checkpoint");
     };
 }
 

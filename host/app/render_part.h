@@ -10,6 +10,7 @@
 
 #include "app/farm_options.h"
 #include "app/scene_setup.h"
+#include "denoise/denoiser.h"
 #include "state/render_state.h"
 
 namespace vkpt {
@@ -35,9 +36,11 @@ public:
     // The resumed state's features (plan().crop, row-major), or null.
     const std::vector<FeatureRecord>* resumeFeatures() const;
     double checkpointSeconds() const { return farm_.checkpointSeconds; }
-    // Writes the state file (atomically) and says so on stderr.
+    // Writes the state file (atomically) and says so on stderr. With a denoiser (an .exr
+    // --preview under --denoise) the state holds the denoised image too, as the final write's
+    // does, so that the preview shows it.
     std::function<void(const std::vector<PixelRecord>&, const std::vector<FeatureRecord>&)>
-    checkpointWriter();
+    checkpointWriter(Denoiser* denoiser = nullptr);
 
     // The image (or, for .exr, the whole state), its heat map, and the state file when the
     // output is not .exr but checkpoints were asked for or the render was stopped. `features`:

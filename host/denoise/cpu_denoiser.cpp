@@ -34,11 +34,12 @@ std::vector<glm::vec3> CpuDenoiser::denoise(const std::vector<gpu::DenoisePixel>
     VKPT_ASSERT(settings.iterations > 0, "at least one iteration");
     const unsigned threads =
         std::max(1u, std::min(threads_ ? threads_ : std::thread::hardware_concurrency(), height));
-    std::vector<gpu::vec4> current(pixels.size());
-    std::vector<gpu::vec4> next(pixels.size());
+    std::vector<gpu::DenoiseValue> current(pixels.size());
+    std::vector<gpu::DenoiseValue> next(pixels.size());
     for (std::size_t i = 0; i < pixels.size(); ++i)
         current[i] = gpu::demodulatedPixel(pixels[i]);
-    for (std::uint32_t iteration = 0; iteration < settings.iterations; ++iteration) {
+    // The iterations, then the last pass that only chooses (denoiseParams, step 0).
+    for (std::uint32_t iteration = 0; iteration <= settings.iterations; ++iteration) {
         const gpu::DenoiseParams params = denoiseParams(settings, width, height, iteration);
         const gpu::DenoiseSource source{pixels.data(), current.data()};
         forEachRow(height, threads, [&](std::uint32_t y) {

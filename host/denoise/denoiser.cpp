@@ -10,8 +10,9 @@ gpu::DenoiseParams denoiseParams(const DenoiseSettings& settings, std::uint32_t 
     gpu::DenoiseParams params{};
     params.width = width;
     params.height = height;
-    params.step = 1u << iteration;
-    params.modulate = iteration + 1 == settings.iterations ? 1u : 0u;
+    const bool last = iteration == settings.iterations;
+    params.step = last ? 0u : 1u << iteration;
+    params.modulate = last ? 1u : 0u;
     params.gateT = settings.gateT;
     params.normalPower = settings.normalPower;
     params.depthSigma = settings.depthSigma;
@@ -31,6 +32,10 @@ std::vector<gpu::DenoisePixel> denoiseInput(const std::vector<PixelRecord>& pixe
         pixel.depth = features[i].depth;
         pixel.normal = features[i].normal;
         pixel.sampleCount = pixels[i].count;
+        pixel.halfA = glm::vec3(pixels[i].halves[0].mean);
+        pixel.halfCountA = float(pixels[i].halves[0].count);
+        pixel.halfB = glm::vec3(pixels[i].halves[1].mean);
+        pixel.halfCountB = float(pixels[i].halves[1].count);
     }
     return input;
 }

@@ -23,7 +23,8 @@ struct DenoiseSettings {
     float albedoSigma = DENOISE_ALBEDO_SIGMA;
 };
 
-// The push constants of iteration `iteration` (0-based) of `iterations`.
+// The push constants of pass `iteration` (0-based) of settings.iterations + 1: the à-trous
+// iterations, each after choosing among the candidates so far, then the last choice (step 0).
 gpu::DenoiseParams denoiseParams(const DenoiseSettings& settings, std::uint32_t width,
                                  std::uint32_t height, std::uint32_t iteration);
 

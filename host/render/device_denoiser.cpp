@@ -55,8 +55,8 @@ std::vector<glm::vec3> DeviceDenoiser::denoise(const std::vector<gpu::DenoisePix
         makeDenoiseBuffer(context_, "denoisePixels", count * sizeof(gpu::DenoisePixel));
     upload(context_, denoisePixels, std::span<const gpu::DenoisePixel>(pixels));
     const Buffer iterates[2] = {
-        makeDenoiseBuffer(context_, "denoiseValues", count * sizeof(gpu::vec4)),
-        makeDenoiseBuffer(context_, "denoiseValues", count * sizeof(gpu::vec4))};
+        makeDenoiseBuffer(context_, "denoiseValues", count * sizeof(gpu::DenoiseValue)),
+        makeDenoiseBuffer(context_, "denoiseValues", count * sizeof(gpu::DenoiseValue))};
     const DescriptorSet demodulateSet(demodulate_, {{0, &denoisePixels}, {1, &iterates[0]}});
     const DescriptorSet filterSets[2] = {
         DescriptorSet(filter_, {{0, &denoisePixels}, {1, &iterates[0]}, {2, &iterates[1]}}),
@@ -65,17 +65,19 @@ std::vector<glm::vec3> DeviceDenoiser::denoise(const std::vector<gpu::DenoisePix
     submitAndWait(context_, "denoise", [&](VkCommandBuffer commands) {
         const gpu::DenoiseParams first = denoiseParams(settings, width, height, 0);
         recordDispatch(commands, demodulate_, demodulateSet, groups, pushConstantBytes(first));
-        for (std::uint32_t iteration = 0; iteration < settings.iterations; ++iteration) {
+        // The iterations, then the last pass that only chooses (denoiseParams, step 0).
+        for (std::uint32_t iteration = 0; iteration <= settings.iterations; ++iteration) {
             recordComputeToComputeBarrier(commands);
             const gpu::DenoiseParams params = denoiseParams(settings, width, height, iteration);
             recordDispatch(commands, filter_, filterSets[iteration % 2], groups,
                            pushConstantBytes(params));
         }
     });
-    const auto result = download<gpu::vec4>(context_, iterates[settings.iterations % 2], count);
+    const auto result =
+        download<gpu::DenoiseValue>(context_, iterates[(settings.iterations + 1) % 2], count);
     std::vector<glm::vec3> radiance(count);
     for (std::size_t i = 0; i < count; ++i)
-        radiance[i] = glm::vec3(result[i]);
+        radiance[i] = glm::vec3(result[i].chosen);
     return radiance;
 }
 

@@ -2,6 +2,8 @@
 // slice per channel, string attributes for the metadata, the crop as the data window inside the
 // display window of the whole image. Lossless ZIP compression, so the moments round-trip bit for
 // bit.
+#include <deque>
+
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
@@ -19,10 +21,13 @@ namespace {
 
 using namespace state_channels;
 
-// Every channel of the file: name, type and one value per window pixel.
+// Every channel of the file: name, type and one value per window pixel. Deques, so that the
+// reference addFloat and addUint return stays valid while more channels are added (a vector's
+// growth moved the channels away from the references the fillers held: a state with the
+// denoised image's three more channels crashed as an .exr --preview wrote it).
 struct Channels {
-    std::vector<std::pair<std::string, std::vector<float>>> floats;
-    std::vector<std::pair<std::string, std::vector<std::uint32_t>>> uints;
+    std::deque<std::pair<std::string, std::vector<float>>> floats;
+    std::deque<std::pair<std::string, std::vector<std::uint32_t>>> uints;
 
     std::vector<float>& addFloat(const std::string& name, std::size_t n) {
         return floats.emplace_back(name, std::vector<float>(n, 0.0f)).second;

@@ -12,7 +12,7 @@ layout(push_constant) uniform Params {
 };
 
 VKPT_READONLY_BUFFER(0, DenoisePixel, denoisePixels)
-VKPT_WRITEONLY_BUFFER(1, vec4, denoiseValuesOut)
+VKPT_WRITEONLY_BUFFER(1, DenoiseValue, denoiseValuesOut)
 
 void main() {
     uint index = gl_GlobalInvocationID.x;

@@ -1,6 +1,6 @@
 // filter_radiance.comp — one à-trous iteration of the denoiser, one invocation per pixel
-// (shared/denoise_filter.h): reads the iterate, writes the next; the last iteration multiplies
-// the albedo back and writes the denoised radiance.
+// (shared/denoise_filter.h): reads the iterate, writes the next; the last pass only chooses,
+// multiplies the albedo back and writes the denoised radiance (DenoiseValue.chosen).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "lib/buffers.glsl"
@@ -12,8 +12,8 @@ layout(push_constant) uniform Params {
 };
 
 VKPT_READONLY_BUFFER(0, DenoisePixel, denoisePixels)
-VKPT_READONLY_BUFFER(1, vec4, denoiseValuesIn)
-VKPT_WRITEONLY_BUFFER(2, vec4, denoiseValuesOut)
+VKPT_READONLY_BUFFER(1, DenoiseValue, denoiseValuesIn)
+VKPT_WRITEONLY_BUFFER(2, DenoiseValue, denoiseValuesOut)
 
 #include "shared/denoise_filter.h"
 
@@ -22,8 +22,8 @@ void main() {
     if (index >= params.width * params.height) return;
     uint x = index % params.width;
     uint y = index / params.width;
-    vec4 filtered = filterPixel(x, y, params);
+    DenoiseValue filtered = filterPixel(x, y, params);
     if (params.modulate != 0u)
-        filtered = vec4(modulatedRadiance(denoisePixels[index], filtered), filtered.w);
+        filtered.chosen = vec4(modulatedRadiance(denoisePixels[index], filtered), filtered.chosen.w);
     denoiseValuesOut[index] = filtered;
 }

@@ -23,9 +23,8 @@
 namespace vkpt::gpu {
 #endif
 
-// One pixel as the denoiser reads it: the estimate and its noise, and the AOVs that guide the
-// filter. A plain struct so that more per-pixel statistics (e.g. the means of two half sample
-// sets) can join it without changing the filter's shape.
+// One pixel as the denoiser reads it: the estimate and its noise, the means of its two disjoint
+// half sample sets (docs/integrator.md, "Two halves"), and the AOVs that guide the filter.
 struct DenoisePixel {
     vec3 radiance;           // mean radiance
     float luminanceVariance; // variance of the mean luminance, M2 / (n − 1) / n
@@ -33,14 +32,31 @@ struct DenoisePixel {
     float depth;             // camera-space z of the nearest hit; +inf where none
     vec3 normal;             // mean shading normal; 0 where every sample missed
     uint sampleCount;        // samples behind the mean
+    vec3 halfA;              // mean radiance of the even samples
+    float halfCountA;        // their count; 0: no half estimate (the pixel stays raw)
+    vec3 halfB;              // mean radiance of the odd samples
+    float halfCountB;
+};
+
+// One pixel of an iterate: the filtered whole estimate and the two filtered halves, each the
+// demodulated radiance (rgb) and the variance of its mean luminance (w); and the candidate chosen
+// so far (rgb, demodulated) with its estimated error (w; DENOISE_NO_ESTIMATE before the first);
+// and this pixel's share of the iterate's error estimate (estimate.x, candidateError; estimate.y
+// 1 where the pixel has two halves, else 0), which the next pass averages over a window.
+struct DenoiseValue {
+    vec4 full;
+    vec4 halfA;
+    vec4 halfB;
+    vec4 chosen;
+    vec4 estimate;
 };
 
 // The filter's settings (push constants of both kernels).
 struct DenoiseParams {
     uint width;
     uint height;
-    uint step;     // the à-trous step of this iteration: 1, 2, 4, ...
-    uint modulate; // 1 on the last iteration: write radiance (albedo multiplied back)
+    uint step;     // the à-trous step of this iteration: 1, 2, 4, ...; 0: the last pass
+    uint modulate; // 1 on the last pass: choose only, and write radiance (albedo multiplied back)
     // A tap whose t statistic reaches gateT takes no part; below it its weight falls smoothly
     // as (1 − (t/gateT)⁴)², so that the output does not jump where a tap crosses the bound.
     float gateT;
@@ -50,37 +66,69 @@ struct DenoiseParams {
 };
 
 // The defaults, measured in docs/trade/denoise.md.
-#define DENOISE_ITERATIONS 4u
+#define DENOISE_ITERATIONS 4u // a fifth step was measured and rarely chosen
 #define DENOISE_GATE_T 3.0f
 #define DENOISE_NORMAL_POWER 32.0f
 #define DENOISE_DEPTH_SIGMA 0.02f
 #define DENOISE_ALBEDO_SIGMA 0.25f
 // What the neighbourhood's variance weighs, in samples, against a pixel's own (denoise_filter.h).
 #define DENOISE_PRIOR_SAMPLES 16.0f
+// The reach of the window over which a candidate's error estimate is averaged (denoise_filter.h).
+#define DENOISE_ERROR_RADIUS 2
+// The raw candidate's estimate counts 1 + DENOISE_RAW_PRIOR / n times (denoise_filter.h): its
+// estimate, (A − B)² / 4 from two half means, is the noisiest of all, and a pixel that a low draw
+// leaves raw keeps all its noise. The factor goes to 1 as the samples grow, so the choice stays
+// consistent; 16, 64 and 256 were measured (docs/trade/denoise.md), 64 kept.
+#define DENOISE_RAW_PRIOR 64.0f
 
 // Dividing by a dark albedo channel would lift its noise beyond what the filter can take; a
 // pixel without a surface (albedo 0: sky, emitters seen directly) is filtered as it is.
 #define DENOISE_ALBEDO_FLOOR 0.02f
 #define DENOISE_NO_ALBEDO 1e-3f
+// A candidate's error where nothing estimates it (no halves): never taken, the raw stays.
+#define DENOISE_NO_ESTIMATE 3.0e38f
 
 VKPT_FN vec3 demodulationAlbedo(vec3 albedo) {
     if (max(albedo.x, max(albedo.y, albedo.z)) < DENOISE_NO_ALBEDO) return vec3(1.0f);
     return max(albedo, vec3(DENOISE_ALBEDO_FLOOR));
 }
 
-// The albedo-demodulated radiance (rgb) and the variance of its mean luminance (w): the
-// luminance's variance scaled by the square of the factor demodulation scaled the luminance by.
-VKPT_FN vec4 demodulatedPixel(DenoisePixel pixel) {
-    vec3 albedo = demodulationAlbedo(pixel.albedo);
-    vec3 demodulated = pixel.radiance / albedo;
-    float before = luminance(pixel.radiance);
-    float scale = before > 0.0f ? luminance(demodulated) / before : 1.0f / luminance(albedo);
-    return vec4(demodulated, pixel.luminanceVariance * scale * scale);
+VKPT_FN bool hasHalves(DenoisePixel pixel) {
+    return pixel.halfCountA > 0.0f && pixel.halfCountB > 0.0f;
 }
 
-// The final iterate with the albedo multiplied back.
-VKPT_FN vec3 modulatedRadiance(DenoisePixel pixel, vec4 filtered) {
-    return vec3(filtered.x, filtered.y, filtered.z) * demodulationAlbedo(pixel.albedo);
+// The albedo-demodulated radiance (rgb) and the variance of its mean luminance (w): the
+// luminance's variance scaled by the square of the factor demodulation scaled the luminance by.
+VKPT_FN vec4 demodulatedEstimate(vec3 radiance, float variance, vec3 albedo) {
+    vec3 demodulated = radiance / albedo;
+    float before = luminance(radiance);
+    float scale = before > 0.0f ? luminance(demodulated) / before : 1.0f / luminance(albedo);
+    return vec4(demodulated, variance * scale * scale);
+}
+
+// The chosen candidate with the albedo multiplied back.
+VKPT_FN vec3 modulatedRadiance(DenoisePixel pixel, DenoiseValue value) {
+    return vec3(value.chosen.x, value.chosen.y, value.chosen.z) * demodulationAlbedo(pixel.albedo);
+}
+
+// One pixel's share of a candidate's error estimate, from its filtered halves FA, FB and raw
+// halves A, B (demodulated; `albedo` modulates them back). FA depends on half A's samples only, so
+// E[(FA − B)²] = MSE(FA) + Var B; Var B ≈ (A − B)² / 2; and the filtered whole, of twice the
+// samples, has about half FA's variance, Var FA ≈ (FA − FB)² / 2 (Rousselle, Knaus and Zwicker,
+// "Adaptive Rendering with Non-Local Means Filtering", SIGGRAPH Asia 2012, §4–5, estimate a
+// filter's error from half buffers this way). Symmetrised over the halves:
+//   MSE(F whole) ≈ ((FA − B)² + (FB − A)²) / 2 − (A − B)² / 2 − (FA − FB)² / 4,
+// which for the raw candidate (FA = A, FB = B) is (A − B)² / 4, the variance of the whole mean.
+// Relative to the pixel's squared luminance (+ 0.01), as relMSE weighs errors.
+VKPT_FN float candidateError(vec3 filteredA, vec3 filteredB, vec3 rawA, vec3 rawB, vec3 albedo) {
+    vec3 crossA = (filteredA - rawB) * albedo;
+    vec3 crossB = (filteredB - rawA) * albedo;
+    vec3 halves = (rawA - rawB) * albedo;
+    vec3 filtered = (filteredA - filteredB) * albedo;
+    float error = 0.5f * (dot(crossA, crossA) + dot(crossB, crossB)) - 0.5f * dot(halves, halves) -
+                  0.25f * dot(filtered, filtered);
+    float scale = luminance(0.5f * (rawA + rawB) * albedo);
+    return error / (scale * scale + 0.01f);
 }
 
 // The gate: 1 for equal means, falling to 0 at t = gateT. The quartic keeps the weight of a
@@ -111,6 +159,36 @@ VKPT_FN float gateWeight(vec3 centre, vec3 neighbour, float variance, float gate
     return falloff * falloff;
 }
 
+// The iterate `value`'s candidateError at `pixel` (DenoiseValue.estimate).
+VKPT_FN vec4 pixelEstimate(DenoisePixel pixel, DenoiseValue value) {
+    if (!hasHalves(pixel)) return vec4(0.0f);
+    vec3 albedo = demodulationAlbedo(pixel.albedo);
+    float error = candidateError(vec3(value.halfA.x, value.halfA.y, value.halfA.z),
+                                 vec3(value.halfB.x, value.halfB.y, value.halfB.z),
+                                 pixel.halfA / albedo, pixel.halfB / albedo, albedo);
+    return vec4(error, 1.0f, 0.0f, 0.0f);
+}
+
+// The first iterate: the whole estimate and the halves demodulated, nothing chosen yet. A half's
+// mean has the variance of the whole's times n / n_half (one variance per sample, fewer samples):
+// the render keeps one variance for the pixel, so this is the one statistic the two halves'
+// filters share (their means, and so their gates' differences, are their own).
+VKPT_FN DenoiseValue demodulatedPixel(DenoisePixel pixel) {
+    vec3 albedo = demodulationAlbedo(pixel.albedo);
+    DenoiseValue value;
+    value.full = demodulatedEstimate(pixel.radiance, pixel.luminanceVariance, albedo);
+    float samples = float(pixel.sampleCount);
+    float varianceA =
+        hasHalves(pixel) ? pixel.luminanceVariance * samples / pixel.halfCountA : 0.0f;
+    float varianceB =
+        hasHalves(pixel) ? pixel.luminanceVariance * samples / pixel.halfCountB : 0.0f;
+    value.halfA = demodulatedEstimate(pixel.halfA, varianceA, albedo);
+    value.halfB = demodulatedEstimate(pixel.halfB, varianceB, albedo);
+    value.chosen = vec4(value.full.x, value.full.y, value.full.z, DENOISE_NO_ESTIMATE);
+    value.estimate = pixelEstimate(pixel, value);
+    return value;
+}
+
 VKPT_FN bool hasSurface(DenoisePixel pixel) {
     return !isinf(pixel.depth);
 }
@@ -138,7 +216,8 @@ VKPT_FN float atrousTap(int offset) {
 }
 
 #ifdef __cplusplus
-static_assert(sizeof(DenoisePixel) == 48 && offsetof(DenoisePixel, normal) == 32);
+static_assert(sizeof(DenoisePixel) == 80 && offsetof(DenoisePixel, halfB) == 64);
+static_assert(sizeof(DenoiseValue) == 80);
 static_assert(sizeof(DenoiseParams) == 32);
 } // namespace vkpt::gpu
 #endif

@@ -1,7 +1,8 @@
 // denoise_kernel_test.cpp — vkpt's denoiser kernels give the CPU loop's image: the same shared
 // functions (shared/denoise_filter.h) on the same input, equal up to the device's float rounding
 // (exp and pow may differ in the last bits). 37×23 pixels: odd sides exercise the borders and a
-// partial workgroup; random guides, noise levels, misses and a firefly reach every branch.
+// partial workgroup; random guides, noise levels, misses, pixels without halves and a firefly
+// reach every branch.
 #include "denoise/cpu_denoiser.h"
 #include "gpu_test_support.h"
 #include "render/device_denoiser.h"
@@ -26,8 +27,15 @@ std::vector<gpu::DenoisePixel> randomPixels(std::uint32_t width, std::uint32_t h
         p.depth = miss ? INFINITY : 1.0f + 0.1f * unit(random);
         p.normal = miss ? glm::vec3(0.0f) : glm::normalize(glm::vec3(0.1f * unit(random), 0, 1));
         p.sampleCount = 16;
+        p.halfA = p.radiance * (0.8f + 0.4f * unit(random));
+        p.halfB = 2.0f * p.radiance - p.halfA;
+        const bool oneHalf = unit(random) < 0.05f; // no half estimate: stays raw
+        p.halfCountA = oneHalf ? 0.0f : 8.0f;
+        p.halfCountB = oneHalf ? 16.0f : 8.0f;
     }
-    pixels[width * (height / 2) + width / 2].radiance = glm::vec3(500.0f); // a firefly
+    gpu::DenoisePixel& firefly = pixels[width * (height / 2) + width / 2];
+    firefly.radiance = glm::vec3(500.0f);
+    firefly.halfA = glm::vec3(1000.0f) - firefly.halfB;
     return pixels;
 }
 

@@ -46,9 +46,15 @@ std::vector<gpu::DenoisePixel> noisyPixels(const Scene& scene, std::uint32_t sam
     for (std::uint32_t i = 0; i < truth.size(); ++i) {
         const std::uint32_t x = i % kSide, y = i / kSide;
         const float deviation = sigma / std::sqrt(float(samples)); // of the mean, relative
-        const float noise = normal(random) * deviation;            // one factor: grey noise
+        // Two halves of samples / 2 each, one factor of grey noise each; the mean is theirs.
+        const float noiseA = normal(random) * deviation * std::sqrt(2.0f);
+        const float noiseB = normal(random) * deviation * std::sqrt(2.0f);
         gpu::DenoisePixel& p = pixels[i];
-        p.radiance = truth[i] * (1.0f + noise);
+        p.halfA = truth[i] * (1.0f + noiseA);
+        p.halfB = truth[i] * (1.0f + noiseB);
+        p.halfCountA = float(samples / 2);
+        p.halfCountB = float(samples - samples / 2);
+        p.radiance = 0.5f * (p.halfA + p.halfB);
         const float luminance = gpu::luminance(truth[i]);
         p.luminanceVariance = luminance * luminance * deviation * deviation;
         p.albedo = scene.albedo(x, y);
@@ -113,6 +119,8 @@ TEST(DenoiseGate, TellsColoursOfOneLuminanceApart) {
         const glm::vec3 truth = truthAt(x, y);
         const float factor = gpu::luminance(pixels[i].radiance) / (0.5f * kSmooth.light(x, y));
         pixels[i].radiance = truth * factor; // the grey scene's noise, now coloured
+        pixels[i].halfA = truth * gpu::luminance(pixels[i].halfA) / (0.5f * kSmooth.light(x, y));
+        pixels[i].halfB = truth * gpu::luminance(pixels[i].halfB) / (0.5f * kSmooth.light(x, y));
         const float deviation = gpu::luminance(truth) * 0.5f / 16.0f;
         pixels[i].luminanceVariance = deviation * deviation;
     }
@@ -126,9 +134,10 @@ TEST(DenoiseGate, TellsColoursOfOneLuminanceApart) {
 }
 
 TEST(DenoiseConsistency, ConvergesToTheRawImageAsSamplesGrow) {
-    // Never worse than the raw image, far better at 4 samples, and by 2^24 samples (noise 1e-4
-    // of the mean; neighbours differ by 2.6e-3 or more) the raw image itself: the gap between
-    // the two is under 5 % of the raw error.
+    // Never worse than the raw image, far better at 4 samples (a third of its error or less: the
+    // choice among the candidates is made from halves of 2 samples each, itself noisy), and by
+    // 2^24 samples (noise 1e-4 of the mean; neighbours differ by 2.6e-3 or more) the raw image
+    // itself: the gap between the two is under 5 % of the raw error.
     const std::vector<glm::vec3> truth = truthOf(kSmooth);
     double lastGap = 1.0;
     for (std::uint32_t samples : {4u, 256u, 16384u, 1u << 24}) {
@@ -138,11 +147,30 @@ TEST(DenoiseConsistency, ConvergesToTheRawImageAsSamplesGrow) {
         const double gap = relativeMse(out, raw) / rawError;
         EXPECT_LE(relativeMse(out, truth), rawError * 1.001) << samples << " samples";
         if (samples == 4u) {
-            EXPECT_LT(relativeMse(out, truth), rawError / 4.0);
+            EXPECT_LT(relativeMse(out, truth), rawError / 3.0);
         }
         lastGap = gap;
     }
     EXPECT_LT(lastGap, 0.05) << "at 2^24 samples the output is the raw image";
+}
+
+TEST(DenoiseChoice, KeepsTheRawImageWhereTheVarianceMisleadsTheGate) {
+    // Light in waves 10 % deep and 12 pixels long, and the render's variance 100× the truth
+    // (noise it does not have, as a heavy tail's estimate can be off): the gate then takes in
+    // neighbours across the waves, and every filtered candidate flattens them. The halves'
+    // differences show the true noise, so the choice keeps the pixels (near) raw: at 4096
+    // samples (noise 0.8 % of the mean) the output's error is at most 1.1× the raw one, where
+    // the whole image after the four steps alone is many times worse.
+    const Scene waves{[](auto, auto) { return glm::vec3(0.5f); },
+                      [](std::uint32_t x, std::uint32_t y) {
+                          return 1.0f + 0.1f * std::sin(0.52f * float(x) + 0.1f * float(y));
+                      }};
+    std::vector<gpu::DenoisePixel> pixels = noisyPixels(waves, 4096, 0.5f, 7);
+    for (gpu::DenoisePixel& p : pixels)
+        p.luminanceVariance *= 100.0f;
+    const std::vector<glm::vec3> truth = truthOf(waves);
+    const double rawError = relativeMse(radianceOf(pixels), truth);
+    EXPECT_LE(relativeMse(denoised(pixels), truth), 1.1 * rawError);
 }
 
 TEST(DenoiseEdges, KeepsATextureSharp) {
@@ -198,6 +226,7 @@ TEST(DenoiseFireflies, NeitherSpreadNorKept) {
     gpu::DenoisePixel& firefly = pixels[fy * kSide + fx];
     const float spike = 100.0f * gpu::luminance(firefly.radiance);
     firefly.radiance *= 100.0f;
+    firefly.halfA = 2.0f * firefly.radiance - firefly.halfB; // the spike fell in the even half
     firefly.luminanceVariance = spike * spike; // one sample 16·spike of 16: M2 / 15 / 16 ≈ spike²
     const std::vector<glm::vec3> truth = truthOf(kSmooth);
     const std::vector<glm::vec3> out = denoised(pixels);
