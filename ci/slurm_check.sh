@@ -3,7 +3,8 @@
 # private single-node Slurm (munged with its own key and socket, slurmctld and slurmd on
 # 127.0.0.1, no accounting, state and logs in a temporary folder), submits the Cornell box as
 # an array job of 4 vkpt tasks plus the dependent merge job, compares the merged image with a
-# single run (oiiotool), and stops every daemon it started, by pid. Needs root (the daemons run
+# single run (oiiotool), renders an animation's frames as a second array job (one frame per
+# task), and stops every daemon it started, by pid. Needs root (the daemons run
 # as root here), Debian's slurm-wlm and munge, and openimageio-tools (ci/install_deps.sh).
 #
 #   bash ci/slurm_check.sh [BUILD_DIR]      (default build/ci; the CTest label `slurm` runs it)
@@ -127,4 +128,31 @@ echo "slurm_check: array and merge done in $(( $(date +%s) - submitted )) s"
 "$build/host/app/vkpt" --quiet --spp 16 --res 32 32 -o "$work/single.exr" "$scene" > /dev/null 2>&1
 oiiotool "$work/out/merged.exr" --ch R,G,B "$work/single.exr" --ch R,G,B --fail 1e-5 --diff
 oiiotool "$work/out/merged.exr" --ch sampleCount "$work/single.exr" --ch sampleCount --fail 0 --diff
+
+# The frames recipe (render_frames.sbatch), as a user runs it: a 4-frame piece of the turntable
+# (scenes/turntable.gltf, 16×16 at 4 spp, 4 frames a second) as an array job, one frame per
+# task. Every frame must be written, and at one seed only what moves can change a pixel: frames
+# 0 and 2 (the object turned by 45°) must differ.
+mkdir -p "$work/frames"
+frames=$(VKPT="$build/host/app/vkpt" SCENE="$(pwd)/scenes/turntable.gltf" SPP=4 FPS=4 \
+    OUT_DIR="$work/frames" RENDER_ARGS="--res 16 16 --seed 1" \
+    sbatch --parsable --array=0-3 --output="$work/frames/frame_%a.log" \
+    "$recipe/render_frames.sbatch")
+frames="${frames%%;*}"
+echo "slurm_check: frames array job $frames"
+submitted=$(date +%s)
+while [ -n "$(squeue --noheader --jobs="$frames" 2>/dev/null)" ]; do
+    (( $(date +%s) - submitted < 300 )) ||
+        { echo "slurm_check: frame tasks still queued or running after 300 s" >&2; exit 1; }
+    sleep 0.5
+done
+for frame in 0000 0001 0002 0003; do
+    [ -s "$work/frames/frame.$frame.png" ] ||
+        { echo "slurm_check: frame $frame was not written (frames/frame_*.log)" >&2; exit 1; }
+done
+if cmp -s "$work/frames/frame.0000.png" "$work/frames/frame.0002.png"; then
+    echo "slurm_check: frames 0 and 2 are the same image: nothing moved" >&2
+    exit 1
+fi
+echo "slurm_check: 4 frames in $(( $(date +%s) - submitted )) s"
 echo "slurm_check: passed"

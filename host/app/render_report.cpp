@@ -45,7 +45,7 @@ void writeSettings(JsonWriter& json, const RenderSettings& s) {
                                                               : "off");
     if (s.animationTime) json.field("time", *s.animationTime);
     json.field("animation", s.animation); // "" all of them
-    json.field("variant", s.variant); // "" = the default materials
+    json.field("variant", s.variant);     // "" = the default materials
     json.endObject();
 }
 

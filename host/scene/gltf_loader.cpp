@@ -422,8 +422,8 @@ std::unique_ptr<GltfSceneSource::Parsed> parse(const std::string& path) {
     // material (the direction follows the texture's axes).
     const bool anisotropy = std::any_of(scene.materials.begin(), scene.materials.end(),
                                         [](const SceneMaterial& m) { return m.hasAnisotropy(); });
-    parsed->texcoords = scene.textures.empty() && !anisotropy ? gltf::Texcoords::Skip
-                                                              : gltf::Texcoords::Read;
+    parsed->texcoords =
+        scene.textures.empty() && !anisotropy ? gltf::Texcoords::Skip : gltf::Texcoords::Read;
     parsed->sceneIndex = gltf::defaultSceneIndex(model);
     parsed->animations = gltf::readAnimations(model);
     scene.animations = summarise(parsed->animations);
