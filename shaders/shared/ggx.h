@@ -87,8 +87,10 @@ VKPT_FN float ggxReflectionPdf(vec3 wo, vec3 h, float alpha) {
 // JCGT 7(4), 2018. Stretching by 1/α turns the microsurface into the unit hemisphere; its
 // visible normals are the projection of a uniform disk point onto it, the disk's half beyond
 // the silhouette of wo squeezed so that the projected area is right; then unstretch.
-VKPT_FN vec3 sampleGgxVisibleNormal(vec3 wo, float alpha, vec2 u) {
-    vec3 v = normalize(vec3(alpha * wo.x, alpha * wo.y, wo.z));
+// With alpha = (αx, αy) the same construction samples the anisotropic distribution
+// (ggx_anisotropic.h); the isotropic sampler is its αx = αy case.
+VKPT_FN vec3 sampleGgxVisibleNormalStretched(vec3 wo, vec2 alpha, vec2 u) {
+    vec3 v = normalize(vec3(alpha.x * wo.x, alpha.y * wo.y, wo.z));
     float lengthSquared = v.x * v.x + v.y * v.y;
     vec3 t1 =
         lengthSquared > 0.0f ? vec3(-v.y, v.x, 0.0f) / sqrt(lengthSquared) : vec3(1.0f, 0.0f, 0.0f);
@@ -100,7 +102,11 @@ VKPT_FN vec3 sampleGgxVisibleNormal(vec3 wo, float alpha, vec2 u) {
     float squeeze = 0.5f * (1.0f + v.z);
     p2 = mix(sqrt(max(0.0f, 1.0f - p1 * p1)), p2, squeeze);
     vec3 n = p1 * t1 + p2 * t2 + sqrt(max(0.0f, 1.0f - p1 * p1 - p2 * p2)) * v;
-    return normalize(vec3(alpha * n.x, alpha * n.y, max(0.0f, n.z)));
+    return normalize(vec3(alpha.x * n.x, alpha.y * n.y, max(0.0f, n.z)));
+}
+
+VKPT_FN vec3 sampleGgxVisibleNormal(vec3 wo, float alpha, vec2 u) {
+    return sampleGgxVisibleNormalStretched(wo, vec2(alpha, alpha), u);
 }
 
 // wo reflected about a sampled visible normal; below the surface when the normal is steep.

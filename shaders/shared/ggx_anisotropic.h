@@ -57,19 +57,7 @@ VKPT_FN float ggxReflectionPdfAnisotropic(vec3 wo, vec3 h, vec2 alpha) {
 // Heitz 2018 ("Sampling the GGX Distribution of Visible Normals", JCGT 7(4)), which stretches by
 // (αx, αy): the isotropic sampler of ggx.h with the two roughnesses apart.
 VKPT_FN vec3 sampleGgxVisibleNormalAnisotropic(vec3 wo, vec2 alpha, vec2 u) {
-    vec3 v = normalize(vec3(alpha.x * wo.x, alpha.y * wo.y, wo.z));
-    float lengthSquared = v.x * v.x + v.y * v.y;
-    vec3 t1 =
-        lengthSquared > 0.0f ? vec3(-v.y, v.x, 0.0f) / sqrt(lengthSquared) : vec3(1.0f, 0.0f, 0.0f);
-    vec3 t2 = cross(v, t1);
-    float r = sqrt(u.x);
-    float phi = 2.0f * VKPT_PI * u.y;
-    float p1 = r * cos(phi);
-    float p2 = r * sin(phi);
-    float squeeze = 0.5f * (1.0f + v.z);
-    p2 = mix(sqrt(max(0.0f, 1.0f - p1 * p1)), p2, squeeze);
-    vec3 n = p1 * t1 + p2 * t2 + sqrt(max(0.0f, 1.0f - p1 * p1 - p2 * p2)) * v;
-    return normalize(vec3(alpha.x * n.x, alpha.y * n.y, max(0.0f, n.z)));
+    return sampleGgxVisibleNormalStretched(wo, alpha, u);
 }
 
 VKPT_FN vec3 sampleGgxReflectionAnisotropic(vec3 wo, vec2 alpha, vec2 u) {
