@@ -88,11 +88,13 @@ struct DenoiseParams {
 #define DENOISE_NO_ALBEDO 1e-3f
 // A candidate's error where nothing estimates it (no halves): never taken, the raw stays.
 #define DENOISE_NO_ESTIMATE 3.0e38f
-// The candidates are blended with weights 1 / error² (denoise_filter.h); an estimate below this
-// floor (it may come out 0 or negative, a difference of noisy squares) counts as the floor, so
-// that no single candidate's chance estimate takes all the weight. Relative squared error, as
-// candidateError; 1e-5 and 1e-4 measured alike.
-#define DENOISE_ERROR_FLOOR 1e-5f
+// The candidates are blended with weights 1 / error² (denoise_filter.h); an estimate below
+// DENOISE_ERROR_FLOOR / n (it may come out 0 or negative, a difference of noisy squares) counts
+// as that floor, so that no single candidate's chance estimate takes all the weight. Relative
+// squared error, as candidateError; a raw estimate's error is about 0.2 / n in the Cornell box,
+// so the floor stays a small fraction of it at every n and the raw candidate's weight still
+// grows as n² (consistency). 1e-4, 1e-3 and 1e-2 measured alike.
+#define DENOISE_ERROR_FLOOR 1e-3f
 
 VKPT_FN vec3 demodulationAlbedo(vec3 albedo) {
     if (max(albedo.x, max(albedo.y, albedo.z)) < DENOISE_NO_ALBEDO) return vec3(1.0f);

@@ -118,7 +118,7 @@ VKPT_FN DenoiseValue filterPixel(DENOISE_SOURCE_PARAM uint x, uint y, DenoisePar
     if (params.step == 1u && error != DENOISE_NO_ESTIMATE)
         error *= 1.0f + DENOISE_RAW_PRIOR / max(float(centre.sampleCount), 1.0f);
     if (error != DENOISE_NO_ESTIMATE) {
-        float floored = max(error, DENOISE_ERROR_FLOOR);
+        float floored = max(error, DENOISE_ERROR_FLOOR / max(float(centre.sampleCount), 1.0f));
         float weight = 1.0f / (floored * floored);
         float total = centreValue.chosen.w + weight;
         vec3 before = rgbOf(centreValue.chosen);
