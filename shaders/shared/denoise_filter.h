@@ -91,7 +91,7 @@ VKPT_FN vec3 rgbOf(vec4 value) {
 // pass, the result of k à-trous steps on pass k) joins the blend of the candidates so far with
 // the weight 1 / error², its error estimated from the halves (neighbourhoodError). Inverse-error
 // weights, as inverse variances combine estimates: each candidate's estimate is too noisy at a few
-// samples to pick one outright — the best of the per-pixel choice measured 1.72e-3 against
+// samples to pick one outright — picking the lowest per pixel measured 1.72e-3 against
 // 1.55e-3 for the blend (Cornell box, 16 spp; docs/trade/denoise.md) — and the blend tends to
 // the choice where one candidate's error is far below the others'. The raw estimate is always the
 // first candidate, so where filtering does not pay the pixel stays near raw, and as the samples
