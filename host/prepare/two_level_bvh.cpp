@@ -8,6 +8,8 @@
 
 #include "bvh/bvh_wide.h"
 #include "common/errors.h"
+#include "common/phase_log.h"
+#include "prepare/bvh_cache.h"
 #include "prepare/gpu_primitives.h"
 
 namespace vkpt {
@@ -29,8 +31,10 @@ BottomLevel buildBottomLevel(const TriangleSoup& soup, std::span<const SceneSphe
                              const Scene& scene, const PrepareOptions& options, bool withUvs,
                              bool withTangents, PreparedScene& prepared) {
     BottomLevel level;
-    level.mesh.tree = buildBvh(primitiveBounds(soup, spheres), options.bvh);
-    level.nodes = flattenWideBvh(level.mesh.tree);
+    FlattenedBvh bvh =
+        buildFlattenedBvh(primitiveBounds(soup, spheres), options.bvh, options.bvhCache);
+    level.mesh.tree = std::move(bvh.tree);
+    level.nodes = std::move(bvh.nodes);
     GpuPrimitives primitives =
         makeGpuPrimitives(soup, spheres, scene.materials, level.mesh.tree, withUvs, withTangents);
     level.mesh.firstPrimitive = static_cast<std::uint32_t>(prepared.triangles.size());
@@ -148,6 +152,7 @@ void prepareTwoLevel(const Scene& scene, const PrepareOptions& options, bool wit
             {firstMeshLevel + instance.mesh, instance.objectToWorld, instance.material});
     VKPT_ASSERT(prepared.triangles.size() < BVH_MAX_TRIANGLES, "primitive count fits a leaf word");
 
+    ScopedPhase topPhase("top-level BVH");
     std::vector<Aabb> bounds;
     bounds.reserve(placements.size());
     for (const Placement& p : placements)
@@ -163,6 +168,7 @@ void prepareTwoLevel(const Scene& scene, const PrepareOptions& options, bool wit
         prepared.instances.push_back(
             makeGpuInstance(p.objectToWorld, levels[p.level].mesh.rootNode, p.level, p.material));
     }
+    topPhase.end();
 
     prepared.bvhStats = computeBvhStats(prepared.instanceTree, top);
     std::uint32_t deepestBottom = 0;

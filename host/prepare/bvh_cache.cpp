@@ -1,0 +1,76 @@
+// bvh_cache.cpp — trees kept by their primitives' exact boxes, one frame to the next.
+#include "prepare/bvh_cache.h"
+
+#include <cstring>
+
+#include "bvh/bvh_wide.h"
+#include "common/phase_log.h"
+
+namespace vkpt {
+
+namespace {
+
+// 64-bit FNV-1a over the boxes' bytes: picks the bucket; the boxes themselves decide.
+std::uint64_t hashBounds(std::span<const Aabb> bounds) {
+    std::uint64_t hash = 0xcbf29ce484222325ull;
+    const auto* bytes = reinterpret_cast<const unsigned char*>(bounds.data());
+    for (std::size_t i = 0; i < bounds.size_bytes(); ++i) {
+        hash ^= bytes[i];
+        hash *= 0x100000001b3ull;
+    }
+    return hash ^ bounds.size();
+}
+
+bool sameOptions(const BvhBuildOptions& a, const BvhBuildOptions& b) {
+    // threadCount does not change the tree (bvh_build.h).
+    return a.binCount == b.binCount && a.maxLeafSize == b.maxLeafSize &&
+           a.traversalCost == b.traversalCost && a.intersectionCost == b.intersectionCost;
+}
+
+bool sameBounds(std::span<const Aabb> a, std::span<const Aabb> b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size_bytes()) == 0;
+}
+
+FlattenedBvh build(std::span<const Aabb> bounds, const BvhBuildOptions& options) {
+    FlattenedBvh bvh;
+    ScopedPhase buildPhase("BVH build");
+    bvh.tree = buildBvh(bounds, options);
+    buildPhase.end();
+    // Renumbers the tree's leaves so that each wide node's primitives are contiguous.
+    ScopedPhase collapsePhase("BVH collapse");
+    bvh.nodes = flattenWideBvh(bvh.tree);
+    return bvh;
+}
+
+} // namespace
+
+const FlattenedBvh& BvhCache::get(std::span<const Aabb> bounds, const BvhBuildOptions& options) {
+    const std::uint64_t key = hashBounds(bounds);
+    auto [first, last] = entries_.equal_range(key);
+    for (auto it = first; it != last; ++it) {
+        Entry& entry = it->second;
+        if (!sameOptions(entry.options, options) || !sameBounds(entry.bounds, bounds)) continue;
+        entry.used = true;
+        ++stats_.reused;
+        stats_.reusedPrimitives += bounds.size();
+        return entry.bvh;
+    }
+    Entry entry{{bounds.begin(), bounds.end()}, options, build(bounds, options), true};
+    ++stats_.built;
+    return entries_.emplace(key, std::move(entry))->second.bvh;
+}
+
+void BvhCache::endFrame() {
+    std::erase_if(entries_, [](auto& item) { return !item.second.used; });
+    for (auto& item : entries_)
+        item.second.used = false;
+    stats_ = {};
+}
+
+FlattenedBvh buildFlattenedBvh(std::span<const Aabb> bounds, const BvhBuildOptions& options,
+                               BvhCache* cache) {
+    if (cache == nullptr) return build(bounds, options);
+    return cache->get(bounds, options);
+}
+
+} // namespace vkpt
