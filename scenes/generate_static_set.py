@@ -9,8 +9,9 @@ seen by a fixed camera. No light: the default studio environment lights it. Usag
 
     python3 scenes/generate_static_set.py OUT.gltf [N]
 
-writes OUT.gltf and OUT.bin (about 19 MiB at N = 512). Python 3 standard library only,
-deterministic; the output is not committed (generate it where it is needed).
+writes OUT.gltf and OUT.bin (about 12 MiB at N = 512), not committed: generate it where it is
+needed. With no argument it writes the small one the tests render, scenes/test/moving-box.gltf
+(N = 6, its buffer embedded). Python 3 standard library only, deterministic.
 """
 
 import math
@@ -18,7 +19,7 @@ import sys
 from pathlib import Path
 
 from generate_loader_scenes import (FLOAT, UNSIGNED_INT, Gltf, floats, primitive,
-                                    write_external)
+                                    write_embedded, write_external)
 from generate_turntable import cube_faces
 
 TURN_SECONDS = 4.0
@@ -83,8 +84,11 @@ def static_set(n):
 
 
 def main():
+    if len(sys.argv) == 1:
+        write_embedded(Path(__file__).resolve().parent / "test" / "moving-box.gltf", static_set(6))
+        return
     if len(sys.argv) not in (2, 3):
-        sys.exit("usage: generate_static_set.py OUT.gltf [N]")
+        sys.exit("usage: generate_static_set.py [OUT.gltf [N]]")
     n = int(sys.argv[2]) if len(sys.argv) == 3 else 512
     write_external(Path(sys.argv[1]), static_set(n))
 

@@ -99,7 +99,10 @@ SceneSetup setUpScene(const RenderSettings& settings, const std::string& program
     loadOptions.time = settings.animationTime;
     loadOptions.animation = settings.animation;
     loadOptions.variant = settings.variant;
-    loadOptions.keepMovingApart = frames != nullptr && settings.instancing != Instancing::Off;
+    // A still posed at a time is laid out as that frame of the animation is, so that it renders
+    // the very image the frame does (docs/scene-model.md, "Frames").
+    loadOptions.keepMovingApart =
+        settings.animationTime.has_value() && settings.instancing != Instancing::Off;
     std::optional<GltfSceneSource> once;
     std::optional<GltfSceneSource>& read = frames != nullptr ? frames->source : once;
     if (!read) read.emplace(settings.scenePath);

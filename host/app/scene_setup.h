@@ -33,10 +33,10 @@ struct FrameCache {
 };
 
 // `afterLoad`, when given, sees the loaded scene before it is prepared (vkpt starts creating its
-// pipelines there, while the BVH builds). With `frames`, the scene is one frame of an animation:
-// the file and the --env image are read the first time and kept, what moves is kept apart from
-// the still geometry (LoadOptions::keepMovingApart, unless --instancing off) and the still
-// geometry's BVHs are taken from the frames before.
+// pipelines there, while the BVH builds). A scene posed at a time (--time, or a frame) keeps
+// what moves apart from the still geometry (LoadOptions::keepMovingApart, unless --instancing
+// off). With `frames`, the scene is one frame of an animation: the file and the --env image are
+// read the first time and kept, and the still geometry's BVHs are taken from the frames before.
 SceneSetup setUpScene(const RenderSettings& settings, const std::string& program,
                       const std::function<void(const Scene&)>& afterLoad = {},
                       FrameCache* frames = nullptr);

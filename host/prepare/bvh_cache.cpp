@@ -2,6 +2,7 @@
 #include "prepare/bvh_cache.h"
 
 #include <cstring>
+#include <optional>
 
 #include "bvh/bvh_wide.h"
 #include "common/phase_log.h"
@@ -31,20 +32,23 @@ bool sameBounds(std::span<const Aabb> a, std::span<const Aabb> b) {
     return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size_bytes()) == 0;
 }
 
-FlattenedBvh build(std::span<const Aabb> bounds, const BvhBuildOptions& options) {
+FlattenedBvh build(std::span<const Aabb> bounds, const BvhBuildOptions& options,
+                   BuildPhases phases) {
     FlattenedBvh bvh;
-    ScopedPhase buildPhase("BVH build");
+    std::optional<ScopedPhase> phase;
+    if (phases == BuildPhases::Logged) phase.emplace("BVH build");
     bvh.tree = buildBvh(bounds, options);
-    buildPhase.end();
+    phase.reset();
     // Renumbers the tree's leaves so that each wide node's primitives are contiguous.
-    ScopedPhase collapsePhase("BVH collapse");
+    if (phases == BuildPhases::Logged) phase.emplace("BVH collapse");
     bvh.nodes = flattenWideBvh(bvh.tree);
     return bvh;
 }
 
 } // namespace
 
-const FlattenedBvh& BvhCache::get(std::span<const Aabb> bounds, const BvhBuildOptions& options) {
+const FlattenedBvh& BvhCache::get(std::span<const Aabb> bounds, const BvhBuildOptions& options,
+                                  BuildPhases phases) {
     const std::uint64_t key = hashBounds(bounds);
     auto [first, last] = entries_.equal_range(key);
     for (auto it = first; it != last; ++it) {
@@ -55,7 +59,7 @@ const FlattenedBvh& BvhCache::get(std::span<const Aabb> bounds, const BvhBuildOp
         stats_.reusedPrimitives += bounds.size();
         return entry.bvh;
     }
-    Entry entry{{bounds.begin(), bounds.end()}, options, build(bounds, options), true};
+    Entry entry{{bounds.begin(), bounds.end()}, options, build(bounds, options, phases), true};
     ++stats_.built;
     return entries_.emplace(key, std::move(entry))->second.bvh;
 }
@@ -68,9 +72,9 @@ void BvhCache::endFrame() {
 }
 
 FlattenedBvh buildFlattenedBvh(std::span<const Aabb> bounds, const BvhBuildOptions& options,
-                               BvhCache* cache) {
-    if (cache == nullptr) return build(bounds, options);
-    return cache->get(bounds, options);
+                               BvhCache* cache, BuildPhases phases) {
+    if (cache == nullptr) return build(bounds, options, phases);
+    return cache->get(bounds, options, phases);
 }
 
 } // namespace vkpt

@@ -28,11 +28,16 @@ struct BvhCacheStats {
     std::uint64_t reusedPrimitives = 0;
 };
 
+// Whether a build is logged as the phases "BVH build" and "BVH collapse" (a scene's one tree),
+// or not (each of a two-level scene's many bottom levels, timed together by the caller).
+enum class BuildPhases { Logged, Silent };
+
 class BvhCache {
 public:
     // The flattened tree over `bounds` built with `options`: the cached one when an entry has
     // exactly these boxes and options (compared in full, not by a hash alone), else built and kept.
-    const FlattenedBvh& get(std::span<const Aabb> bounds, const BvhBuildOptions& options);
+    const FlattenedBvh& get(std::span<const Aabb> bounds, const BvhBuildOptions& options,
+                            BuildPhases phases);
 
     // Ends a frame: trees this frame did not use are dropped (a moving mesh's old shapes would
     // otherwise pile up), and the counts start again.
@@ -53,6 +58,6 @@ private:
 
 // Builds over `bounds` and flattens, through `cache` when given.
 FlattenedBvh buildFlattenedBvh(std::span<const Aabb> bounds, const BvhBuildOptions& options,
-                               BvhCache* cache);
+                               BvhCache* cache, BuildPhases phases = BuildPhases::Logged);
 
 } // namespace vkpt

@@ -31,8 +31,8 @@ BottomLevel buildBottomLevel(const TriangleSoup& soup, std::span<const SceneSphe
                              const Scene& scene, const PrepareOptions& options, bool withUvs,
                              bool withTangents, PreparedScene& prepared) {
     BottomLevel level;
-    FlattenedBvh bvh =
-        buildFlattenedBvh(primitiveBounds(soup, spheres), options.bvh, options.bvhCache);
+    FlattenedBvh bvh = buildFlattenedBvh(primitiveBounds(soup, spheres), options.bvh,
+                                         options.bvhCache, BuildPhases::Silent);
     level.mesh.tree = std::move(bvh.tree);
     level.nodes = std::move(bvh.nodes);
     GpuPrimitives primitives =
@@ -131,6 +131,7 @@ Aabb placedBounds(const Aabb& own, const glm::dmat4& objectToWorld) {
 void prepareTwoLevel(const Scene& scene, const PrepareOptions& options, bool withUvs,
                      bool withTangents, PreparedScene& prepared) {
     const auto start = std::chrono::steady_clock::now();
+    ScopedPhase bottomPhase("bottom-level BVHs"); // built, or taken from the frame before
     std::vector<BottomLevel> levels;
     std::vector<Placement> placements;
     // The world's own geometry, placed unmoved by an instance of its own.
@@ -151,6 +152,7 @@ void prepareTwoLevel(const Scene& scene, const PrepareOptions& options, bool wit
         placements.push_back(
             {firstMeshLevel + instance.mesh, instance.objectToWorld, instance.material});
     VKPT_ASSERT(prepared.triangles.size() < BVH_MAX_TRIANGLES, "primitive count fits a leaf word");
+    bottomPhase.end();
 
     ScopedPhase topPhase("top-level BVH");
     std::vector<Aabb> bounds;
