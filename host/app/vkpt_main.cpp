@@ -136,10 +136,9 @@ public:
                                          keptScene_);
         if (settings.verbose) {
             const KeptUploadStats& upload = keptScene_.stats();
-            std::fprintf(stderr,
-                         "%s: frame upload: %.1f MiB uploaded, %.1f MiB kept on the device\n",
-                         kProgram, double(upload.uploadedBytes) / 1048576.0,
-                         double(upload.keptBytes) / 1048576.0);
+            std::fprintf(
+                stderr, "%s: frame upload: %.1f KiB uploaded, %.1f KiB kept on the device\n",
+                kProgram, double(upload.uploadedBytes) / 1024.0, double(upload.keptBytes) / 1024.0);
         }
         return result_;
     }

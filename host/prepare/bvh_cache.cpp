@@ -1,6 +1,7 @@
 // bvh_cache.cpp — trees kept by their primitives' exact boxes, one frame to the next.
 #include "prepare/bvh_cache.h"
 
+#include <algorithm>
 #include <cstring>
 #include <optional>
 
@@ -11,15 +12,19 @@ namespace vkpt {
 
 namespace {
 
-// 64-bit FNV-1a over the boxes' bytes: picks the bucket; the boxes themselves decide.
+// The bucket: FNV-1a over the count and at most 64 boxes spread over the list. The comparison of
+// all the boxes decides; the bucket only has to keep different geometries apart, cheaply.
 std::uint64_t hashBounds(std::span<const Aabb> bounds) {
-    std::uint64_t hash = 0xcbf29ce484222325ull;
-    const auto* bytes = reinterpret_cast<const unsigned char*>(bounds.data());
-    for (std::size_t i = 0; i < bounds.size_bytes(); ++i) {
-        hash ^= bytes[i];
-        hash *= 0x100000001b3ull;
+    std::uint64_t hash = 0xcbf29ce484222325ull ^ bounds.size();
+    const std::size_t step = std::max<std::size_t>(bounds.size() / 64, 1);
+    for (std::size_t i = 0; i < bounds.size(); i += step) {
+        const auto* bytes = reinterpret_cast<const unsigned char*>(&bounds[i]);
+        for (std::size_t b = 0; b < sizeof(Aabb); ++b) {
+            hash ^= bytes[b];
+            hash *= 0x100000001b3ull;
+        }
     }
-    return hash ^ bounds.size();
+    return hash;
 }
 
 bool sameOptions(const BvhBuildOptions& a, const BvhBuildOptions& b) {

@@ -28,7 +28,7 @@ for run in $(seq "$runs"); do
             out="$work/$(echo "$program" | tr '/' '_')/$name/$run"
             mkdir -p "$out"
             "$program" --frames 0:8 --fps 24 --spp 1 --res 64 64 --quiet -o "$out/f.####.png" \
-                --stats-json "$out/s.####.json" "${scenes[$name]}" 2> /dev/null
+                --stats-json "$out/s.####.json" "${scenes[$name]}" > /dev/null 2>&1
         done
     done
 done
