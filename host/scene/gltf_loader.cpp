@@ -487,7 +487,7 @@ std::vector<char> movingNodes(const tinygltf::Model& model, int sceneIndex,
             if (child >= 0 && static_cast<std::size_t>(child) < moving.size())
                 moving[static_cast<std::size_t>(child)] = 1;
     });
-    // At least one entry set or not, the vector is non-empty: keeping apart is on.
+    // Sized by the nodes whether any moves or not: the builder takes a non-empty list as "on".
     return moving;
 }
 
