@@ -146,8 +146,8 @@ SceneSetup setUpScene(const RenderSettings& settings, const std::string& program
         const BvhCacheStats& kept = frames->bvhs.stats();
         if (settings.verbose)
             std::fprintf(stderr,
-                         "%s: frame BVHs: %u bottom levels kept from the frame before (%llu "
-                         "primitives), %u built\n",
+                         "%s: frame BVHs: %u taken from the frame before (%llu primitives), %u "
+                         "built\n",
                          program.c_str(), kept.reused,
                          static_cast<unsigned long long>(kept.reusedPrimitives), kept.built);
         frames->bvhs.endFrame();
