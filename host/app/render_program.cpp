@@ -79,8 +79,7 @@ std::vector<glm::vec3> denoisedPixels(Denoiser* denoiser, const RenderPart& part
 // One image: the whole program without frames, one frame of a sequence with them (the executor
 // then started once, before the first).
 int renderImage(const std::string& program, const ProgramOptions& invocation,
-                ProgramExecutor& executor, bool startExecutor,
-                std::optional<GltfSceneSource>* source = nullptr) {
+                ProgramExecutor& executor, bool startExecutor, FrameCache* frames = nullptr) {
     const RenderSettings& settings = invocation.settings;
     // Every output path and a resumed state first: a typo costs a second, not the render.
     checkOutputPaths(settings);
@@ -94,7 +93,7 @@ int renderImage(const std::string& program, const ProgramOptions& invocation,
     // Before the render: the preview shows the denoised image too.
     const std::unique_ptr<Denoiser> denoiser = makeDenoiser(settings, executor);
     SceneSetup setup = setUpScene(
-        settings, program, [&](const Scene& scene) { executor.sceneLoaded(scene, part); }, source);
+        settings, program, [&](const Scene& scene) { executor.sceneLoaded(scene, part); }, frames);
     part.attachScene(setup);
     RenderReport report = sceneReport(program, settings, setup);
     ConvergenceTracker tracker(reference ? &*reference : nullptr,
@@ -126,7 +125,7 @@ int renderImage(const std::string& program, const ProgramOptions& invocation,
 int renderFrames(const std::string& program, const ProgramOptions& invocation,
                  ProgramExecutor& executor) {
     bool started = false;
-    std::optional<GltfSceneSource> source; // the file, read by the first frame rendered
+    FrameCache cache; // the file, the --env image and the still geometry's BVHs
     for (const std::uint32_t frame : framesToRender(invocation.frames)) {
         ProgramOptions each = invocation;
         each.settings = frameSettings(invocation.settings, invocation.frames, frame);
@@ -141,7 +140,7 @@ int renderFrames(const std::string& program, const ProgramOptions& invocation,
         if (started) processPhases().clear();
         std::fprintf(stderr, "%s: frame %u at %.6g s -> %s\n", program.c_str(), frame,
                      *each.settings.animationTime, each.settings.outputPath.c_str());
-        const int code = renderImage(program, each, executor, !started, &source);
+        const int code = renderImage(program, each, executor, !started, &cache);
         started = true;
         if (code != 0) return code;
         // The frame is whole now: the state it resumed from would only make the next run
