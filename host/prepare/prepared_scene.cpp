@@ -92,6 +92,7 @@ PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options) {
                            prepared);
     }
     prepared.materials = makeGpuMaterials(scene.materials);
+    if (features.specularLobes()) prepared.specularLobes = makeGpuSpecularLobes(scene.materials);
     if (features.metallicRoughnessMaterials)
         prepared.albedoTables.assign(gpu::albedoTableEntries.begin(),
                                      gpu::albedoTableEntries.end());

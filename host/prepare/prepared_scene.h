@@ -75,6 +75,10 @@ PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options = {
 double sceneBoundingRadius(const Scene& scene);
 
 std::vector<gpu::Material> makeGpuMaterials(const std::vector<SceneMaterial>& materials);
+// The materials' specular lobe extensions (specular textures, anisotropy, iridescence), in the
+// same order: the specularLobes array, filled only when features.specularLobes().
+std::vector<gpu::SpecularLobeParams>
+makeGpuSpecularLobes(const std::vector<SceneMaterial>& materials);
 
 // Triangles and shading normals in the order of tree.primitiveOrder.
 void makeGpuTriangles(const Scene& scene, const BvhTree& tree,
