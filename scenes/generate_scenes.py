@@ -827,6 +827,71 @@ def no_lights():
     return doc.to_json("No lights", roots)
 
 
+# ---------------------------------------------------------------------------------------------
+# 6b. Single-sided surfaces seen from behind (glTF doubleSided false: back-face culled)
+# ---------------------------------------------------------------------------------------------
+
+# A closed room, x and z in -1..1, y in 0..2, every wall single-sided and facing in, lit by a
+# ceiling quad facing down; the camera stands outside, on +z, and looks through the near wall
+# (whose back faces it) at the inside, as a glTF viewer shows it.
+ROOM_HALF = 1.0
+ROOM_HEIGHT = 2.0
+ROOM_CAMERA = (0.0, 1.0, 3.2)
+ROOM_LIGHT_HALF = 0.3
+ROOM_LIGHT_RADIANCE = 8.0
+ROOM_WALLS = [
+    # name, centre, half_u, half_v, colour
+    ("Floor", (0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (0.0, 0.0, 1.0), (0.8, 0.8, 0.8)),
+    ("Ceiling", (0.0, 2.0, 0.0), (1.0, 0.0, 0.0), (0.0, 0.0, 1.0), (0.8, 0.8, 0.8)),
+    ("Back wall", (0.0, 1.0, -1.0), (1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.8, 0.8, 0.8)),
+    ("Near wall", (0.0, 1.0, 1.0), (1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.8, 0.8, 0.8)),
+    ("Left wall", (-1.0, 1.0, 0.0), (0.0, 0.0, 1.0), (0.0, 1.0, 0.0), (0.63, 0.065, 0.05)),
+    ("Right wall", (1.0, 1.0, 0.0), (0.0, 0.0, 1.0), (0.0, 1.0, 0.0), (0.14, 0.45, 0.091)),
+]
+ROOM_BLOCK = ((0.0, 0.35, -0.3), 0.7)  # centre, edge: a white cube on the floor, faces out
+
+
+def single_sided_room():
+    doc = GltfDocument()
+    roots = []
+    inside = (0.0, ROOM_HEIGHT / 2.0, 0.0)
+    for name, centre, half_u, half_v, colour in ROOM_WALLS:
+        mesh = MeshBuilder()
+        mesh.add_polygon(facing(rectangle(centre, half_u, half_v), sub(inside, centre)))
+        roots.append(doc.add_mesh_node(name, mesh, doc.add_material(name, colour)))
+    light = MeshBuilder()
+    light.add_polygon(facing(rectangle((0.0, ROOM_HEIGHT - 0.01, 0.0), (ROOM_LIGHT_HALF, 0.0, 0.0),
+                                       (0.0, 0.0, ROOM_LIGHT_HALF)), (0.0, -1.0, 0.0)))
+    roots.append(doc.add_mesh_node("Light", light, doc.add_emitter("Light", ROOM_LIGHT_RADIANCE)))
+    centre, edge = ROOM_BLOCK
+    roots.append(doc.add_mesh_node("Block", unit_cube(), doc.add_material("Block", (0.8,) * 3),
+                                   translation=list(centre), scale_xyz=[edge] * 3))
+    camera = doc.add_camera("Camera", SIDES_YFOV)
+    roots.append(doc.add_node("Camera", camera=camera, translation=list(ROOM_CAMERA)))
+    return doc.to_json("Single-sided room", roots)
+
+
+# A closed box, -1..1 on each axis, every face single-sided and facing out (a crate, authored
+# to be seen from outside), with the camera inside and an emitter inside facing up, away from
+# the camera. The camera sees through every face: the image is black, as in a glTF viewer.
+INSIDE_OUT_CAMERA = (0.0, -0.5, 0.5)
+INSIDE_OUT_LIGHT_Y = 0.9
+
+
+def inside_out_box():
+    doc = GltfDocument()
+    box = unit_cube()
+    roots = [doc.add_mesh_node("Crate", box, doc.add_material("Crate", (0.8,) * 3),
+                               scale_xyz=[2.0] * 3)]
+    light = MeshBuilder()
+    light.add_polygon(facing(rectangle((0.0, INSIDE_OUT_LIGHT_Y, 0.0), (0.3, 0.0, 0.0),
+                                       (0.0, 0.0, 0.3)), (0.0, 1.0, 0.0)))
+    roots.append(doc.add_mesh_node("Light", light, doc.add_emitter("Light", 5.0)))
+    camera = doc.add_camera("Camera", SIDES_YFOV)
+    roots.append(doc.add_node("Camera", camera=camera, translation=list(INSIDE_OUT_CAMERA)))
+    return doc.to_json("Inside-out box", roots)
+
+
 def no_camera():
     doc = GltfDocument()
     roots = floor_and_light(doc, 1.0, QLF_LIGHT_HALF, QLF_LIGHT_HEIGHT, QLF_RADIANCE)
@@ -1323,6 +1388,33 @@ def check_no_lights(scene):
     scene.camera()
 
 
+def faces_away_from(scene, name, point):
+    """Whether every triangle of node `name` has its back toward `point`."""
+    return all(dot(triangle_normal(c), sub(point, centroid(c))) < 0.0
+               for c, _ in scene.world_triangles(name))
+
+
+def check_single_sided_room(scene):
+    position, forward, _, _ = scene.camera()
+    scene.expect(forward == (0.0, 0.0, -1.0), "camera axes")
+    inside = (0.0, ROOM_HEIGHT / 2.0, 0.0)
+    for name, _, _, _, _ in ROOM_WALLS:
+        scene.expect(not faces_away_from(scene, name, inside), f"{name}: does not face in")
+    scene.expect(faces_away_from(scene, "Near wall", position), "near wall faces the camera")
+    scene.expect(not any(m.get("doubleSided", False) for m in scene.doc["materials"]),
+                 "a double-sided material")
+    for corners, _ in scene.world_triangles("Light"):
+        scene.expect(triangle_normal(corners)[1] < -0.999999, "light does not face down")
+
+
+def check_inside_out_box(scene):
+    position, _, _, _ = scene.camera()
+    scene.expect(faces_away_from(scene, "Crate", position), "a crate face faces the camera")
+    scene.expect(faces_away_from(scene, "Light", position), "the light faces the camera")
+    scene.expect(not any(m.get("doubleSided", False) for m in scene.doc["materials"]),
+                 "a double-sided material")
+
+
 def check_no_camera(scene):
     scene.expect("cameras" not in scene.doc and not scene.camera_nodes, "has a camera")
     scene.expect(any(radiance(m) != [0.0] * 3 for m in scene.doc["materials"]), "no emitter")
@@ -1479,6 +1571,8 @@ SCENES = [
     ("test/single-triangle.gltf", single_triangle, check_single_triangle),
     ("test/no-lights.gltf", no_lights, check_no_lights),
     ("test/no-camera.gltf", no_camera, check_no_camera),
+    ("test/single-sided-room.gltf", single_sided_room, check_single_sided_room),
+    ("test/inside-out-box.gltf", inside_out_box, check_inside_out_box),
     ("test/deep-bvh.gltf", deep_bvh, check_deep_bvh),
     ("test/hierarchy.gltf", hierarchy, check_hierarchy),
 ]

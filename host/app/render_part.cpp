@@ -7,6 +7,7 @@
 #include "app/live_preview.h"
 #include "app/output_checks.h"
 #include "common/errors.h"
+#include "common/phase_log.h"
 #include "driver/denoised_output.h"
 #include "image/image_file.h"
 #include "image/image_io.h"
@@ -46,8 +47,10 @@ RenderPart::RenderPart(std::string program, const RenderSettings& settings,
 
 void RenderPart::attachScene(const SceneSetup& setup) {
     setup_ = &setup;
+    ScopedPhase hashPhase("scene hash");
     identity_ = {sceneContentHash(setup.prepared, setup.camera), settingsKey(settings_),
                  settings_.seed, settings_.width, settings_.height};
+    hashPhase.end();
     if (!resumed_) return;
     checkResumable(*resumed_);
     const std::vector<SampleRange>& ranges = resumed_->regions.front().ranges;

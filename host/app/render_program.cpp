@@ -16,6 +16,7 @@
 #include "denoise/cpu_denoiser.h"
 #include "driver/denoised_output.h"
 #include "image/image_io.h"
+#include "state/render_state.h"
 
 namespace vkpt {
 
@@ -76,11 +77,35 @@ std::vector<glm::vec3> denoisedPixels(Denoiser* denoiser, const RenderPart& part
     return denoiseWindow(*denoiser, part.plan().crop, result.records, result.features);
 }
 
+// Fewer lit pixels than this share of those rendered: almost no camera path reached light.
+constexpr double kLitPixelShareToWarn = 0.01;
+
+// An image (nearly) black although the scene has light is most often geometry seen from the
+// side that does not show: single-sided surfaces seen from behind (the camera passes them,
+// shared/camera_culling.h) or emitters whose front faces away. Said once per process (an
+// animation's frames would repeat it), after the render, from the pixels' records.
+void warnIfAlmostNothingIsLit(const std::string& program, const RenderRunResult& result) {
+    static bool warned = false;
+    if (warned) return;
+    std::size_t rendered = 0, lit = 0;
+    for (const PixelRecord& record : result.records) {
+        if (record.count == 0) continue;
+        ++rendered;
+        if (record.mean != glm::dvec3(0.0)) ++lit;
+    }
+    if (rendered == 0 || double(lit) >= kLitPixelShareToWarn * double(rendered)) return;
+    warned = true;
+    std::fprintf(stderr,
+                 "%s: warning: %zu of %zu pixels received any light; check for single-sided "
+                 "surfaces seen from behind (glTF doubleSided false: the camera sees through "
+                 "their back) and for emitters or lights facing away from what the camera sees\n",
+                 program.c_str(), lit, rendered);
+}
+
 // One image: the whole program without frames, one frame of a sequence with them (the executor
 // then started once, before the first).
 int renderImage(const std::string& program, const ProgramOptions& invocation,
-                ProgramExecutor& executor, bool startExecutor,
-                std::optional<GltfSceneSource>* source = nullptr) {
+                ProgramExecutor& executor, bool startExecutor, FrameCache* frames = nullptr) {
     const RenderSettings& settings = invocation.settings;
     // Every output path and a resumed state first: a typo costs a second, not the render.
     checkOutputPaths(settings);
@@ -94,7 +119,7 @@ int renderImage(const std::string& program, const ProgramOptions& invocation,
     // Before the render: the preview shows the denoised image too.
     const std::unique_ptr<Denoiser> denoiser = makeDenoiser(settings, executor);
     SceneSetup setup = setUpScene(
-        settings, program, [&](const Scene& scene) { executor.sceneLoaded(scene, part); }, source);
+        settings, program, [&](const Scene& scene) { executor.sceneLoaded(scene, part); }, frames);
     part.attachScene(setup);
     RenderReport report = sceneReport(program, settings, setup);
     ConvergenceTracker tracker(reference ? &*reference : nullptr,
@@ -105,6 +130,7 @@ int renderImage(const std::string& program, const ProgramOptions& invocation,
     const auto start = std::chrono::steady_clock::now();
     const RenderRunResult result = executor.render(setup, renderSettings, options);
     const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
+    warnIfAlmostNothingIsLit(program, result);
     const std::vector<glm::vec3> denoised = denoisedPixels(denoiser.get(), part, result);
     ScopedPhase writePhase("write");
     part.writeResults(result.output, result.records, result.features, denoised, result.interrupted);
@@ -126,7 +152,7 @@ int renderImage(const std::string& program, const ProgramOptions& invocation,
 int renderFrames(const std::string& program, const ProgramOptions& invocation,
                  ProgramExecutor& executor) {
     bool started = false;
-    std::optional<GltfSceneSource> source; // the file, read by the first frame rendered
+    FrameCache cache; // the file, the --env image and the still geometry's BVHs
     for (const std::uint32_t frame : framesToRender(invocation.frames)) {
         ProgramOptions each = invocation;
         each.settings = frameSettings(invocation.settings, invocation.frames, frame);
@@ -141,7 +167,7 @@ int renderFrames(const std::string& program, const ProgramOptions& invocation,
         if (started) processPhases().clear();
         std::fprintf(stderr, "%s: frame %u at %.6g s -> %s\n", program.c_str(), frame,
                      *each.settings.animationTime, each.settings.outputPath.c_str());
-        const int code = renderImage(program, each, executor, !started, &source);
+        const int code = renderImage(program, each, executor, !started, &cache);
         started = true;
         if (code != 0) return code;
         // The frame is whole now: the state it resumed from would only make the next run

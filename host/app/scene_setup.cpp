@@ -90,8 +90,7 @@ void listAnimations(const Scene& scene, const RenderSettings& settings,
 } // namespace
 
 SceneSetup setUpScene(const RenderSettings& settings, const std::string& program,
-                      const std::function<void(const Scene&)>& afterLoad,
-                      std::optional<GltfSceneSource>* source) {
+                      const std::function<void(const Scene&)>& afterLoad, FrameCache* frames) {
     SceneSetup setup;
     auto start = std::chrono::steady_clock::now();
     ScopedPhase loadPhase("load");
@@ -100,15 +99,24 @@ SceneSetup setUpScene(const RenderSettings& settings, const std::string& program
     loadOptions.time = settings.animationTime;
     loadOptions.animation = settings.animation;
     loadOptions.variant = settings.variant;
+    // A still posed at a time is laid out as that frame of the animation is, so that it renders
+    // the very image the frame does (docs/scene-model.md, "Frames").
+    loadOptions.keepMovingApart =
+        settings.animationTime.has_value() && settings.instancing != Instancing::Off;
     std::optional<GltfSceneSource> once;
-    std::optional<GltfSceneSource>& read = source != nullptr ? *source : once;
+    std::optional<GltfSceneSource>& read = frames != nullptr ? frames->source : once;
     if (!read) read.emplace(settings.scenePath);
     Scene scene = read->pose(loadOptions);
     if (settings.verbose) {
         listAnimations(scene, settings, program);
         listVariants(scene, program);
     }
-    scene.environment = loadEnvironment(settings);
+    if (frames == nullptr) {
+        scene.environment = loadEnvironment(settings);
+    } else {
+        if (!frames->environment) frames->environment = loadEnvironment(settings);
+        scene.environment = *frames->environment;
+    }
     lightIfUnlit(scene, settings, program);
     loadPhase.end();
     setup.loadSeconds =
@@ -118,7 +126,9 @@ SceneSetup setUpScene(const RenderSettings& settings, const std::string& program
     setup.camera = makeGpuCamera(camera, settings.width, settings.height);
     if (afterLoad) afterLoad(scene);
     ScopedPhase preparePhase("prepare");
-    setup.prepared = prepareScene(scene, {{}, settings.general, settings.lightSampler});
+    PrepareOptions prepareOptions{{}, settings.general, settings.lightSampler};
+    prepareOptions.bvhCache = frames != nullptr ? &frames->bvhs : nullptr;
+    setup.prepared = prepareScene(scene, prepareOptions);
     preparePhase.end();
     setup.placedTriangles = scene.placedTriangleCount();
     setup.instances = scene.instances.size();
@@ -132,6 +142,16 @@ SceneSetup setUpScene(const RenderSettings& settings, const std::string& program
                  instancingNote(scene).c_str(), scene.spheres.size(),
                  setup.prepared.emitters.size(), bvh.nodeCount, bvh.maxDepth, double(bvh.sahCost),
                  bvh.buildSeconds);
+    if (frames != nullptr) {
+        const BvhCacheStats& kept = frames->bvhs.stats();
+        if (settings.verbose)
+            std::fprintf(stderr,
+                         "%s: frame BVHs: %u taken from the frame before (%llu primitives), %u "
+                         "built\n",
+                         program.c_str(), kept.reused,
+                         static_cast<unsigned long long>(kept.reusedPrimitives), kept.built);
+        frames->bvhs.endFrame();
+    }
     if (settings.verbose)
         std::fprintf(stderr, "%s: features: %s%s\n", program.c_str(),
                      describeFeatures(setup.prepared.usedFeatures).c_str(),

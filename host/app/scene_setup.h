@@ -7,6 +7,7 @@
 #include <string>
 
 #include "common/render_settings.h"
+#include "prepare/bvh_cache.h"
 #include "prepare/prepared_scene.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene.h"
@@ -22,12 +23,23 @@ struct SceneSetup {
     std::size_t meshes = 0;            // meshes kept once
 };
 
+// What an animation's frames keep from one to the next (docs/scene-model.md, "Frames"): the
+// file, read by the first frame and posed by every one; the --env image, read once; and the
+// bottom-level BVHs of the geometry that did not move.
+struct FrameCache {
+    std::optional<GltfSceneSource> source;
+    std::optional<SceneEnvironment> environment;
+    BvhCache bvhs;
+};
+
 // `afterLoad`, when given, sees the loaded scene before it is prepared (vkpt starts creating its
-// pipelines there, while the BVH builds). With `source`, the file is read into it the first
-// time and posed from it every time (an animation's frames read their file once).
+// pipelines there, while the BVH builds). A scene posed at a time (--time, or a frame) keeps
+// what moves apart from the still geometry (LoadOptions::keepMovingApart, unless --instancing
+// off). With `frames`, the scene is one frame of an animation: the file and the --env image are
+// read the first time and kept, and the still geometry's BVHs are taken from the frames before.
 SceneSetup setUpScene(const RenderSettings& settings, const std::string& program,
                       const std::function<void(const Scene&)>& afterLoad = {},
-                      std::optional<GltfSceneSource>* source = nullptr);
+                      FrameCache* frames = nullptr);
 
 // main()'s one catch: one line on stderr and the exit code of DESIGN's error contract
 // (1 bad input, 2 Vulkan or device failure, 3 internal error).

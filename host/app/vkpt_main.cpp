@@ -126,8 +126,20 @@ public:
         options.timeKernels = invocation_.kernelStats;
         options.slotCount = invocation_.pathSlots;
         options.earlyPipelines = earlyPipelines_ ? &*earlyPipelines_ : nullptr;
-        result_ =
-            renderWavefrontReleasing(*context_, setup.prepared, setup.camera, settings, options);
+        if (!invocation_.frames.any()) {
+            result_ = renderWavefrontReleasing(*context_, setup.prepared, setup.camera, settings,
+                                               options);
+            return result_;
+        }
+        // An animation's frame: what the frame before left on the device stays there.
+        result_ = renderWavefrontKeeping(*context_, setup.prepared, setup.camera, settings, options,
+                                         keptScene_);
+        if (settings.verbose) {
+            const KeptUploadStats& upload = keptScene_.stats();
+            std::fprintf(
+                stderr, "%s: frame upload: %.1f KiB uploaded, %.1f KiB kept on the device\n",
+                kProgram, double(upload.uploadedBytes) / 1024.0, double(upload.keptBytes) / 1024.0);
+        }
         return result_;
     }
 
@@ -154,6 +166,7 @@ private:
     const Invocation& invocation_;
     std::optional<GpuContext> context_;
     std::optional<EarlyPipelines> earlyPipelines_; // destroyed before the context
+    KeptDeviceScene keptScene_;                    // an animation's arrays, between its frames
     WavefrontResult result_;
 };
 

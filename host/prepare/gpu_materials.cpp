@@ -87,6 +87,17 @@ std::vector<gpu::Material> makeGpuMaterials(const std::vector<SceneMaterial>& ma
         g.clearcoatNormalScale = m.clearcoatNormalScale;
         g.sheenColorTexture = makeSlot(m.sheenColorTexture);
         g.sheenRoughnessTexture = makeSlot(m.sheenRoughnessTexture);
+        result.push_back(g);
+    }
+    return result;
+}
+
+std::vector<gpu::SpecularLobeParams>
+makeGpuSpecularLobes(const std::vector<SceneMaterial>& materials) {
+    std::vector<gpu::SpecularLobeParams> result;
+    result.reserve(materials.size());
+    for (const SceneMaterial& m : materials) {
+        gpu::SpecularLobeParams g{};
         g.specularTexture = makeSlot(m.specularTexture);
         g.specularColorTexture = makeSlot(m.specularColorTexture);
         g.anisotropyStrength = m.hasAnisotropy() ? m.anisotropyStrength : 0.0f;

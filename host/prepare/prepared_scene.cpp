@@ -7,6 +7,7 @@
 #include "bvh/bvh_wide.h"
 #include "common/errors.h"
 #include "common/phase_log.h"
+#include "prepare/bvh_cache.h"
 #include "prepare/emitters.h"
 #include "prepare/environment_map.h"
 #include "prepare/gpu_materials.h"
@@ -46,18 +47,13 @@ void prepareSingleLevel(const Scene& scene, const PrepareOptions& options, bool 
                         bool withTangents, PreparedScene& prepared) {
     const std::size_t primitiveCount = scene.triangleCount() + scene.spheres.size();
     VKPT_ASSERT(primitiveCount < BVH_MAX_TRIANGLES, "primitive count fits a leaf word");
-    ScopedPhase buildPhase("BVH build");
     auto start = std::chrono::steady_clock::now();
-    prepared.tree = buildBvh(primitiveBounds(scene), options.bvh);
+    FlattenedBvh bvh = buildFlattenedBvh(primitiveBounds(scene), options.bvh, options.bvhCache);
     std::chrono::duration<double> buildTime = std::chrono::steady_clock::now() - start;
-    buildPhase.end();
+    prepared.tree = std::move(bvh.tree);
+    prepared.nodes = std::move(bvh.nodes);
     prepared.bvhStats = computeBvhStats(prepared.tree, options.bvh);
     prepared.bvhStats.buildSeconds = buildTime.count();
-    // Renumbers the tree's leaves so that each wide node's primitives are contiguous; the
-    // primitive arrays below follow that order.
-    ScopedPhase collapsePhase("BVH collapse");
-    prepared.nodes = flattenWideBvh(prepared.tree);
-    collapsePhase.end();
 
     GpuPrimitives primitives = makeGpuPrimitives(scene, prepared.tree, withUvs, withTangents);
     prepared.triangles = std::move(primitives.records);
@@ -96,6 +92,7 @@ PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options) {
                            prepared);
     }
     prepared.materials = makeGpuMaterials(scene.materials);
+    if (features.specularLobes()) prepared.specularLobes = makeGpuSpecularLobes(scene.materials);
     if (features.metallicRoughnessMaterials)
         prepared.albedoTables.assign(gpu::albedoTableEntries.begin(),
                                      gpu::albedoTableEntries.end());

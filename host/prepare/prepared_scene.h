@@ -17,6 +17,8 @@
 
 namespace vkpt {
 
+class BvhCache;
+
 // A bottom-level BVH of a two-level scene: the world's own geometry or a stored mesh, in its own
 // space. Its nodes and primitives are ranges of PreparedScene::nodes and ::triangles.
 struct PreparedMesh {
@@ -61,6 +63,9 @@ struct PrepareOptions {
     // --light-sampler: how several emitters are chosen (the light BVH or power; auto: the light
     // BVH from kLightTreeMinEmitters on).
     LightSampler lightSampler = LightSampler::Auto;
+    // An animation's frames: bottom-level trees kept from the frames before, taken again for
+    // geometry whose primitives' boxes did not change (bvh_cache.h); nullptr: every tree built.
+    BvhCache* bvhCache = nullptr;
 };
 
 PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options = {});
@@ -70,6 +75,10 @@ PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options = {
 double sceneBoundingRadius(const Scene& scene);
 
 std::vector<gpu::Material> makeGpuMaterials(const std::vector<SceneMaterial>& materials);
+// The materials' specular lobe extensions (specular textures, anisotropy, iridescence), in the
+// same order: the specularLobes array, filled only when features.specularLobes().
+std::vector<gpu::SpecularLobeParams>
+makeGpuSpecularLobes(const std::vector<SceneMaterial>& materials);
 
 // Triangles and shading normals in the order of tree.primitiveOrder.
 void makeGpuTriangles(const Scene& scene, const BvhTree& tree,

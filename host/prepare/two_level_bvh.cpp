@@ -8,6 +8,8 @@
 
 #include "bvh/bvh_wide.h"
 #include "common/errors.h"
+#include "common/phase_log.h"
+#include "prepare/bvh_cache.h"
 #include "prepare/gpu_primitives.h"
 
 namespace vkpt {
@@ -29,8 +31,10 @@ BottomLevel buildBottomLevel(const TriangleSoup& soup, std::span<const SceneSphe
                              const Scene& scene, const PrepareOptions& options, bool withUvs,
                              bool withTangents, PreparedScene& prepared) {
     BottomLevel level;
-    level.mesh.tree = buildBvh(primitiveBounds(soup, spheres), options.bvh);
-    level.nodes = flattenWideBvh(level.mesh.tree);
+    FlattenedBvh bvh = buildFlattenedBvh(primitiveBounds(soup, spheres), options.bvh,
+                                         options.bvhCache, BuildPhases::Silent);
+    level.mesh.tree = std::move(bvh.tree);
+    level.nodes = std::move(bvh.nodes);
     GpuPrimitives primitives =
         makeGpuPrimitives(soup, spheres, scene.materials, level.mesh.tree, withUvs, withTangents);
     level.mesh.firstPrimitive = static_cast<std::uint32_t>(prepared.triangles.size());
@@ -127,6 +131,7 @@ Aabb placedBounds(const Aabb& own, const glm::dmat4& objectToWorld) {
 void prepareTwoLevel(const Scene& scene, const PrepareOptions& options, bool withUvs,
                      bool withTangents, PreparedScene& prepared) {
     const auto start = std::chrono::steady_clock::now();
+    ScopedPhase bottomPhase("bottom-level BVHs"); // built, or taken from the frame before
     std::vector<BottomLevel> levels;
     std::vector<Placement> placements;
     // The world's own geometry, placed unmoved by an instance of its own.
@@ -147,7 +152,9 @@ void prepareTwoLevel(const Scene& scene, const PrepareOptions& options, bool wit
         placements.push_back(
             {firstMeshLevel + instance.mesh, instance.objectToWorld, instance.material});
     VKPT_ASSERT(prepared.triangles.size() < BVH_MAX_TRIANGLES, "primitive count fits a leaf word");
+    bottomPhase.end();
 
+    ScopedPhase topPhase("top-level BVH");
     std::vector<Aabb> bounds;
     bounds.reserve(placements.size());
     for (const Placement& p : placements)
@@ -163,6 +170,7 @@ void prepareTwoLevel(const Scene& scene, const PrepareOptions& options, bool wit
         prepared.instances.push_back(
             makeGpuInstance(p.objectToWorld, levels[p.level].mesh.rootNode, p.level, p.material));
     }
+    topPhase.end();
 
     prepared.bvhStats = computeBvhStats(prepared.instanceTree, top);
     std::uint32_t deepestBottom = 0;

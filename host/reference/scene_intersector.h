@@ -17,8 +17,9 @@ namespace vkpt {
 class SceneIntersector {
 public:
     virtual ~SceneIntersector() = default;
-    // The nearest hit at t in (0, tMax) that the alpha test accepts.
-    virtual ClosestHit closestHit(const glm::vec3& origin, const glm::vec3& direction) = 0;
+    // The nearest hit at t in (tMin, VKPT_FAR) that the alpha test accepts.
+    virtual ClosestHit closestHit(const glm::vec3& origin, const glm::vec3& direction,
+                                  float tMin) = 0;
     // True when something lies at t in (0, tMax) (alpha test included).
     virtual bool occluded(const glm::vec3& origin, const glm::vec3& direction, float tMax) = 0;
     // Traversal work so far; zero where the implementation does not count it (Embree).

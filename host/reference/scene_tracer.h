@@ -1,6 +1,8 @@
 // scene_tracer.h — what the integrators trace through: one thread's SceneIntersector, with
 // the rays counted by kind for the statistics. Alpha-masked surfaces let rays through where
-// their alpha is below the cutoff, for every kind of ray (the intersector's alpha test).
+// their alpha is below the cutoff, for every kind of ray (the intersector's alpha test); camera
+// rays pass the back faces of single-sided opaque materials (shared/camera_culling.h), as the
+// device's trace_closest does.
 #pragma once
 
 #include <memory>
@@ -8,6 +10,7 @@
 #include "common/render_stats.h"
 #include "prepare/prepared_scene_view.h"
 #include "reference/scene_intersector.h"
+#include "shared/camera_culling.h"
 #include "shared/surface.h"
 
 namespace vkpt {
@@ -23,7 +26,16 @@ public:
 
     ClosestHit closest(const glm::vec3& origin, const glm::vec3& direction, RayKind kind) {
         (kind == RayKind::Camera ? rays_.camera : rays_.extension) += 1;
-        return intersector_->closestHit(origin, direction);
+        ClosestHit hit = intersector_->closestHit(origin, direction, 0.0f);
+        if (kind != RayKind::Camera) return hit;
+        // A culled back face: the same ray again, beyond it (t > its t).
+        for (std::uint32_t culled = 0;
+             culled < CAMERA_CULLED_FACES_MAX && hit.hit &&
+             gpu::hiddenFromCamera(hit.triangle, hit.instance, {hit.t, hit.u, hit.v, true}, origin,
+                                   direction, view_);
+             ++culled)
+            hit = intersector_->closestHit(origin, direction, hit.t);
+        return hit;
     }
     // True when something lies strictly between origin and origin + tMax·direction.
     bool occluded(const glm::vec3& origin, const glm::vec3& direction, float tMax) {

@@ -13,8 +13,9 @@ class LayoutIntersector final : public SceneIntersector {
 public:
     LayoutIntersector(const Bvh& bvh, const HitFilter* filter) : bvh_(bvh), filter_(filter) {}
 
-    ClosestHit closestHit(const glm::vec3& origin, const glm::vec3& direction) override {
-        RayQuery query{origin, direction, 0.0f, VKPT_FAR, filter_};
+    ClosestHit closestHit(const glm::vec3& origin, const glm::vec3& direction,
+                          float tMin) override {
+        RayQuery query{origin, direction, tMin, VKPT_FAR, filter_};
         return kClosest(bvh_, query, &counters_);
     }
 

@@ -87,10 +87,12 @@ void checkScene(const PreparedScene& scene) {
 
 // The device memory the arrays take, before anything is allocated: a scene that cannot fit
 // fails in one line naming both sizes instead of at whichever buffer comes last.
-void checkDeviceMemory(const GpuContext& context, const PreparedScene& scene) {
+void checkDeviceMemory(const GpuContext& context, const PreparedScene& scene,
+                       std::uint64_t onDevice) {
     std::uint64_t needed = 0;
     for (const SceneArrayDesc& desc : sceneArrayList())
         needed += desc.bytes(scene).size();
+    needed -= std::min(needed, onDevice);
     const VkDeviceSize heap = context.limits().deviceLocalHeapSize;
     const std::uint64_t inUse = context.memoryStats().bytesInUse;
     if (heap == 0 || needed <= heap - std::min<std::uint64_t>(heap, inUse)) return;
@@ -102,9 +104,12 @@ void checkDeviceMemory(const GpuContext& context, const PreparedScene& scene) {
                       VK_ERROR_OUT_OF_DEVICE_MEMORY);
 }
 
-DeviceScene startUpload(GpuContext& context, const PreparedScene& scene) {
+} // namespace
+
+DeviceScene beginSceneUpload(GpuContext& context, const PreparedScene& scene,
+                             std::uint64_t onDevice) {
     checkScene(scene);
-    checkDeviceMemory(context, scene);
+    checkDeviceMemory(context, scene, onDevice);
     DeviceScene d{makeAbsentData(context),
                   {},
                   static_cast<std::uint32_t>(scene.emitters.size()),
@@ -112,8 +117,6 @@ DeviceScene startUpload(GpuContext& context, const PreparedScene& scene) {
     d.arrays.reserve(sceneArrayList().size());
     return d;
 }
-
-} // namespace
 
 void DeviceScene::bind(BufferTable& table) const {
     for (const SceneArray& array : arrays) {
@@ -142,14 +145,14 @@ std::uint64_t DeviceScene::totalBytes() const {
 }
 
 DeviceScene uploadScene(GpuContext& context, const PreparedScene& scene) {
-    DeviceScene d = startUpload(context, scene);
+    DeviceScene d = beginSceneUpload(context, scene);
     for (const SceneArrayDesc& desc : sceneArrayList())
         d.arrays.push_back(uploadSceneArray(context, desc, desc.bytes(scene)));
     return d;
 }
 
 DeviceScene uploadSceneAndRelease(GpuContext& context, PreparedScene& scene) {
-    DeviceScene d = startUpload(context, scene);
+    DeviceScene d = beginSceneUpload(context, scene);
     for (const SceneArrayDesc& desc : sceneArrayList()) {
         d.arrays.push_back(uploadSceneArray(context, desc, desc.bytes(scene)));
         desc.release(scene);

@@ -42,6 +42,12 @@ struct DeviceScene {
 // internal error here rather than a hang there.
 DeviceScene uploadScene(GpuContext& context, const PreparedScene& scene);
 
+// uploadScene's checks and an empty DeviceScene (its placeholder made) for a caller that uploads
+// the arrays itself (kept_scene.h); `onDevice` bytes of the scene's arrays are already on the
+// device, kept from a frame before, and the memory check does not count them twice.
+DeviceScene beginSceneUpload(GpuContext& context, const PreparedScene& scene,
+                             std::uint64_t onDevice = 0);
+
 // The same, freeing each array's host copy once it is on the device (vkpt's own path, where
 // nothing on the host reads them again), so that the host holds the scene only once.
 DeviceScene uploadSceneAndRelease(GpuContext& context, PreparedScene& scene);

@@ -176,6 +176,9 @@ public:
     // The driver's loop, between the set-up and the result.
     WavefrontResult run();
 
+    // The scene's device arrays, for the next frame of an animation to keep from (after run).
+    DeviceScene takeScene() { return std::move(scene_); }
+
     std::uint32_t samplesDone() const override { return samplesDone_; }
     std::uint32_t budget() const override { return budget_; }
     std::uint64_t activePixels() const override { return activePixels_; }
@@ -451,6 +454,22 @@ WavefrontResult renderWavefrontReleasing(GpuContext& context, PreparedScene& sce
     };
     WavefrontRenderer renderer(context, release, scene, camera, settings, options);
     return renderer.run();
+}
+
+WavefrontResult renderWavefrontKeeping(GpuContext& context, PreparedScene& scene,
+                                       const gpu::Camera& camera, const RenderSettings& settings,
+                                       const WavefrontOptions& options, KeptDeviceScene& kept) {
+    auto upload = [&] {
+        scene.tree = {};
+        scene.meshes = {};
+        scene.instanceTree = {};
+        return kept.upload(context, scene);
+    };
+    // The upload takes what `kept` held: a frame that fails leaves nothing for the next to keep.
+    WavefrontRenderer renderer(context, upload, scene, camera, settings, options);
+    WavefrontResult result = renderer.run();
+    kept.keep(renderer.takeScene());
+    return result;
 }
 
 } // namespace vkpt

@@ -18,6 +18,7 @@
 #include "driver/render_run.h"
 #include "image/render_output.h"
 #include "prepare/prepared_scene.h"
+#include "render/kept_scene.h"
 #include "render/wavefront_kernels.h"
 #include "scene/scene_features.h"
 #include "state/sample_plan.h"
@@ -59,5 +60,12 @@ WavefrontResult renderWavefront(GpuContext& context, const PreparedScene& scene,
 WavefrontResult renderWavefrontReleasing(GpuContext& context, PreparedScene& scene,
                                          const gpu::Camera& camera, const RenderSettings& settings,
                                          const WavefrontOptions& options = {});
+
+// renderWavefrontReleasing for one frame of an animation (docs/scene-model.md, "Frames"): the
+// arrays go to the device through `kept`, which holds the frame before's and uploads only what
+// changed, and gets this frame's back once it has rendered.
+WavefrontResult renderWavefrontKeeping(GpuContext& context, PreparedScene& scene,
+                                       const gpu::Camera& camera, const RenderSettings& settings,
+                                       const WavefrontOptions& options, KeptDeviceScene& kept);
 
 } // namespace vkpt

@@ -65,11 +65,13 @@ bool canInstance(const glm::dmat4& transform) {
 // Scene::instances.
 class SceneBuilder {
 public:
+    // `movingNodes` (per node, empty for none): the nodes an animation moves, whose meshes are
+    // kept apart from the still geometry (LoadOptions::keepMovingApart).
     SceneBuilder(const tinygltf::Model& model, Scene& scene, gltf::Texcoords texcoords,
                  const gltf::InstancingPlan& plan, const gltf::ScenePose* pose,
-                 const gltf::NodeWorlds& worlds)
+                 const gltf::NodeWorlds& worlds, std::vector<char> movingNodes)
         : model_(model), scene_(scene), texcoords_(texcoords), plan_(plan), pose_(pose),
-          worlds_(worlds), skinJoints_(model.skins.size()),
+          worlds_(worlds), movingNodes_(std::move(movingNodes)), skinJoints_(model.skins.size()),
           withTangents_(std::any_of(scene.materials.begin(), scene.materials.end(),
                                     [](const SceneMaterial& m) { return m.needsTangents(); })),
           meshSlots_(model.meshes.size()) {}
@@ -100,17 +102,23 @@ private:
         if (deformation.joints != nullptr) {
             // The skin places the vertices; the node's own transform is ignored (glTF 2.0,
             // section 3.7.3.1), and its instances too: one skinned copy.
+            if (!movingNodes_.empty()) {
+                appendPosedMesh(meshIndex, glm::dmat4(1.0), deformation);
+                return;
+            }
             appendPrimitives(meshIndex, glm::dmat4(1.0), PrimitiveKinds::All, scene_, deformation);
             return;
         }
+        const bool nodeMoves =
+            !movingNodes_.empty() && movingNodes_[static_cast<std::size_t>(nodeIndex)] != 0;
         const std::optional<std::vector<glm::dmat4>> local =
             gltf::meshInstanceTransforms(model_, nodeIndex);
         if (!local) {
-            placeMesh(meshIndex, world, deformation);
+            placeMesh(meshIndex, world, deformation, nodeMoves);
             return;
         }
         for (const glm::dmat4& transform : *local)
-            placeMesh(meshIndex, world * transform, deformation);
+            placeMesh(meshIndex, world * transform, deformation, nodeMoves);
     }
 
     // The node's morph weights and skin; a mesh moved by either is flattened at this placement
@@ -145,9 +153,19 @@ private:
                            [](double w) { return w != 0.0; });
     }
 
-    void placeMesh(int meshIndex, const glm::dmat4& placement,
-                   const gltf::Deformation& deformation) {
-        if (!plan_.isInstanced(meshIndex) || !canInstance(placement) || moves(deformation)) {
+    // `nodeMoves`: an animation moves the placement (keepMovingApart), which then places the
+    // mesh's one copy by an instance whatever the plan says, so that the next frame only moves
+    // the instance; a deformed mesh there is a posed mesh of its own.
+    void placeMesh(int meshIndex, const glm::dmat4& placement, const gltf::Deformation& deformation,
+                   bool nodeMoves) {
+        // Any morph weights, zero or not: a frame whose weights are all zero keeps the layout.
+        if (!movingNodes_.empty() && !deformation.morphWeights.empty()) {
+            appendPosedMesh(meshIndex, placement, deformation);
+            return;
+        }
+        const bool instanced =
+            plan_.isInstanced(meshIndex) || (nodeMoves && plan_.geometryOf(meshIndex) >= 0);
+        if (!instanced || !canInstance(placement) || moves(deformation)) {
             appendPrimitives(meshIndex, placement, PrimitiveKinds::All, scene_, deformation);
             return;
         }
@@ -178,6 +196,23 @@ private:
             sole = material;
         }
         return sole.value_or(SceneInstance::kKeepMaterial);
+    }
+
+    // A skinned or morphed mesh of a frame (keepMovingApart): its posed triangles as a mesh of
+    // their own, placed unmoved, so that the still geometry's bottom level stays what it was and
+    // only this one is built again; its emitters go to the scene's own soup like any other's.
+    void appendPosedMesh(int meshIndex, const glm::dmat4& placement,
+                         const gltf::Deformation& deformation) {
+        appendPrimitives(meshIndex, placement, PrimitiveKinds::Emitting, scene_, deformation);
+        SceneMesh mesh;
+        const tinygltf::Mesh& source = model_.meshes[static_cast<std::size_t>(meshIndex)];
+        mesh.name = "posed mesh " + std::to_string(meshIndex) +
+                    (source.name.empty() ? "" : " (" + source.name + ")");
+        appendPrimitives(meshIndex, placement, PrimitiveKinds::NotEmitting, mesh, deformation);
+        if (mesh.triangleCount() == 0) return;
+        const auto slot = static_cast<std::uint32_t>(scene_.meshes.size());
+        scene_.meshes.push_back(std::move(mesh));
+        scene_.instances.push_back({slot, glm::dmat4(1.0), SceneInstance::kKeepMaterial});
     }
 
     // The mesh's own copy in Scene::meshes, read at its first placement; nullopt when it has no
@@ -293,6 +328,7 @@ private:
     const gltf::InstancingPlan& plan_;
     const gltf::ScenePose* pose_; // nullptr: at rest
     const gltf::NodeWorlds& worlds_;
+    std::vector<char> movingNodes_; // per node; empty: nothing kept apart
     std::vector<std::optional<std::vector<glm::dmat4>>> skinJoints_; // per skin, when first used
     bool withTangents_; // some material has a normal texture or anisotropy
     std::optional<std::uint32_t> defaultMaterial_;
@@ -430,6 +466,31 @@ std::unique_ptr<GltfSceneSource::Parsed> parse(const std::string& path) {
     return parsed;
 }
 
+// Per node: whether a playing animation moves it, by a translation, rotation or scale channel on
+// it or on one of its ancestors in the default scene.
+std::vector<char> movingNodes(const tinygltf::Model& model, int sceneIndex,
+                              const std::vector<gltf::Animation>& animations,
+                              const std::vector<std::size_t>& playing) {
+    std::vector<char> animated(model.nodes.size(), 0);
+    for (std::size_t a : playing)
+        for (const gltf::AnimationChannel& channel : animations[a].channels)
+            if (channel.path != gltf::AnimatedPath::Weights && channel.node >= 0 &&
+                static_cast<std::size_t>(channel.node) < animated.size())
+                animated[static_cast<std::size_t>(channel.node)] = 1;
+    // The walk visits parents first: a node moves when it is animated or its parent moves.
+    std::vector<char> moving(model.nodes.size(), 0);
+    for (std::size_t n = 0; n < model.nodes.size(); ++n)
+        if (animated[n]) moving[n] = 1;
+    gltf::walkSceneNodes(model, sceneIndex, [&](int node, const glm::dmat4&) {
+        if (!moving[static_cast<std::size_t>(node)]) return;
+        for (int child : model.nodes[static_cast<std::size_t>(node)].children)
+            if (child >= 0 && static_cast<std::size_t>(child) < moving.size())
+                moving[static_cast<std::size_t>(child)] = 1;
+    });
+    // Sized by the nodes whether any moves or not: the builder takes a non-empty list as "on".
+    return moving;
+}
+
 Scene buildScene(const GltfSceneSource::Parsed& parsed, const LoadOptions& options) {
     const tinygltf::Model& model = parsed.model;
     const int sceneIndex = parsed.sceneIndex;
@@ -443,13 +504,19 @@ Scene buildScene(const GltfSceneSource::Parsed& parsed, const LoadOptions& optio
     const gltf::InstancingPlan plan =
         gltf::planInstancing(model, sceneIndex, options.instancing, scene.materials);
     // First the scene's extent in double, so that a far-away scene is recentred before its
-    // positions are rounded to float.
-    const std::optional<gltf::WorldExtent> extent =
-        gltf::worldExtent(model, sceneIndex, plan, posed);
+    // positions are rounded to float; measured at rest, so that every frame of an animation has
+    // the same origin (gltf_origin.h).
+    const std::optional<gltf::WorldExtent> extent = gltf::worldExtent(model, sceneIndex, plan);
     scene.worldOrigin = extent ? gltf::chooseWorldOrigin(*extent) : glm::dvec3(0.0);
+    if (pose && extent)
+        scene.framingBounds = Bounds{glm::vec3(extent->min - scene.worldOrigin),
+                                     glm::vec3(extent->max - scene.worldOrigin)};
     const glm::dmat4 root = glm::translate(glm::dmat4(1.0), -scene.worldOrigin);
     const gltf::NodeWorlds worlds = nodeWorlds(model, sceneIndex, root, posed);
-    SceneBuilder builder(model, scene, parsed.texcoords, plan, posed, worlds);
+    std::vector<char> moving;
+    if (options.keepMovingApart && pose)
+        moving = movingNodes(model, sceneIndex, parsed.animations, playing);
+    SceneBuilder builder(model, scene, parsed.texcoords, plan, posed, worlds, std::move(moving));
     gltf::walkSceneNodes(
         model, sceneIndex,
         [&](int node, const glm::dmat4& world) { builder.visitNode(node, world); }, root, posed);

@@ -23,6 +23,12 @@ struct LoadOptions {
     // KHR_materials_variants (--variant): a variant's name, or its index in decimal; empty: the
     // primitives' own (default) materials.
     std::string variant;
+    // An animation's frames (docs/scene-model.md, "Frames"), with a time: the meshes an animation
+    // moves are kept apart from the still geometry, so that the next frame keeps the still
+    // geometry's BVH: a mesh on a node that a translation, rotation or scale channel moves (or
+    // under one) is placed by an instance, a skinned or morphed mesh is a posed mesh of its own
+    // (Scene::meshes, placed unmoved). Off: they are flattened as Instancing decides.
+    bool keepMovingApart = false;
 };
 
 // Loads the default scene (`scene`, else scene 0): TRIANGLES primitives of every mesh node (and of

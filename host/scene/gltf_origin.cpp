@@ -16,6 +16,7 @@
 #include "scene/gltf_mesh_instancing.h"
 #include "scene/gltf_nodes.h"
 #include "scene/gltf_shapes.h"
+#include "scene/gltf_skins.h"
 
 namespace vkpt::gltf {
 namespace {
@@ -54,9 +55,14 @@ private:
 class ExtentBuilder {
 public:
     ExtentBuilder(const tinygltf::Model& model, const InstancingPlan& plan)
-        : model_(model), plan_(plan), meshBoxes_(model.meshes.size()) {}
+        : model_(model), plan_(plan), meshBoxes_(model.meshes.size()) {
+        worlds_.transforms.assign(model.nodes.size(), glm::dmat4(1.0));
+        worlds_.placed.assign(model.nodes.size(), 0);
+    }
 
     void visitNode(int nodeIndex, const glm::dmat4& world) {
+        worlds_.transforms[static_cast<std::size_t>(nodeIndex)] = world;
+        worlds_.placed[static_cast<std::size_t>(nodeIndex)] = 1;
         if (const std::optional<WorldSphere> sphere = placeSphere(model_, nodeIndex, world)) {
             extent_.addPoint(sphere->centre - glm::dvec3(sphere->radius));
             extent_.addPoint(sphere->centre + glm::dvec3(sphere->radius));
@@ -65,8 +71,15 @@ public:
             // A directional light has no place; the others are points of the scene.
             if (light->kind != LightKind::Directional) extent_.addPoint(glm::dvec3(world[3]));
         }
-        const int mesh = model_.nodes[static_cast<std::size_t>(nodeIndex)].mesh;
+        const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(nodeIndex)];
+        const int mesh = node.mesh;
         if (mesh < 0 || static_cast<std::size_t>(mesh) >= model_.meshes.size()) return;
+        if (node.skin >= 0) {
+            // Placed by its joints, not by the node (glTF 2.0, section 3.7.3.1): once every
+            // joint's world transform is known.
+            skinned_.push_back(nodeIndex);
+            return;
+        }
         const std::optional<std::vector<glm::dmat4>> local =
             meshInstanceTransforms(model_, nodeIndex);
         if (!local) {
@@ -75,6 +88,26 @@ public:
         }
         for (const glm::dmat4& transform : *local)
             addMeshPlacement(mesh, world * transform);
+    }
+
+    // A skinned vertex is Σ wᵢ·Jᵢ·p with weights that sum to one (renormalised where they do
+    // not): a point of the convex hull of its Jᵢ·p, so the union of the mesh's own box placed by
+    // each joint matrix Jᵢ holds every skinned vertex, at rest as the skin places it.
+    void addSkinnedMeshes() {
+        for (int nodeIndex : skinned_) {
+            const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(nodeIndex)];
+            std::vector<glm::dmat4> joints;
+            try {
+                joints = jointMatrices(model_, node.skin, worlds_);
+            } catch (const GltfProblem&) {
+                continue; // the loading pass names the problem
+            }
+            ExtentAccumulator own;
+            addMeshVertices(node.mesh, glm::dmat4(1.0), own);
+            if (const std::optional<WorldExtent> box = own.extent())
+                for (const glm::dmat4& joint : joints)
+                    extent_.addBox(*box, joint);
+        }
     }
 
     std::optional<WorldExtent> extent() const { return extent_.extent(); }
@@ -131,6 +164,8 @@ private:
     const tinygltf::Model& model_;
     const InstancingPlan& plan_;
     ExtentAccumulator extent_;
+    NodeWorlds worlds_;        // per node: its world transform at rest, once visited
+    std::vector<int> skinned_; // nodes with a skinned mesh, measured after the walk
     // Per mesh: not yet read, or its own box (nullopt: no finite vertex).
     std::vector<std::optional<std::optional<WorldExtent>>> meshBoxes_;
 };
@@ -143,16 +178,15 @@ double WorldExtent::size() const {
 }
 
 std::optional<WorldExtent> worldExtent(const tinygltf::Model& model, int sceneIndex,
-                                       const InstancingPlan& plan, const ScenePose* pose) {
+                                       const InstancingPlan& plan) {
     ExtentBuilder builder(model, plan);
     try {
-        walkSceneNodes(
-            model, sceneIndex,
-            [&](int node, const glm::dmat4& world) { builder.visitNode(node, world); },
-            glm::dmat4(1.0), pose);
+        walkSceneNodes(model, sceneIndex,
+                       [&](int node, const glm::dmat4& world) { builder.visitNode(node, world); });
     } catch (const GltfProblem&) {
         return std::nullopt; // the loading pass names the problem
     }
+    builder.addSkinnedMeshes();
     return builder.extent();
 }
 

@@ -29,10 +29,13 @@ struct WorldExtent {
 // its own box at each placement), spheres and point and spot lights in world space, in double.
 // Tolerant by design: nullopt when the scene has no readable finite geometry or the file has a
 // problem, which the loading pass that follows reports in its own words.
-// Under a `pose`, its nodes' posed transforms; skins and morph targets are not applied (their
-// vertices' rest places measure the scene well enough to choose an origin).
+// Always at rest (the nodes as the file stores them), whatever the time a scene is posed at: the
+// origin it chooses is then the same for every frame of an animation and for a still at any
+// --time, so that nothing jumps from one frame to the next when the origin would have moved.
+// A skinned mesh counts where its skin places it at rest: its own box placed by each joint's
+// matrix (a box that holds every skinned vertex); morph targets are not applied.
 std::optional<WorldExtent> worldExtent(const tinygltf::Model& model, int sceneIndex,
-                                       const InstancingPlan& plan, const ScenePose* pose = nullptr);
+                                       const InstancingPlan& plan);
 
 // The centre of `extent` when it lies beyond kRecentreRatio times the scene's size from the
 // origin, else the origin.

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -261,6 +262,10 @@ struct Scene : TriangleSoup {
     // moves it to the centre of a scene that lies far from the origin (relative to its size),
     // so that floats keep their precision there; rendering does not depend on it.
     glm::dvec3 worldOrigin{0.0};
+    // A scene posed at a time: its bounds at rest (as the origin is chosen, gltf_origin.h), which
+    // the default camera frames instead of the posed bounds, so that an animation's frames (and a
+    // still at any time) are seen from one place, not from one that follows the motion.
+    std::optional<Bounds> framingBounds;
     GeometryRepairs repairs;
     // KHR_materials_variants: the file's variant names, and the one whose materials the
     // primitives show (-1: the default materials).

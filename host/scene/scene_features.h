@@ -62,6 +62,8 @@ struct SceneFeatures {
     bool textureCoordinates() const { return textures(); }
     // Per-corner tangents are needed only for normal textures and anisotropy's direction.
     bool tangents() const { return normalTextures || anisotropy; }
+    // The specularLobes array (shared/host_device.h, SpecularLobeParams).
+    bool specularLobes() const { return specularTextures || anisotropy || iridescence; }
     bool punctualLights() const { return pointLights || spotLights || directionalLights; }
     bool emitterCdf() const { return general || emitterCount > 1; }
 

@@ -62,7 +62,7 @@ TriangleTangents fetchTriangleTangents(uint i) {
                             texelVec4(RECORD_TEXEL(triangleTangents, 3u, i, 2u)));
 }
 
-#define MATERIAL_TEXELS 41u // sizeof(Material) / 16
+#define MATERIAL_TEXELS 29u // sizeof(Material) / 16
 
 TextureSlot textureSlotFrom(uvec4 a, uvec4 b) {
     return TextureSlot(texelVec3(a), a.w, texelVec3(b), b.w);
@@ -73,11 +73,9 @@ TextureSlot fetchTextureSlot(uint material, uint first) {
                            RECORD_TEXEL(materials, MATERIAL_TEXELS, material, first + 1u));
 }
 
-// Forty-one texels, of which the compiler keeps the fetches of the fields a kernel reads.
+// Twenty-nine texels, of which the compiler keeps the fetches of the fields a kernel reads.
 // Texels 10–12: the normal texture; 13–16: transmission, ior and volume; 17–28: clearcoat and
-// sheen (read only where FEATURE_CLEARCOAT or FEATURE_SHEEN keeps the code that reads them);
-// 29–32: the specular textures (FEATURE_SPECULAR_TEXTURES); 33–35: anisotropy
-// (FEATURE_ANISOTROPY); 36–40: iridescence (FEATURE_IRIDESCENCE).
+// sheen (read only where FEATURE_CLEARCOAT or FEATURE_SHEEN keeps the code that reads them).
 Material fetchMaterial(uint i) {
     uvec4 colour = RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 0u);
     uvec4 emission = RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 1u);
@@ -87,24 +85,36 @@ Material fetchMaterial(uint i) {
     uvec4 volume = RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 14u);
     uvec4 sheen = RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 17u);
     uvec4 clearcoat = RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 18u);
-    uvec4 anisotropy = RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 33u);
-    vec4 iridescence = texelVec4(RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 36u));
-    return Material(texelVec4(colour), texelVec3(emission), emission.w,
-                    uintBitsToFloat(factors.x), uintBitsToFloat(factors.y),
-                    uintBitsToFloat(factors.z), factors.w, texelVec3(specular),
-                    uintBitsToFloat(specular.w), fetchTextureSlot(i, 4u), fetchTextureSlot(i, 6u),
-                    fetchTextureSlot(i, 8u), fetchTextureSlot(i, 10u),
-                    uintBitsToFloat(RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 12u).x), 0u,
-                    0u, 0u, glass.x, glass.y, glass.z, glass.w, texelVec3(volume), volume.w,
+    return Material(texelVec4(colour), texelVec3(emission), emission.w, uintBitsToFloat(factors.x),
+                    uintBitsToFloat(factors.y), uintBitsToFloat(factors.z), factors.w,
+                    texelVec3(specular), uintBitsToFloat(specular.w), fetchTextureSlot(i, 4u),
+                    fetchTextureSlot(i, 6u), fetchTextureSlot(i, 8u), fetchTextureSlot(i, 10u),
+                    uintBitsToFloat(RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 12u).x), 0u, 0u, 0u,
+                    glass.x, glass.y, glass.z, glass.w, texelVec3(volume), volume.w,
                     fetchTextureSlot(i, 15u), texelVec3(sheen), uintBitsToFloat(sheen.w),
                     uintBitsToFloat(clearcoat.x), uintBitsToFloat(clearcoat.y),
                     uintBitsToFloat(clearcoat.z), clearcoat.w, fetchTextureSlot(i, 19u),
                     fetchTextureSlot(i, 21u), fetchTextureSlot(i, 23u), fetchTextureSlot(i, 25u),
-                    fetchTextureSlot(i, 27u), fetchTextureSlot(i, 29u),
-                    fetchTextureSlot(i, 31u), uintBitsToFloat(anisotropy.x),
-                    uintBitsToFloat(anisotropy.y), uintBitsToFloat(anisotropy.z), anisotropy.w,
-                    fetchTextureSlot(i, 34u), iridescence.x, iridescence.y, iridescence.z,
-                    iridescence.w, fetchTextureSlot(i, 37u), fetchTextureSlot(i, 39u));
+                    fetchTextureSlot(i, 27u));
+}
+
+#define SPECULAR_LOBE_TEXELS 12u // sizeof(SpecularLobeParams) / 16
+
+TextureSlot fetchSpecularLobeSlot(uint i, uint first) {
+    return textureSlotFrom(RECORD_TEXEL(specularLobes, SPECULAR_LOBE_TEXELS, i, first),
+                           RECORD_TEXEL(specularLobes, SPECULAR_LOBE_TEXELS, i, first + 1u));
+}
+
+// Material i's specular textures (texels 0–3), anisotropy (4–6) and iridescence (7–11); read
+// only by code behind FEATURE_SPECULAR_TEXTURES, FEATURE_ANISOTROPY or FEATURE_IRIDESCENCE.
+SpecularLobeParams fetchSpecularLobeParams(uint i) {
+    uvec4 anisotropy = RECORD_TEXEL(specularLobes, SPECULAR_LOBE_TEXELS, i, 4u);
+    vec4 iridescence = texelVec4(RECORD_TEXEL(specularLobes, SPECULAR_LOBE_TEXELS, i, 7u));
+    return SpecularLobeParams(
+        fetchSpecularLobeSlot(i, 0u), fetchSpecularLobeSlot(i, 2u), uintBitsToFloat(anisotropy.x),
+        uintBitsToFloat(anisotropy.y), uintBitsToFloat(anisotropy.z), anisotropy.w,
+        fetchSpecularLobeSlot(i, 5u), iridescence.x, iridescence.y, iridescence.z, iridescence.w,
+        fetchSpecularLobeSlot(i, 8u), fetchSpecularLobeSlot(i, 10u));
 }
 
 #define INSTANCE_TEXELS 7u // sizeof(Instance) / 16
@@ -115,8 +125,8 @@ Instance fetchWalkInstance(uint i) {
     uvec4 flags = RECORD_TEXEL(instances, INSTANCE_TEXELS, i, 3u);
     return Instance(texelVec4(RECORD_TEXEL(instances, INSTANCE_TEXELS, i, 0u)),
                     texelVec4(RECORD_TEXEL(instances, INSTANCE_TEXELS, i, 1u)),
-                    texelVec4(RECORD_TEXEL(instances, INSTANCE_TEXELS, i, 2u)), flags.x,
-                    flags.y, flags.z, flags.w, vec4(0.0), vec4(0.0), vec4(0.0));
+                    texelVec4(RECORD_TEXEL(instances, INSTANCE_TEXELS, i, 2u)), flags.x, flags.y,
+                    flags.z, flags.w, vec4(0.0), vec4(0.0), vec4(0.0));
 }
 
 Instance fetchInstance(uint i) {

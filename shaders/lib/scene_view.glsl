@@ -29,6 +29,15 @@
 
 VKPT_SCENE_ARRAYS(VKPT_KERNEL_SCENE_ACCESSOR)
 
+// shared/scene_view.h's two-field reads of a material: texel 1's w (flags) and texel 13's x
+// (transmission), host_device.h's offsets 28 and 208.
+uint sceneMaterialFlags(uint i) {
+    return RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 1u).w;
+}
+float sceneMaterialTransmission(uint i) {
+    return uintBitsToFloat(RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 13u).x);
+}
+
 uint sceneEmitterCount() {
     return frame.emitterCount;
 }

@@ -39,8 +39,8 @@ struct DenoisePixel {
 };
 
 // One pixel of an iterate: the filtered whole estimate and the two filtered halves, each the
-// demodulated radiance (rgb) and the variance of its mean luminance (w); and the candidate chosen
-// so far (rgb, demodulated) with its estimated error (w; DENOISE_NO_ESTIMATE before the first);
+// demodulated radiance (rgb) and the variance of its mean luminance (w); and the blend of the
+// candidates so far (rgb, demodulated) with the sum of their weights (w; 0 before the first);
 // and this pixel's share of the iterate's error estimate (estimate.x, candidateError; estimate.y
 // 1 where the pixel has two halves, else 0), which the next pass averages over a window.
 struct DenoiseValue {
@@ -71,8 +71,9 @@ struct DenoiseParams {
 #define DENOISE_NORMAL_POWER 32.0f
 #define DENOISE_DEPTH_SIGMA 0.02f
 #define DENOISE_ALBEDO_SIGMA 0.25f
-// What the neighbourhood's variance weighs, in samples, against a pixel's own (denoise_filter.h).
-#define DENOISE_PRIOR_SAMPLES 16.0f
+// What the neighbourhood's variance weighs, in samples, against a pixel's own (denoise_filter.h);
+// 16 and 256 were measured, 64 kept (docs/trade/denoise.md).
+#define DENOISE_PRIOR_SAMPLES 64.0f
 // The reach of the window over which a candidate's error estimate is averaged (denoise_filter.h).
 #define DENOISE_ERROR_RADIUS 2
 // The raw candidate's estimate counts 1 + DENOISE_RAW_PRIOR / n times (denoise_filter.h): its
@@ -87,6 +88,13 @@ struct DenoiseParams {
 #define DENOISE_NO_ALBEDO 1e-3f
 // A candidate's error where nothing estimates it (no halves): never taken, the raw stays.
 #define DENOISE_NO_ESTIMATE 3.0e38f
+// The candidates are blended with weights 1 / error² (denoise_filter.h); an estimate below
+// DENOISE_ERROR_FLOOR / n (it may come out 0 or negative, a difference of noisy squares) counts
+// as that floor, so that no single candidate's chance estimate takes all the weight. Relative
+// squared error, as candidateError; a raw estimate's error is about 0.2 / n in the Cornell box,
+// so the floor stays a small fraction of it at every n and the raw candidate's weight still
+// grows as n² (consistency). 1e-4, 1e-3 and 1e-2 measured alike.
+#define DENOISE_ERROR_FLOOR 1e-3f
 
 VKPT_FN vec3 demodulationAlbedo(vec3 albedo) {
     if (max(albedo.x, max(albedo.y, albedo.z)) < DENOISE_NO_ALBEDO) return vec3(1.0f);
@@ -106,7 +114,7 @@ VKPT_FN vec4 demodulatedEstimate(vec3 radiance, float variance, vec3 albedo) {
     return vec4(demodulated, variance * scale * scale);
 }
 
-// The chosen candidate with the albedo multiplied back.
+// The blend of the candidates with the albedo multiplied back.
 VKPT_FN vec3 modulatedRadiance(DenoisePixel pixel, DenoiseValue value) {
     return vec3(value.chosen.x, value.chosen.y, value.chosen.z) * demodulationAlbedo(pixel.albedo);
 }
@@ -184,7 +192,7 @@ VKPT_FN DenoiseValue demodulatedPixel(DenoisePixel pixel) {
         hasHalves(pixel) ? pixel.luminanceVariance * samples / pixel.halfCountB : 0.0f;
     value.halfA = demodulatedEstimate(pixel.halfA, varianceA, albedo);
     value.halfB = demodulatedEstimate(pixel.halfB, varianceB, albedo);
-    value.chosen = vec4(value.full.x, value.full.y, value.full.z, DENOISE_NO_ESTIMATE);
+    value.chosen = vec4(value.full.x, value.full.y, value.full.z, 0.0f);
     value.estimate = pixelEstimate(pixel, value);
     return value;
 }

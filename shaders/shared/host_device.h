@@ -256,21 +256,25 @@ struct Material {
                                            // the base's shading normal, as the extension says)
     TextureSlot sheenColorTexture;         // sRGB; colour in .rgb
     TextureSlot sheenRoughnessTexture;     // linear; roughness in .a
-    // KHR_materials_specular's textures, 64 bytes from offset 464 (texels 29–32), read only in
-    // scenes that have them (FEATURE_SPECULAR_TEXTURES): they multiply specular and
-    // specularColor.
+};
+
+// The GGX lobe's newer extensions, one record per material (the array specularLobes, indexed as
+// materials), kept out of Material so that the record every kernel decodes stays the size it
+// had before them (464 bytes; docs/benchmarks.md, "Pipeline creation and the Material record").
+// The array is empty unless features.specularLobes(); only code behind
+// FEATURE_SPECULAR_TEXTURES, FEATURE_ANISOTROPY or FEATURE_IRIDESCENCE reads it.
+struct SpecularLobeParams {
+    // KHR_materials_specular's textures: they multiply specular and specularColor. Texels 0–3.
     TextureSlot specularTexture;      // linear; strength in .a
     TextureSlot specularColorTexture; // sRGB; colour in .rgb
-    // KHR_materials_anisotropy, 48 bytes from offset 528 (texels 33–35), read only in scenes
-    // that have it (FEATURE_ANISOTROPY): the strength, and the rotation of the direction from
-    // the tangent as its cosine and sine (computed on the host).
+    // KHR_materials_anisotropy: the strength, and the rotation of the direction from the tangent
+    // as its cosine and sine (computed on the host). Texels 4–6.
     float anisotropyStrength;      // anisotropyStrength; 0: isotropic
     float anisotropyRotationCos;   // cos(anisotropyRotation)
     float anisotropyRotationSin;   // sin(anisotropyRotation)
     uint anisotropyUnused;         // keeps the texture slot on a 16-byte texel
     TextureSlot anisotropyTexture; // linear; direction in .rg (as 2x − 1), strength in .b
-    // KHR_materials_iridescence, 80 bytes from offset 576 (texels 36–40), read only in scenes
-    // that have it (FEATURE_IRIDESCENCE).
+    // KHR_materials_iridescence. Texels 7–11.
     float iridescence;                       // iridescenceFactor; 0: no film
     float iridescenceIor;                    // iridescenceIor
     float iridescenceThicknessMinimum;       // nm, at thickness texture G = 0
@@ -428,13 +432,14 @@ static_assert(offsetof(Material, normalTexture) == 160 && offsetof(Material, nor
 static_assert(offsetof(Material, transmission) == 208 && offsetof(Material, thickness) == 220 &&
               offsetof(Material, attenuationCoefficient) == 224 &&
               offsetof(Material, transmissionTexture) == 240);
-static_assert(offsetof(Material, specularTexture) == 464 &&
-              offsetof(Material, specularColorTexture) == 496);
-static_assert(offsetof(Material, anisotropyStrength) == 528 &&
-              offsetof(Material, anisotropyTexture) == 544);
-static_assert(sizeof(Material) == 656 && offsetof(Material, iridescence) == 576 &&
-              offsetof(Material, iridescenceTexture) == 592 &&
-              offsetof(Material, iridescenceThicknessTexture) == 624);
+static_assert(sizeof(Material) == 464);
+static_assert(sizeof(SpecularLobeParams) == 192 &&
+              offsetof(SpecularLobeParams, specularColorTexture) == 32 &&
+              offsetof(SpecularLobeParams, anisotropyStrength) == 64 &&
+              offsetof(SpecularLobeParams, anisotropyTexture) == 80 &&
+              offsetof(SpecularLobeParams, iridescence) == 112 &&
+              offsetof(SpecularLobeParams, iridescenceTexture) == 128 &&
+              offsetof(SpecularLobeParams, iridescenceThicknessTexture) == 160);
 static_assert(offsetof(Material, sheenColor) == 272 && offsetof(Material, sheenRoughness) == 284 &&
               offsetof(Material, clearcoat) == 288 &&
               offsetof(Material, clearcoatRoughness) == 292 &&

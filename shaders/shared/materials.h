@@ -21,9 +21,7 @@ VKPT_FN bool hasTexture(TextureSlot slot VKPT_SCENE_PARAM) {
     return sceneHasTextures(VKPT_SCENE_ARG_ONLY) && slot.texture != NO_TEXTURE;
 }
 
-// The layers' textures count only in scenes with the layer (FEATURE_CLEARCOAT, FEATURE_SHEEN),
-// the specular ones only in scenes with them (FEATURE_SPECULAR_TEXTURES), the anisotropy texture
-// only with anisotropy (FEATURE_ANISOTROPY).
+// The layers' textures count only in scenes with the layer (FEATURE_CLEARCOAT, FEATURE_SHEEN).
 VKPT_FN bool hasLayerTexture(Material m VKPT_SCENE_PARAM) {
     bool clearcoat = sceneHasClearcoat(VKPT_SCENE_ARG_ONLY) &&
                      (hasTexture(m.clearcoatTexture VKPT_SCENE_ARG) ||
@@ -31,15 +29,60 @@ VKPT_FN bool hasLayerTexture(Material m VKPT_SCENE_PARAM) {
     bool sheen =
         sceneHasSheen(VKPT_SCENE_ARG_ONLY) && (hasTexture(m.sheenColorTexture VKPT_SCENE_ARG) ||
                                                hasTexture(m.sheenRoughnessTexture VKPT_SCENE_ARG));
+    return clearcoat || sheen;
+}
+
+// Whether the scene has the specularLobes array: some GGX material with a specular texture,
+// anisotropy or iridescence.
+VKPT_FN bool sceneHasSpecularLobes(VKPT_SCENE_PARAM_ONLY) {
+    return sceneHasSpecularTextures(VKPT_SCENE_ARG_ONLY) ||
+           sceneHasAnisotropy(VKPT_SCENE_ARG_ONLY) || sceneHasIridescence(VKPT_SCENE_ARG_ONLY);
+}
+
+// The record of a material without those extensions: no texture, no anisotropy, no film.
+VKPT_FN SpecularLobeParams noSpecularLobes() {
+    TextureSlot none;
+    none.transformRow0 = vec3(1.0f, 0.0f, 0.0f);
+    none.texture = NO_TEXTURE;
+    none.transformRow1 = vec3(0.0f, 1.0f, 0.0f);
+    none.unused0 = 0u;
+    SpecularLobeParams x;
+    x.specularTexture = none;
+    x.specularColorTexture = none;
+    x.anisotropyStrength = 0.0f;
+    x.anisotropyRotationCos = 1.0f;
+    x.anisotropyRotationSin = 0.0f;
+    x.anisotropyUnused = 0u;
+    x.anisotropyTexture = none;
+    x.iridescence = 0.0f;
+    x.iridescenceIor = 1.3f;
+    x.iridescenceThicknessMinimum = 100.0f;
+    x.iridescenceThicknessMaximum = 400.0f;
+    x.iridescenceTexture = none;
+    x.iridescenceThicknessTexture = none;
+    return x;
+}
+
+// Material `material`'s specular lobe extensions; none in a scene without them (whose array is
+// empty, and whose kernels fold this to constants).
+VKPT_FN SpecularLobeParams specularLobesOf(uint material VKPT_SCENE_PARAM) {
+    if (!sceneHasSpecularLobes(VKPT_SCENE_ARG_ONLY)) return noSpecularLobes();
+    return sceneSpecularLobes(material VKPT_SCENE_ARG);
+}
+
+// The specular textures count only in scenes with them (FEATURE_SPECULAR_TEXTURES), the
+// anisotropy texture only with anisotropy (FEATURE_ANISOTROPY), the film's only with
+// iridescence (FEATURE_IRIDESCENCE).
+VKPT_FN bool hasSpecularLobeTexture(SpecularLobeParams x VKPT_SCENE_PARAM) {
     bool specular = sceneHasSpecularTextures(VKPT_SCENE_ARG_ONLY) &&
-                    (hasTexture(m.specularTexture VKPT_SCENE_ARG) ||
-                     hasTexture(m.specularColorTexture VKPT_SCENE_ARG));
+                    (hasTexture(x.specularTexture VKPT_SCENE_ARG) ||
+                     hasTexture(x.specularColorTexture VKPT_SCENE_ARG));
     bool anisotropy =
-        sceneHasAnisotropy(VKPT_SCENE_ARG_ONLY) && hasTexture(m.anisotropyTexture VKPT_SCENE_ARG);
+        sceneHasAnisotropy(VKPT_SCENE_ARG_ONLY) && hasTexture(x.anisotropyTexture VKPT_SCENE_ARG);
     bool iridescence = sceneHasIridescence(VKPT_SCENE_ARG_ONLY) &&
-                       (hasTexture(m.iridescenceTexture VKPT_SCENE_ARG) ||
-                        hasTexture(m.iridescenceThicknessTexture VKPT_SCENE_ARG));
-    return clearcoat || sheen || specular || anisotropy || iridescence;
+                       (hasTexture(x.iridescenceTexture VKPT_SCENE_ARG) ||
+                        hasTexture(x.iridescenceThicknessTexture VKPT_SCENE_ARG));
+    return specular || anisotropy || iridescence;
 }
 
 VKPT_FN bool hasAnyTexture(Material m VKPT_SCENE_PARAM) {

@@ -57,6 +57,10 @@
       tangents,          VIEW, sceneTangents)                                                      \
     X(materials,         Material,         BINDING_MATERIALS,           4, TEXELS,  SPLIT,         \
       materials,         VIEW, sceneMaterial)                                                      \
+    /* One per material; empty unless features.specularLobes() (specular textures, anisotropy, \
+       iridescence), so that the Material record stays small (host_device.h) */                  \
+    X(specularLobes,     SpecularLobeParams, BINDING_SPECULAR_LOBES,  31, TEXELS,  SPLIT,         \
+      specularLobes,     VIEW, sceneSpecularLobes)                                                 \
     X(emitters,          Emitter,          BINDING_EMITTERS,            5, TEXELS,  SPLIT,         \
       emitters,          VIEW, sceneEmitter)                                                       \
     /* The light BVH; empty unless features.lightTree */                                           \

@@ -63,6 +63,15 @@ struct SceneView : SceneArrayMembers<ConstSpan> {
     VKPT_SCENE_VIEW_ACCESSOR_##reader(Type, member, accessor)
 VKPT_SCENE_ARRAYS(VKPT_SCENE_VIEW_ACCESSOR)
 
+// Two fields of material i alone, for the camera's culling test (shared/camera_culling.h): the
+// kernels fetch their two texels rather than decode the whole record in the traversal kernel.
+VKPT_FN uint sceneMaterialFlags(uint i VKPT_SCENE_PARAM) {
+    return scene.materials[i].flags;
+}
+VKPT_FN float sceneMaterialTransmission(uint i VKPT_SCENE_PARAM) {
+    return scene.materials[i].transmission;
+}
+
 VKPT_FN uint sceneEmitterCount(VKPT_SCENE_PARAM_ONLY) {
     return uint(scene.emitters.size());
 }

@@ -167,10 +167,10 @@ VKPT_FN vec3 clearcoatLocalNormal(SurfacePoint s, Material m, TriangleHit hit, v
 
 // KHR_materials_specular's strength (A of specularTexture) and colour (RGB of the sRGB
 // specularColorTexture), each factor times its texture, read only in scenes that have them.
-VKPT_FN void applySpecularTextures(VKPT_INOUT(ShadingMaterial) shading, Material m,
+VKPT_FN void applySpecularTextures(VKPT_INOUT(ShadingMaterial) shading, SpecularLobeParams x,
                                    vec2 uv VKPT_SCENE_PARAM) {
-    shading.specular *= sampleSlot(m.specularTexture, uv, false VKPT_SCENE_ARG).w;
-    shading.specularColor *= vec3(sampleSlot(m.specularColorTexture, uv, true VKPT_SCENE_ARG));
+    shading.specular *= sampleSlot(x.specularTexture, uv, false VKPT_SCENE_ARG).w;
+    shading.specularColor *= vec3(sampleSlot(x.specularColorTexture, uv, true VKPT_SCENE_ARG));
 }
 
 // KHR_materials_anisotropy at the point: the direction (1, 0), or anisotropyTexture.rg·2 − 1,
@@ -179,19 +179,20 @@ VKPT_FN void applySpecularTextures(VKPT_INOUT(ShadingMaterial) shading, Material
 // then projected into the shading normal's plane and expressed in the frame of
 // makeBasis(shadingNormal), where bsdf.h works. A primitive without a tangent frame (a sphere)
 // or a direction along the normal stays isotropic.
-VKPT_FN ShadingMaterial withSurfaceAnisotropy(ShadingMaterial shading, SurfacePoint s, Material m,
-                                              TriangleHit hit, vec2 uv VKPT_SCENE_PARAM) {
+VKPT_FN ShadingMaterial withSurfaceAnisotropy(ShadingMaterial shading, SurfacePoint s,
+                                              SpecularLobeParams lobes, TriangleHit hit,
+                                              vec2 uv VKPT_SCENE_PARAM) {
     vec4 tangent = surfaceTangent(s, hit VKPT_SCENE_ARG);
     if (tangent.w == 0.0f) return shading;
-    float strength = m.anisotropyStrength;
+    float strength = lobes.anisotropyStrength;
     vec2 d = vec2(1.0f, 0.0f);
-    if (hasTexture(m.anisotropyTexture VKPT_SCENE_ARG)) {
-        vec4 texel = sampleSlot(m.anisotropyTexture, uv, false VKPT_SCENE_ARG);
+    if (hasTexture(lobes.anisotropyTexture VKPT_SCENE_ARG)) {
+        vec4 texel = sampleSlot(lobes.anisotropyTexture, uv, false VKPT_SCENE_ARG);
         d = vec2(texel.x, texel.y) * 2.0f - vec2(1.0f);
         strength *= texel.z;
     }
-    float c = m.anisotropyRotationCos;
-    float sn = m.anisotropyRotationSin;
+    float c = lobes.anisotropyRotationCos;
+    float sn = lobes.anisotropyRotationSin;
     vec2 turned = vec2(c * d.x - sn * d.y, sn * d.x + c * d.y);
     vec3 n = normalize(s.rawShadingNormal);
     vec3 t = vec3(tangent) - dot(vec3(tangent), n) * n;
@@ -206,28 +207,30 @@ VKPT_FN ShadingMaterial withSurfaceAnisotropy(ShadingMaterial shading, SurfacePo
 
 // KHR_materials_iridescence at the point: the factor times iridescenceTexture.r, the thickness
 // mix(minimum, maximum, iridescenceThicknessTexture.g), or the maximum without the texture.
-VKPT_FN ShadingMaterial withSurfaceIridescence(ShadingMaterial shading, Material m,
+VKPT_FN ShadingMaterial withSurfaceIridescence(ShadingMaterial shading, SpecularLobeParams lobes,
                                                vec2 uv VKPT_SCENE_PARAM) {
-    float factor = m.iridescence * sampleSlot(m.iridescenceTexture, uv, false VKPT_SCENE_ARG).x;
-    float thickness = m.iridescenceThicknessMaximum;
-    if (hasTexture(m.iridescenceThicknessTexture VKPT_SCENE_ARG))
-        thickness = mix(m.iridescenceThicknessMinimum, m.iridescenceThicknessMaximum,
-                        sampleSlot(m.iridescenceThicknessTexture, uv, false VKPT_SCENE_ARG).y);
-    return withIridescence(shading, factor, m.iridescenceIor, thickness);
+    float factor =
+        lobes.iridescence * sampleSlot(lobes.iridescenceTexture, uv, false VKPT_SCENE_ARG).x;
+    float thickness = lobes.iridescenceThicknessMaximum;
+    if (hasTexture(lobes.iridescenceThicknessTexture VKPT_SCENE_ARG))
+        thickness = mix(lobes.iridescenceThicknessMinimum, lobes.iridescenceThicknessMaximum,
+                        sampleSlot(lobes.iridescenceThicknessTexture, uv, false VKPT_SCENE_ARG).y);
+    return withIridescence(shading, factor, lobes.iridescenceIor, thickness);
 }
 
 // The material at the point: factors times textures (each read only when present). Needs
 // s.outgoing for the normal texture's bend.
 VKPT_FN void fillMaterial(VKPT_INOUT(SurfacePoint) s, Triangle primitive,
                           TriangleHit hit VKPT_SCENE_PARAM) {
-    Material m =
-        sceneMaterial(placedMaterialIndex(s.instance, primitive VKPT_SCENE_ARG) VKPT_SCENE_ARG);
+    uint material = placedMaterialIndex(s.instance, primitive VKPT_SCENE_ARG);
+    Material m = sceneMaterial(material VKPT_SCENE_ARG);
+    SpecularLobeParams lobes = specularLobesOf(material VKPT_SCENE_ARG);
     vec4 baseColor = m.baseColor;
     float metallic = m.metallic;
     float roughness = m.roughness;
     s.emission = m.emission;
     vec2 uv = vec2(0.0f);
-    if (hasAnyTexture(m VKPT_SCENE_ARG)) {
+    if (hasAnyTexture(m VKPT_SCENE_ARG) || hasSpecularLobeTexture(lobes VKPT_SCENE_ARG)) {
         uv = primitiveUv(s.triangle, primitive, hit.u, hit.v, s.rawShadingNormal VKPT_SCENE_ARG);
         baseColor = m.baseColor * sampleSlot(m.baseColorTexture, uv, true VKPT_SCENE_ARG);
         vec4 metalRough = sampleSlot(m.metallicRoughnessTexture, uv, false VKPT_SCENE_ARG);
@@ -246,15 +249,15 @@ VKPT_FN void fillMaterial(VKPT_INOUT(SurfacePoint) s, Triangle primitive,
     s.shading = makeShadingMaterial(vec3(baseColor), metallic, roughness, m.specular,
                                     m.specularColor, metallicRoughness);
     if (sceneHasSpecularTextures(VKPT_SCENE_ARG_ONLY) && metallicRoughness)
-        applySpecularTextures(s.shading, m, uv VKPT_SCENE_ARG);
+        applySpecularTextures(s.shading, lobes, uv VKPT_SCENE_ARG);
     if (sceneHasTransmission(VKPT_SCENE_ARG_ONLY))
         applyDielectricExtensions(s.shading, m, s.frontFace, uv VKPT_SCENE_ARG);
     if (metallicRoughness) s.shading = withMaterialLayers(s.shading, m, uv VKPT_SCENE_ARG);
-    if (sceneHasIridescence(VKPT_SCENE_ARG_ONLY) && metallicRoughness && m.iridescence > 0.0f)
-        s.shading = withSurfaceIridescence(s.shading, m, uv VKPT_SCENE_ARG);
+    if (sceneHasIridescence(VKPT_SCENE_ARG_ONLY) && metallicRoughness && lobes.iridescence > 0.0f)
+        s.shading = withSurfaceIridescence(s.shading, lobes, uv VKPT_SCENE_ARG);
     if (sceneHasAnisotropy(VKPT_SCENE_ARG_ONLY) && metallicRoughness &&
-        m.anisotropyStrength > 0.0f && length(s.rawShadingNormal) > 0.0f)
-        s.shading = withSurfaceAnisotropy(s.shading, s, m, hit, uv VKPT_SCENE_ARG);
+        lobes.anisotropyStrength > 0.0f && length(s.rawShadingNormal) > 0.0f)
+        s.shading = withSurfaceAnisotropy(s.shading, s, lobes, hit, uv VKPT_SCENE_ARG);
     if (normalMapped && hasClearcoat(s.shading) &&
         (hasTexture(m.normalTexture VKPT_SCENE_ARG) ||
          hasTexture(m.clearcoatNormalTexture VKPT_SCENE_ARG))) {

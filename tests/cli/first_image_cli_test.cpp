@@ -29,6 +29,8 @@ const std::string kSpheres = VKPT_SCENES_DIR "/test/metal-rough-spheres.gltf";
 const std::string kCornell = VKPT_SCENES_DIR "/cornell-box.gltf";
 const std::string kToyCar = VKPT_SCENES_DIR "/../../shared/scenes/ToyCar/ToyCar.gltf";
 const std::string kStudioLine = "lit by the default studio environment";
+const std::string kInsideOutBox = VKPT_SCENES_DIR "/test/inside-out-box.gltf";
+const std::string kUnlitLine = "pixels received any light; check for single-sided";
 
 int linesContaining(const std::string& text, const std::string& part) {
     int count = 0;
@@ -109,14 +111,27 @@ TEST_P(FirstImage, AnEnvironmentOfZeroOrTheDefaultLightOffKeepsTheSceneBlack) {
     }
 }
 
-// The Cornell box has its light: the same image, bit for bit, whether the default may apply.
+// The Cornell box has its light: the same image, bit for bit, whether the default may apply
+// (and no warning that nothing is lit).
 TEST_P(FirstImage, ASceneWithLightsGetsNoExtraLight) {
     const Finished f =
         render({"-q", "--spp", "4", "--res", "16", "16", "-o", path("a.pfm")}, kCornell);
     EXPECT_EQ(linesContaining(f.stderrText, kStudioLine), 0) << f.stderrText;
+    EXPECT_EQ(linesContaining(f.stderrText, kUnlitLine), 0) << f.stderrText;
     render({"-q", "--spp", "4", "--res", "16", "16", "--default-light", "off", "-o", path("b.pfm")},
            kCornell);
     EXPECT_EQ(bytesOf(path("a.pfm")), bytesOf(path("b.pfm")));
+}
+
+// A camera inside a crate of single-sided faces turned out, with the light facing away: every
+// face is seen from behind, so the image is black, and the program says what to check, once.
+// 8 x 8 pixels at 2 samples: every pixel is black whatever the samples.
+TEST_P(FirstImage, ACameraThatSeesNothingLitSaysWhatToCheckOnce) {
+    const Finished f =
+        render({"-q", "--spp", "2", "--res", "8", "8", "-o", path("crate.pfm")}, kInsideOutBox);
+    EXPECT_EQ(linesContaining(f.stderrText, kUnlitLine), 1) << f.stderrText;
+    EXPECT_EQ(linesContaining(f.stderrText, "0 of 64 pixels"), 1) << f.stderrText;
+    EXPECT_EQ(linesContaining(f.stderrText, kStudioLine), 0) << f.stderrText;
 }
 
 // The decision is part of the render's identity (through the environment the scene hash covers):

@@ -41,6 +41,7 @@ struct SharedStructs {
     std::vector<ShadowRay> shadowRays;
     std::vector<PixelState> pixelStates;
     std::vector<LightTreeNode> lightTreeNodes;
+    std::vector<SpecularLobeParams> specularLobes;
 };
 
 TextureSlot makeTextureSlot(Values& x) {
@@ -109,19 +110,6 @@ SharedStructs makeStructs() {
         m.clearcoatNormalTexture = makeTextureSlot(x);
         m.sheenColorTexture = makeTextureSlot(x);
         m.sheenRoughnessTexture = makeTextureSlot(x);
-        m.specularTexture = makeTextureSlot(x);
-        m.specularColorTexture = makeTextureSlot(x);
-        m.anisotropyStrength = x.f();
-        m.anisotropyRotationCos = x.f();
-        m.anisotropyRotationSin = x.f();
-        m.anisotropyUnused = x.u();
-        m.anisotropyTexture = makeTextureSlot(x);
-        m.iridescence = x.f();
-        m.iridescenceIor = x.f();
-        m.iridescenceThicknessMinimum = x.f();
-        m.iridescenceThicknessMaximum = x.f();
-        m.iridescenceTexture = makeTextureSlot(x);
-        m.iridescenceThicknessTexture = makeTextureSlot(x);
         s.materials.push_back(m);
         s.textures.push_back({x.u(), x.u(), x.u(), x.u()});
         s.emitters.push_back(
@@ -135,6 +123,21 @@ SharedStructs makeStructs() {
                                  x.u(), x.v3(), x.u()});
         s.lightTreeNodes.push_back(
             {x.v3(), x.f(), x.v3(), x.f(), x.v3(), x.f(), x.u(), x.u(), x.u(), x.u()});
+        SpecularLobeParams lobes{};
+        lobes.specularTexture = makeTextureSlot(x);
+        lobes.specularColorTexture = makeTextureSlot(x);
+        lobes.anisotropyStrength = x.f();
+        lobes.anisotropyRotationCos = x.f();
+        lobes.anisotropyRotationSin = x.f();
+        lobes.anisotropyUnused = x.u();
+        lobes.anisotropyTexture = makeTextureSlot(x);
+        lobes.iridescence = x.f();
+        lobes.iridescenceIor = x.f();
+        lobes.iridescenceThicknessMinimum = x.f();
+        lobes.iridescenceThicknessMaximum = x.f();
+        lobes.iridescenceTexture = makeTextureSlot(x);
+        lobes.iridescenceThicknessTexture = makeTextureSlot(x);
+        s.specularLobes.push_back(lobes);
     }
     return s;
 }
@@ -161,6 +164,7 @@ std::vector<uint> flatten(const SharedStructs& s) {
     appendWords(words, s.shadowRays);
     appendWords(words, s.pixelStates);
     appendWords(words, s.lightTreeNodes);
+    appendWords(words, s.specularLobes);
     return words;
 }
 
@@ -199,11 +203,12 @@ TEST_F(LayoutRoundTrip, DeviceReadsEveryFieldAtItsCppOffset) {
     const Buffer shadowRays = structBuffer("shadowRays", s.shadowRays);
     const Buffer pixelStates = structBuffer("pixelStates", s.pixelStates);
     const Buffer lightTreeNodes = structBuffer("lightTreeNodes", s.lightTreeNodes);
+    const Buffer specularLobes = structBuffer("specularLobes", s.specularLobes);
     const Kernel kernel = makeKernel("read_layouts", LAYOUT_BUFFER_COUNT, 0);
     runKernel(kernel,
               {&bvhNodes, &triangles, &triangleNormals, &materials, &textures, &emitters,
                &environments, &cameras, &words, &frames, &pathStates, &shadowRays, &pixelStates,
-               &lightTreeNodes},
+               &lightTreeNodes, &specularLobes},
               LAYOUT_COUNT);
 
     const std::vector<uint> expected = flatten(s);
@@ -234,11 +239,13 @@ TEST_F(LayoutRoundTrip, DeviceWritesEveryFieldAtItsCppOffset) {
     const Buffer pixelStates = makeStorageBuffer("pixelStates", LAYOUT_COUNT * sizeof(PixelState));
     const Buffer lightTreeNodes =
         makeStorageBuffer("lightTreeNodes", LAYOUT_COUNT * sizeof(LightTreeNode));
+    const Buffer specularLobes =
+        makeStorageBuffer("specularLobes", LAYOUT_COUNT * sizeof(SpecularLobeParams));
     const Kernel kernel = makeKernel("write_layouts", LAYOUT_BUFFER_COUNT, 0);
     runKernel(kernel,
               {&bvhNodes, &triangles, &triangleNormals, &materials, &textures, &emitters,
                &environments, &cameras, &words, &frames, &pathStates, &shadowRays, &pixelStates,
-               &lightTreeNodes},
+               &lightTreeNodes, &specularLobes},
               LAYOUT_COUNT);
 
     expectSameBytes(download<WideBvhNode>(context(), bvhNodes, LAYOUT_COUNT), s.bvhNodes,
@@ -262,6 +269,8 @@ TEST_F(LayoutRoundTrip, DeviceWritesEveryFieldAtItsCppOffset) {
                     "shadowRays");
     expectSameBytes(download<LightTreeNode>(context(), lightTreeNodes, LAYOUT_COUNT),
                     s.lightTreeNodes, "lightTreeNodes");
+    expectSameBytes(download<SpecularLobeParams>(context(), specularLobes, LAYOUT_COUNT),
+                    s.specularLobes, "specularLobes");
     expectSameBytes(download<PixelState>(context(), pixelStates, LAYOUT_COUNT), s.pixelStates,
                     "pixelStates");
 }

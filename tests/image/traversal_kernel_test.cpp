@@ -176,7 +176,7 @@ protected:
         int disagreements = 0, hitCount = 0;
         HitDifferences differences;
         for (std::size_t i = 0; i < rays.size(); ++i) {
-            ClosestHit cpu = stack->closestHit(rays[i].origin, rays[i].direction);
+            ClosestHit cpu = stack->closestHit(rays[i].origin, rays[i].direction, 0.0f);
             hitCount += cpu.hit ? 1 : 0;
             if (instances[i] == cpu.instance) differences.add(hits[i], cpu);
             if (sameClosestHit(scene.prepared, rays[i], hits[i], instances[i], cpu)) continue;

@@ -27,8 +27,9 @@ private:
     class Intersector final : public SceneIntersector {
     public:
         explicit Intersector(const BruteForceIntersectors& owner) : owner_(owner) {}
-        ClosestHit closestHit(const glm::vec3& origin, const glm::vec3& direction) override {
-            return owner_.query({origin, direction, 0.0f, VKPT_FAR});
+        ClosestHit closestHit(const glm::vec3& origin, const glm::vec3& direction,
+                              float tMin) override {
+            return owner_.query({origin, direction, tMin, VKPT_FAR});
         }
         bool occluded(const glm::vec3& origin, const glm::vec3& direction, float tMax) override {
             return owner_.query({origin, direction, 0.0f, tMax}).hit;
@@ -65,7 +66,8 @@ private:
     class Intersector final : public SceneIntersector {
     public:
         explicit Intersector(std::vector<RecordedQuery>& queries) : queries_(queries) {}
-        ClosestHit closestHit(const glm::vec3& origin, const glm::vec3& direction) override {
+        ClosestHit closestHit(const glm::vec3& origin, const glm::vec3& direction,
+                              float /*tMin*/) override {
             queries_.push_back({origin, direction, VKPT_FAR});
             return {};
         }
@@ -95,6 +97,33 @@ TEST(SceneTracer, CountsRaysByKindAndForwardsEachQuery) {
     EXPECT_EQ(recorder.queries[2].direction, d);
     EXPECT_EQ(recorder.queries[2].tMax, 0.5f);
     EXPECT_EQ(tracer.traversal().nodesVisited, 0u) << "work the intersector does not count";
+}
+
+// glTF's doubleSided false: a camera ray passes the back of a single-sided surface (the
+// emission-sides quad whose back faces the camera; the room's near wall) and meets what lies
+// beyond; extension and shadow rays meet both sides, and a double-sided surface stops the camera.
+TEST(SceneTracer, CameraRaysPassTheBackOfSingleSidedSurfacesOnly) {
+    test::LoadedTestScene sides = test::loadTestScene("test/emission-sides.gltf");
+    StackIntersectors stack(sides.prepared);
+    SceneTracer tracer(sides.prepared, stack);
+    const glm::vec3 eye(0.0f, 0.0f, 2.5f);
+    const glm::vec3 toBack = glm::vec3(0.5f, 0.5f, 0.0f) - eye; // single-sided, back to the eye
+    const glm::vec3 toDoubleSided = glm::vec3(0.0f, -0.5f, 0.0f) - eye;
+    const glm::vec3 toFront = glm::vec3(-0.5f, 0.5f, 0.0f) - eye;
+    EXPECT_FALSE(tracer.closest(eye, toBack, RayKind::Camera).hit);
+    EXPECT_TRUE(tracer.closest(eye, toBack, RayKind::Extension).hit);
+    EXPECT_TRUE(tracer.occluded(eye, toBack, 2.0f));
+    EXPECT_TRUE(tracer.closest(eye, toDoubleSided, RayKind::Camera).hit);
+    EXPECT_TRUE(tracer.closest(eye, toFront, RayKind::Camera).hit);
+
+    test::LoadedTestScene room = test::loadTestScene("test/single-sided-room.gltf");
+    StackIntersectors roomStack(room.prepared);
+    SceneTracer roomTracer(room.prepared, roomStack);
+    const glm::vec3 outside(0.0f, 1.0f, 3.2f), ahead(0.0f, 0.0f, -1.0f);
+    EXPECT_NEAR(roomTracer.closest(outside, ahead, RayKind::Camera).t, 4.2f, 1e-5f)
+        << "the back wall, through the near wall";
+    EXPECT_NEAR(roomTracer.closest(outside, ahead, RayKind::Extension).t, 2.2f, 1e-5f)
+        << "the near wall";
 }
 
 TEST(SceneIntersector, SameAnswersGiveTheSameImage) {

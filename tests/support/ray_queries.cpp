@@ -48,7 +48,10 @@ struct DeviceRayQueries::State {
     }
 
     void run(const Kernel& kernel, const DescriptorSet& set, std::uint32_t count) {
-        const gpu::PassParams params{};
+        // Extension rays of an even bounce: queue half 0, and none of the camera's culling of
+        // single-sided back faces (shared/camera_culling.h), which bounce 0 would ask for.
+        gpu::PassParams params{};
+        params.bounce = 2;
         submitAndWait(context, kernel.name(), [&](VkCommandBuffer commands) {
             timer.recordReset(commands);
             timer.recordBegin(commands, kernel.name());

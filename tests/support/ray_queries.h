@@ -1,6 +1,7 @@
 // ray_queries.h — the traversal kernels on a list of rays given by the host, outside a render:
-// trace_closest and trace_shadow exactly as a pass dispatches them, for the tests that hold
-// them equal to the CPU traversals and for benchmarks.
+// trace_closest and trace_shadow exactly as a pass dispatches them for extension rays (not
+// camera rays, which pass single-sided back faces), for the tests that hold them equal to the
+// CPU traversals and for benchmarks.
 #pragma once
 
 #include <cstdint>

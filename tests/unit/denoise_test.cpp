@@ -135,7 +135,7 @@ TEST(DenoiseGate, TellsColoursOfOneLuminanceApart) {
 
 TEST(DenoiseConsistency, ConvergesToTheRawImageAsSamplesGrow) {
     // Never worse than the raw image, far better at 4 samples (a third of its error or less: the
-    // choice among the candidates is made from halves of 2 samples each, itself noisy), and by
+    // blend of the candidates is weighted from halves of 2 samples each, itself noisy), and by
     // 2^24 samples (noise 1e-4 of the mean; neighbours differ by 2.6e-3 or more) the raw image
     // itself: the gap between the two is under 5 % of the raw error.
     const std::vector<glm::vec3> truth = truthOf(kSmooth);
@@ -154,11 +154,11 @@ TEST(DenoiseConsistency, ConvergesToTheRawImageAsSamplesGrow) {
     EXPECT_LT(lastGap, 0.05) << "at 2^24 samples the output is the raw image";
 }
 
-TEST(DenoiseChoice, KeepsTheRawImageWhereTheVarianceMisleadsTheGate) {
+TEST(DenoiseBlend, KeepsTheRawImageWhereTheVarianceMisleadsTheGate) {
     // Light in waves 10 % deep and 12 pixels long, and the render's variance 100× the truth
     // (noise it does not have, as a heavy tail's estimate can be off): the gate then takes in
     // neighbours across the waves, and every filtered candidate flattens them. The halves'
-    // differences show the true noise, so the choice keeps the pixels (near) raw: at 4096
+    // differences show the true noise, so the blend keeps the pixels (near) raw: at 4096
     // samples (noise 0.8 % of the mean) the output's error is at most 1.1× the raw one, where
     // the whole image after the four steps alone is many times worse.
     const Scene waves{[](auto, auto) { return glm::vec3(0.5f); },

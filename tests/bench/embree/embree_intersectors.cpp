@@ -7,6 +7,7 @@
 
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 #include <vector>
 
@@ -200,8 +201,11 @@ class EmbreeIntersector final : public SceneIntersector {
 public:
     explicit EmbreeIntersector(const EmbreeIntersectors& embree) : embree_(embree) {}
 
-    ClosestHit closestHit(const glm::vec3& origin, const glm::vec3& direction) override {
-        return embree_.closestHit({origin, direction, 0.0f, VKPT_FAR});
+    ClosestHit closestHit(const glm::vec3& origin, const glm::vec3& direction,
+                          float tMin) override {
+        // Embree's tnear is inclusive, the interface's tMin exclusive.
+        const float tNear = tMin > 0.0f ? std::nextafter(tMin, VKPT_FAR) : tMin;
+        return embree_.closestHit({origin, direction, tNear, VKPT_FAR});
     }
     bool occluded(const glm::vec3& origin, const glm::vec3& direction, float tMax) override {
         return embree_.anyHit({origin, direction, 0.0f, tMax});

@@ -66,11 +66,11 @@ struct IntersectOutput {
 // lib/wavefront.h flattened to 32-bit words in declaration order, one region per struct type,
 // LAYOUT_COUNT records per region.
 #define LAYOUT_COUNT 5u
-#define LAYOUT_BUFFER_COUNT 14u // one per struct type, and the words (binding 8)
+#define LAYOUT_BUFFER_COUNT 15u // one per struct type, and the words (binding 8)
 #define LAYOUT_WORDS_BVH_NODE 20u
 #define LAYOUT_WORDS_TRIANGLE 12u
 #define LAYOUT_WORDS_TRIANGLE_NORMALS 12u
-#define LAYOUT_WORDS_MATERIAL 164u
+#define LAYOUT_WORDS_MATERIAL 116u
 #define LAYOUT_WORDS_TEXTURE_INFO 4u
 #define LAYOUT_WORDS_EMITTER 16u
 #define LAYOUT_WORDS_ENVIRONMENT 8u
@@ -80,6 +80,7 @@ struct IntersectOutput {
 #define LAYOUT_WORDS_SHADOW_RAY 12u
 #define LAYOUT_WORDS_PIXEL_STATE 20u
 #define LAYOUT_WORDS_LIGHT_TREE_NODE 16u
+#define LAYOUT_WORDS_SPECULAR_LOBES 48u
 #define LAYOUT_OFFSET_BVH_NODES 0u
 #define LAYOUT_OFFSET_TRIANGLES (LAYOUT_OFFSET_BVH_NODES + LAYOUT_COUNT * LAYOUT_WORDS_BVH_NODE)
 #define LAYOUT_OFFSET_TRIANGLE_NORMALS                                                             \
@@ -99,8 +100,10 @@ struct IntersectOutput {
     (LAYOUT_OFFSET_SHADOW_RAYS + LAYOUT_COUNT * LAYOUT_WORDS_SHADOW_RAY)
 #define LAYOUT_OFFSET_LIGHT_TREE_NODES                                                             \
     (LAYOUT_OFFSET_PIXEL_STATES + LAYOUT_COUNT * LAYOUT_WORDS_PIXEL_STATE)
-#define LAYOUT_TOTAL_WORDS                                                                         \
+#define LAYOUT_OFFSET_SPECULAR_LOBES                                                               \
     (LAYOUT_OFFSET_LIGHT_TREE_NODES + LAYOUT_COUNT * LAYOUT_WORDS_LIGHT_TREE_NODE)
+#define LAYOUT_TOTAL_WORDS                                                                         \
+    (LAYOUT_OFFSET_SPECULAR_LOBES + LAYOUT_COUNT * LAYOUT_WORDS_SPECULAR_LOBES)
 
 // count_loop_iterations: per invocation, how many iterations each loop really ran.
 struct LoopCounts {
@@ -137,7 +140,8 @@ static_assert(sizeof(FrameParams) == 4 * LAYOUT_WORDS_FRAME_PARAMS &&
               sizeof(PathState) == 4 * LAYOUT_WORDS_PATH_STATE &&
               sizeof(ShadowRay) == 4 * LAYOUT_WORDS_SHADOW_RAY &&
               sizeof(PixelState) == 4 * LAYOUT_WORDS_PIXEL_STATE &&
-              sizeof(LightTreeNode) == 4 * LAYOUT_WORDS_LIGHT_TREE_NODE);
+              sizeof(LightTreeNode) == 4 * LAYOUT_WORDS_LIGHT_TREE_NODE &&
+              sizeof(SpecularLobeParams) == 4 * LAYOUT_WORDS_SPECULAR_LOBES);
 static_assert(sizeof(LoopCounts) == 16 && sizeof(LoopParams) == 32);
 } // namespace vkpt::gpu::test
 #endif

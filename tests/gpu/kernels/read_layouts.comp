@@ -23,6 +23,7 @@ VKPT_READONLY_BUFFER(10, PathState, pathStates)
 VKPT_READONLY_BUFFER(11, ShadowRay, shadowRays)
 VKPT_READONLY_BUFFER(12, PixelState, pixelStates)
 VKPT_READONLY_BUFFER(13, LightTreeNode, lightTreeNodes)
+VKPT_READONLY_BUFFER(14, SpecularLobeParams, specularLobes)
 
 uint cursor;
 
@@ -166,19 +167,6 @@ void main() {
     putTextureSlot(materials[i].clearcoatNormalTexture);
     putTextureSlot(materials[i].sheenColorTexture);
     putTextureSlot(materials[i].sheenRoughnessTexture);
-    putTextureSlot(materials[i].specularTexture);
-    putTextureSlot(materials[i].specularColorTexture);
-    putFloat(materials[i].anisotropyStrength);
-    putFloat(materials[i].anisotropyRotationCos);
-    putFloat(materials[i].anisotropyRotationSin);
-    putUint(materials[i].anisotropyUnused);
-    putTextureSlot(materials[i].anisotropyTexture);
-    putFloat(materials[i].iridescence);
-    putFloat(materials[i].iridescenceIor);
-    putFloat(materials[i].iridescenceThicknessMinimum);
-    putFloat(materials[i].iridescenceThicknessMaximum);
-    putTextureSlot(materials[i].iridescenceTexture);
-    putTextureSlot(materials[i].iridescenceThicknessTexture);
 
     cursor = LAYOUT_OFFSET_TEXTURES + i * LAYOUT_WORDS_TEXTURE_INFO;
     putUint(textures[i].texelOffset);
@@ -250,4 +238,19 @@ void main() {
     putUint(lightTreeNodes[i].child1);
     putUint(lightTreeNodes[i].parent);
     putUint(lightTreeNodes[i].flags);
+
+    cursor = LAYOUT_OFFSET_SPECULAR_LOBES + i * LAYOUT_WORDS_SPECULAR_LOBES;
+    putTextureSlot(specularLobes[i].specularTexture);
+    putTextureSlot(specularLobes[i].specularColorTexture);
+    putFloat(specularLobes[i].anisotropyStrength);
+    putFloat(specularLobes[i].anisotropyRotationCos);
+    putFloat(specularLobes[i].anisotropyRotationSin);
+    putUint(specularLobes[i].anisotropyUnused);
+    putTextureSlot(specularLobes[i].anisotropyTexture);
+    putFloat(specularLobes[i].iridescence);
+    putFloat(specularLobes[i].iridescenceIor);
+    putFloat(specularLobes[i].iridescenceThicknessMinimum);
+    putFloat(specularLobes[i].iridescenceThicknessMaximum);
+    putTextureSlot(specularLobes[i].iridescenceTexture);
+    putTextureSlot(specularLobes[i].iridescenceThicknessTexture);
 }

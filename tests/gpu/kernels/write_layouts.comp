@@ -23,6 +23,7 @@ VKPT_WRITEONLY_BUFFER(10, PathState, pathStates)
 VKPT_WRITEONLY_BUFFER(11, ShadowRay, shadowRays)
 VKPT_WRITEONLY_BUFFER(12, PixelState, pixelStates)
 VKPT_WRITEONLY_BUFFER(13, LightTreeNode, lightTreeNodes)
+VKPT_WRITEONLY_BUFFER(14, SpecularLobeParams, specularLobes)
 
 uint cursor;
 
@@ -175,19 +176,6 @@ void main() {
     materials[i].clearcoatNormalTexture = takeTextureSlot();
     materials[i].sheenColorTexture = takeTextureSlot();
     materials[i].sheenRoughnessTexture = takeTextureSlot();
-    materials[i].specularTexture = takeTextureSlot();
-    materials[i].specularColorTexture = takeTextureSlot();
-    materials[i].anisotropyStrength = takeFloat();
-    materials[i].anisotropyRotationCos = takeFloat();
-    materials[i].anisotropyRotationSin = takeFloat();
-    materials[i].anisotropyUnused = takeUint();
-    materials[i].anisotropyTexture = takeTextureSlot();
-    materials[i].iridescence = takeFloat();
-    materials[i].iridescenceIor = takeFloat();
-    materials[i].iridescenceThicknessMinimum = takeFloat();
-    materials[i].iridescenceThicknessMaximum = takeFloat();
-    materials[i].iridescenceTexture = takeTextureSlot();
-    materials[i].iridescenceThicknessTexture = takeTextureSlot();
 
     cursor = LAYOUT_OFFSET_TEXTURES + i * LAYOUT_WORDS_TEXTURE_INFO;
     textures[i].texelOffset = takeUint();
@@ -259,4 +247,19 @@ void main() {
     lightTreeNodes[i].child1 = takeUint();
     lightTreeNodes[i].parent = takeUint();
     lightTreeNodes[i].flags = takeUint();
+
+    cursor = LAYOUT_OFFSET_SPECULAR_LOBES + i * LAYOUT_WORDS_SPECULAR_LOBES;
+    specularLobes[i].specularTexture = takeTextureSlot();
+    specularLobes[i].specularColorTexture = takeTextureSlot();
+    specularLobes[i].anisotropyStrength = takeFloat();
+    specularLobes[i].anisotropyRotationCos = takeFloat();
+    specularLobes[i].anisotropyRotationSin = takeFloat();
+    specularLobes[i].anisotropyUnused = takeUint();
+    specularLobes[i].anisotropyTexture = takeTextureSlot();
+    specularLobes[i].iridescence = takeFloat();
+    specularLobes[i].iridescenceIor = takeFloat();
+    specularLobes[i].iridescenceThicknessMinimum = takeFloat();
+    specularLobes[i].iridescenceThicknessMaximum = takeFloat();
+    specularLobes[i].iridescenceTexture = takeTextureSlot();
+    specularLobes[i].iridescenceThicknessTexture = takeTextureSlot();
 }
