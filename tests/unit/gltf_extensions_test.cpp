@@ -225,8 +225,8 @@ TEST(GltfSpecular, ReadsFactorsAndTextures) {
     const SceneFeatures features = analyseScene(scene);
     EXPECT_TRUE(features.specularTextures);
     EXPECT_TRUE(features.kernelFeatures()[FEATURE_SPECULAR_TEXTURES]);
-    // The device record carries both slots.
-    const std::vector<gpu::Material> device = makeGpuMaterials(scene.materials);
+    // The device's specular lobe record carries both slots.
+    const std::vector<gpu::SpecularLobeParams> device = makeGpuSpecularLobes(scene.materials);
     EXPECT_EQ(device[1].specularTexture.texture, std::uint32_t(tinted.specularTexture.texture));
     EXPECT_EQ(device[1].specularColorTexture.texture,
               std::uint32_t(tinted.specularColorTexture.texture));

@@ -179,7 +179,7 @@ TEST(GltfAnisotropy, ReadsStrengthRotationAndTextureAndMakesTangents) {
     EXPECT_TRUE(features.anisotropyTextures);
     EXPECT_TRUE(features.tangents());
     EXPECT_TRUE(features.kernelFeatures()[FEATURE_ANISOTROPY]);
-    const std::vector<gpu::Material> device = makeGpuMaterials(scene.materials);
+    const std::vector<gpu::SpecularLobeParams> device = makeGpuSpecularLobes(scene.materials);
     EXPECT_EQ(device[2].anisotropyStrength, 1.0f);
     EXPECT_FLOAT_EQ(device[2].anisotropyRotationCos, std::cos(0.5f));
     EXPECT_FLOAT_EQ(device[2].anisotropyRotationSin, std::sin(0.5f));
@@ -208,7 +208,7 @@ TEST(GltfIridescence, ReadsFactorIorThicknessRangeAndTextures) {
     EXPECT_TRUE(features.iridescence);
     EXPECT_TRUE(features.iridescenceTextures);
     EXPECT_TRUE(features.kernelFeatures()[FEATURE_IRIDESCENCE]);
-    const std::vector<gpu::Material> device = makeGpuMaterials(scene.materials);
+    const std::vector<gpu::SpecularLobeParams> device = makeGpuSpecularLobes(scene.materials);
     EXPECT_EQ(device[1].iridescence, 1.0f);
     EXPECT_EQ(device[1].iridescenceThicknessMaximum, 700.0f);
     EXPECT_EQ(device[0].iridescence, 0.0f);
