@@ -20,10 +20,13 @@ public:
 
     void beginSample() { closestQueries_ = 0; }
 
-    ClosestHit closestHit(const glm::vec3& origin, const glm::vec3& direction) override {
-        SetIndex set = closestQueries_++ == 0 ? kCameraRays : kBounceRays;
-        sets_[set].rays.push_back({origin, direction, 0.0f, VKPT_FAR});
-        return answer_->closestHit(origin, direction);
+    // A query from tMin > 0 walks the previous ray again beyond a culled face: same set.
+    ClosestHit closestHit(const glm::vec3& origin, const glm::vec3& direction,
+                          float tMin) override {
+        if (tMin == 0.0f) ++closestQueries_;
+        SetIndex set = closestQueries_ == 1 ? kCameraRays : kBounceRays;
+        sets_[set].rays.push_back({origin, direction, tMin, VKPT_FAR});
+        return answer_->closestHit(origin, direction, tMin);
     }
 
     // A shadow ray before the first extension ray leaves the camera ray's hit.
