@@ -55,6 +55,7 @@
     SCENE(BINDING_TRIANGLE_NORMALS)                                                                \
     SCENE(BINDING_TRIANGLE_TANGENTS)                                                               \
     SCENE(BINDING_MATERIALS)                                                                       \
+    SCENE(BINDING_MATERIAL_LOBES)                                                                  \
     SCENE(BINDING_TEXTURES)                                                                        \
     SCENE(BINDING_EMITTERS)                                                                        \
     SCENE(BINDING_LIGHT_TREE)                                                                      \

@@ -57,6 +57,9 @@
       tangents,          VIEW, sceneTangents)                                                      \
     X(materials,         Material,         BINDING_MATERIALS,           4, TEXELS,  SPLIT,         \
       materials,         VIEW, sceneMaterial)                                                      \
+    /* One per material; empty unless features.diffuseTransmission or features.dispersion */     \
+    X(materialLobes,     MaterialLobes,    BINDING_MATERIAL_LOBES,     31, STORAGE, SPLIT,         \
+      materialLobes,     VIEW, sceneMaterialLobes)                                                 \
     X(emitters,          Emitter,          BINDING_EMITTERS,            5, TEXELS,  SPLIT,         \
       emitters,          VIEW, sceneEmitter)                                                       \
     /* The light BVH; empty unless features.lightTree */                                           \
