@@ -736,6 +736,7 @@ VKPT_FN BsdfSample sampleBsdf(ShadingMaterial m, vec3 wo, vec2 uDirection, float
     if (uLobe < p.glass) return sampleGlassLobe(m, wo, uDirection, uLobe / p.glass, p);
     uLobe -= p.glass;
     vec3 wi;
+    bool transmits = false; // the diffuse transmission's sample: the only one that may go below
     if (uLobe < p.specular) {
         wi = sampleBaseGgxReflection(m, wo, uDirection);
     } else if (uLobe < p.specular + p.clearcoat) {
@@ -751,11 +752,11 @@ VKPT_FN BsdfSample sampleBsdf(ShadingMaterial m, vec3 wo, vec2 uDirection, float
     } else if (hasDiffuseTransmission(m) &&
                uLobe < p.specular + p.clearcoat + p.sheen + p.diffuseTransmission) {
         wi = mirroredThroughSurface(sampleCosineHemisphere(uDirection));
+        transmits = true;
     } else {
         wi = sampleCosineHemisphere(uDirection);
     }
-    bool transmits = hasDiffuseTransmission(m) && wi.z < 0.0f;
-    if (!(wi.z > 0.0f) && !transmits) return s;
+    if (transmits ? !(wi.z < 0.0f) : !(wi.z > 0.0f)) return s;
     float pdf = mixtureBsdfPdf(m, wo, wi, p);
     if (!(pdf > 0.0f)) return s;
     s.direction = wi;

@@ -6,7 +6,7 @@
 // n(λ) = A + B/λ² through n_d at the Fraunhofer d line with (n_F − n_C) = (n_d − 1)/V_d between
 // the F and C lines (λ_F = 486.1, λ_D = 587.6, λ_C = 656.3 nm):
 //   n(λ) = n_d + (n_d − 1)/V_d · (1/λ² − 1/λ_D²) / (1/λ_F² − 1/λ_C²)
-// (the extension's 523655/λ² − 1.5168 rounds those constants).
+// (the extension's 523655/λ² − 1.5168 rounds those constants: 523453.7 and 1.51605).
 //
 // A path takes its wavelength λ, uniform on [380, 780] nm, from its camera sample's dimension
 // (DIM_CAMERA's z at bounce 0: one hero wavelength per path, whichever vertex needs it), and its
