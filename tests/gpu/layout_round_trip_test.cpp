@@ -129,7 +129,7 @@ SharedStructs makeStructs() {
         s.environments.push_back(makeEnvironment(x));
         s.cameras.push_back(makeCamera(x));
         s.frames.push_back(makeFrameParams(x));
-        s.pathStates.push_back({x.v3(), x.u(), x.v3(), x.u(), x.v3(), x.f(), x.v3(), x.u()});
+        s.pathStates.push_back({x.v3(), x.u(), x.v3(), x.u(), x.v3(), x.f(), x.v3(), x.f()});
         s.shadowRays.push_back({x.v3(), x.u(), x.v3(), x.f(), x.v3(), x.f()});
         s.pixelStates.push_back({x.v3(), x.u(), x.v3(), x.u(), x.f(), x.f(), x.u(), x.u(), x.v3(),
                                  x.u(), x.v3(), x.u()});

@@ -215,7 +215,7 @@ void main() {
     putVec3(pathStates[i].lightScale);
     putFloat(pathStates[i].previousBsdfPdf);
     putVec3(pathStates[i].mediumCoefficient);
-    putUint(pathStates[i].unusedMedium);
+    putFloat(pathStates[i].wavelength);
 
     cursor = LAYOUT_OFFSET_SHADOW_RAYS + i * LAYOUT_WORDS_SHADOW_RAY;
     putVec3(shadowRays[i].origin);

@@ -224,7 +224,7 @@ void main() {
     pathStates[i].lightScale = takeVec3();
     pathStates[i].previousBsdfPdf = takeFloat();
     pathStates[i].mediumCoefficient = takeVec3();
-    pathStates[i].unusedMedium = takeUint();
+    pathStates[i].wavelength = takeFloat();
 
     cursor = LAYOUT_OFFSET_SHADOW_RAYS + i * LAYOUT_WORDS_SHADOW_RAY;
     shadowRays[i].origin = takeVec3();
