@@ -1,10 +1,11 @@
-// lobe_render_test.cpp — the lobes only some scenes compile, rendered whole, one test body per
-// executor (tests/support/render_executors.h): light sampling through a leaf that transmits
+// lobe_render_test.cpp — the lobes only some scenes compile, rendered whole by vkpt-ref
+// (tests/support/render_executors.h): light sampling through a leaf that transmits
 // diffusely (KHR_materials_diffuse_transmission) gives the image BSDF sampling alone gives, and a
 // lossless dispersive glass ball (KHR_materials_dispersion) in a uniform environment still shows
 // the environment's colour on average: the wavelength weights keep a white path white.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -15,30 +16,55 @@
 namespace vkpt::test {
 namespace {
 
+// vkpt-ref only: the device's images of these scenes equal the reference's at one seed
+// (tests/image/lobe_same_seed_test.cpp), and a device instance would compile two more feature
+// sets' pipelines (about 30 s each on lavapipe) to show it again.
 template <typename Executor> class LobeRenders : public Executor {};
-TYPED_TEST_SUITE(LobeRenders, Executors);
+using ReferenceOnly = ::testing::Types<ReferenceExecutor>;
+TYPED_TEST_SUITE(LobeRenders, ReferenceOnly);
+
+// The mean luminance of the pixels in [first, last]² of a square image, with its standard error
+// from the pixels' own variances of the mean (as meanLuminance does for the whole image).
+MeanEstimate squareMeanLuminance(const RenderOutput& output, std::uint32_t first,
+                                 std::uint32_t last) {
+    double sum = 0.0, varianceSum = 0.0, pixels = 0.0;
+    for (std::uint32_t y = first; y <= last; ++y)
+        for (std::uint32_t x = first; x <= last; ++x) {
+            const std::size_t i = std::size_t(y) * output.image.width + x;
+            const double n = double(output.sampleCounts[i]);
+            sum += double(output.luminanceMean[i]);
+            varianceSum += std::max(0.0, double(output.luminanceM2[i])) / (n - 1.0) / n;
+            pixels += 1.0;
+        }
+    return {sum / pixels, std::sqrt(varianceSum) / pixels};
+}
 
 // scenes/test/lobes/leaf.gltf: the leaf is lit only by the panel behind it. With light samples
 // the panel is reached through the leaf by shadow rays from its far side, weighed by MIS against
 // transmitted BSDF samples; with none, BSDF sampling alone finds it (weight 1). The two
 // estimators have the same expectation only if light sampling through the wall is right (a
 // shadow ray left on the near side, or a transmitted sample weighed as if light sampling could
-// not reach it, would darken or brighten the leaf): a per-pixel z-test at different seeds,
-// family-wise α = 0.01 (Šidák over the pixels). 16 × 16 pixels at 64 samples: the leaf covers a
-// third of the image and BSDF sampling alone converges there at this count.
+// not reach it, would darken or brighten the leaf). Compared on the leaf's own pixels (the
+// central 6 × 6 of 16 × 16, all inside it), whose means at different seeds agree within 4
+// standard errors of their difference; the floor and walls around it, lit by light that
+// crossed the leaf and found by BSDF sampling alone, carry fireflies that a per-pixel test
+// would take for a difference. 64 samples: the leaf region's standard error is then about 2 %.
 TYPED_TEST(LobeRenders, LightSamplingThroughALeafAgreesWithBsdfSamplingAlone) {
     LoadedTestScene leaf = loadTestScene("test/lobes/leaf.gltf");
     RenderSettings settings = testSettings(16, 64);
     settings.lightSamples = 2;
     settings.seed = 1;
-    RenderOutput withLights = this->render(leaf, settings);
+    const MeanEstimate withLights = squareMeanLuminance(this->render(leaf, settings), 5, 10);
     settings.lightSamples = 0;
     settings.seed = 2;
-    RenderOutput bsdfAlone = this->render(leaf, settings);
-    ZTestResult z = zTestPerPixel(withLights, bsdfAlone, 0.01);
-    std::printf("leaf, light sampling vs BSDF sampling alone: %s\n", z.summary.c_str());
-    EXPECT_TRUE(z.passed) << z.summary;
-    EXPECT_GT(meanLuminance(withLights).mean, 0.0);
+    const MeanEstimate bsdfAlone = squareMeanLuminance(this->render(leaf, settings), 5, 10);
+    const double sigma = std::hypot(withLights.standardError, bsdfAlone.standardError);
+    std::printf("leaf: light sampling %.5f ± %.5f, BSDF sampling alone %.5f ± %.5f\n",
+                withLights.mean, withLights.standardError, bsdfAlone.mean, bsdfAlone.standardError);
+    EXPECT_GT(withLights.mean, 0.0);
+    EXPECT_NEAR(withLights.mean, bsdfAlone.mean, 4.0 * sigma);
+    // Light sampling through the wall is what makes the leaf converge: it halves the error.
+    EXPECT_LT(withLights.standardError, 0.5 * bsdfAlone.standardError);
 }
 
 const glm::vec3 kEnvironment(0.5f, 1.0f, 2.0f);
