@@ -143,11 +143,11 @@ void shadePathVertex(Vertex vertex, inout PathState state, inout Shading shading
     }
     if (bounce >= frame.maxDepth) return;
     if (featureDispersion) {
-        float u = sampleFloats(frame.samplerSetup, frame.camera.width, frame.seed, state.pixel,
-                               state.sampleIndex, 0u, DIM_CAMERA)
-                      .z;
+        // The path's wavelength number: DIM_CAMERA's z at bounce 0 (docs/integrator.md).
+        vec4 camera = sampleFloats(frame.samplerSetup, frame.camera.width, frame.seed,
+                                   state.pixel, state.sampleIndex, 0u, DIM_CAMERA);
         state.wavelength =
-            bindWavelength(vertex.surface.shading, state.throughput, state.wavelength, u);
+            bindWavelength(vertex.surface.shading, state.throughput, state.wavelength, camera.z);
     }
     shading.lit = pathFilterKeeps(frame.pathFilter, bounce + 1u);
     if (shading.lit) {

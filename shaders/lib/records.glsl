@@ -89,21 +89,22 @@ Material fetchMaterial(uint i) {
     uvec4 clearcoat = RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 18u);
     uvec4 anisotropy = RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 33u);
     vec4 iridescence = texelVec4(RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 36u));
-    return Material(texelVec4(colour), texelVec3(emission), emission.w, uintBitsToFloat(factors.x),
-                    uintBitsToFloat(factors.y), uintBitsToFloat(factors.z), factors.w,
-                    texelVec3(specular), uintBitsToFloat(specular.w), fetchTextureSlot(i, 4u),
-                    fetchTextureSlot(i, 6u), fetchTextureSlot(i, 8u), fetchTextureSlot(i, 10u),
-                    uintBitsToFloat(RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 12u).x), 0u, 0u, 0u,
-                    glass.x, glass.y, glass.z, glass.w, texelVec3(volume), volume.w,
+    return Material(texelVec4(colour), texelVec3(emission), emission.w,
+                    uintBitsToFloat(factors.x), uintBitsToFloat(factors.y),
+                    uintBitsToFloat(factors.z), factors.w, texelVec3(specular),
+                    uintBitsToFloat(specular.w), fetchTextureSlot(i, 4u), fetchTextureSlot(i, 6u),
+                    fetchTextureSlot(i, 8u), fetchTextureSlot(i, 10u),
+                    uintBitsToFloat(RECORD_TEXEL(materials, MATERIAL_TEXELS, i, 12u).x), 0u,
+                    0u, 0u, glass.x, glass.y, glass.z, glass.w, texelVec3(volume), volume.w,
                     fetchTextureSlot(i, 15u), texelVec3(sheen), uintBitsToFloat(sheen.w),
                     uintBitsToFloat(clearcoat.x), uintBitsToFloat(clearcoat.y),
                     uintBitsToFloat(clearcoat.z), clearcoat.w, fetchTextureSlot(i, 19u),
                     fetchTextureSlot(i, 21u), fetchTextureSlot(i, 23u), fetchTextureSlot(i, 25u),
-                    fetchTextureSlot(i, 27u), fetchTextureSlot(i, 29u), fetchTextureSlot(i, 31u),
-                    uintBitsToFloat(anisotropy.x), uintBitsToFloat(anisotropy.y),
-                    uintBitsToFloat(anisotropy.z), anisotropy.w, fetchTextureSlot(i, 34u),
-                    iridescence.x, iridescence.y, iridescence.z, iridescence.w,
-                    fetchTextureSlot(i, 37u), fetchTextureSlot(i, 39u));
+                    fetchTextureSlot(i, 27u), fetchTextureSlot(i, 29u),
+                    fetchTextureSlot(i, 31u), uintBitsToFloat(anisotropy.x),
+                    uintBitsToFloat(anisotropy.y), uintBitsToFloat(anisotropy.z), anisotropy.w,
+                    fetchTextureSlot(i, 34u), iridescence.x, iridescence.y, iridescence.z,
+                    iridescence.w, fetchTextureSlot(i, 37u), fetchTextureSlot(i, 39u));
 }
 
 #define INSTANCE_TEXELS 7u // sizeof(Instance) / 16
@@ -114,8 +115,8 @@ Instance fetchWalkInstance(uint i) {
     uvec4 flags = RECORD_TEXEL(instances, INSTANCE_TEXELS, i, 3u);
     return Instance(texelVec4(RECORD_TEXEL(instances, INSTANCE_TEXELS, i, 0u)),
                     texelVec4(RECORD_TEXEL(instances, INSTANCE_TEXELS, i, 1u)),
-                    texelVec4(RECORD_TEXEL(instances, INSTANCE_TEXELS, i, 2u)), flags.x, flags.y,
-                    flags.z, flags.w, vec4(0.0), vec4(0.0), vec4(0.0));
+                    texelVec4(RECORD_TEXEL(instances, INSTANCE_TEXELS, i, 2u)), flags.x,
+                    flags.y, flags.z, flags.w, vec4(0.0), vec4(0.0), vec4(0.0));
 }
 
 Instance fetchInstance(uint i) {
