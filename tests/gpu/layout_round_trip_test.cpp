@@ -41,6 +41,7 @@ struct SharedStructs {
     std::vector<ShadowRay> shadowRays;
     std::vector<PixelState> pixelStates;
     std::vector<LightTreeNode> lightTreeNodes;
+    std::vector<MaterialLobes> materialLobes;
 };
 
 TextureSlot makeTextureSlot(Values& x) {
@@ -135,6 +136,8 @@ SharedStructs makeStructs() {
                                  x.u(), x.v3(), x.u()});
         s.lightTreeNodes.push_back(
             {x.v3(), x.f(), x.v3(), x.f(), x.v3(), x.f(), x.u(), x.u(), x.u(), x.u()});
+        s.materialLobes.push_back(
+            {x.v3(), x.f(), x.f(), x.u(), x.u(), x.u(), makeTextureSlot(x), makeTextureSlot(x)});
     }
     return s;
 }
@@ -161,6 +164,7 @@ std::vector<uint> flatten(const SharedStructs& s) {
     appendWords(words, s.shadowRays);
     appendWords(words, s.pixelStates);
     appendWords(words, s.lightTreeNodes);
+    appendWords(words, s.materialLobes);
     return words;
 }
 
@@ -199,11 +203,12 @@ TEST_F(LayoutRoundTrip, DeviceReadsEveryFieldAtItsCppOffset) {
     const Buffer shadowRays = structBuffer("shadowRays", s.shadowRays);
     const Buffer pixelStates = structBuffer("pixelStates", s.pixelStates);
     const Buffer lightTreeNodes = structBuffer("lightTreeNodes", s.lightTreeNodes);
+    const Buffer materialLobes = structBuffer("materialLobes", s.materialLobes);
     const Kernel kernel = makeKernel("read_layouts", LAYOUT_BUFFER_COUNT, 0);
     runKernel(kernel,
               {&bvhNodes, &triangles, &triangleNormals, &materials, &textures, &emitters,
                &environments, &cameras, &words, &frames, &pathStates, &shadowRays, &pixelStates,
-               &lightTreeNodes},
+               &lightTreeNodes, &materialLobes},
               LAYOUT_COUNT);
 
     const std::vector<uint> expected = flatten(s);
@@ -234,11 +239,13 @@ TEST_F(LayoutRoundTrip, DeviceWritesEveryFieldAtItsCppOffset) {
     const Buffer pixelStates = makeStorageBuffer("pixelStates", LAYOUT_COUNT * sizeof(PixelState));
     const Buffer lightTreeNodes =
         makeStorageBuffer("lightTreeNodes", LAYOUT_COUNT * sizeof(LightTreeNode));
+    const Buffer materialLobes =
+        makeStorageBuffer("materialLobes", LAYOUT_COUNT * sizeof(MaterialLobes));
     const Kernel kernel = makeKernel("write_layouts", LAYOUT_BUFFER_COUNT, 0);
     runKernel(kernel,
               {&bvhNodes, &triangles, &triangleNormals, &materials, &textures, &emitters,
                &environments, &cameras, &words, &frames, &pathStates, &shadowRays, &pixelStates,
-               &lightTreeNodes},
+               &lightTreeNodes, &materialLobes},
               LAYOUT_COUNT);
 
     expectSameBytes(download<WideBvhNode>(context(), bvhNodes, LAYOUT_COUNT), s.bvhNodes,
@@ -264,6 +271,8 @@ TEST_F(LayoutRoundTrip, DeviceWritesEveryFieldAtItsCppOffset) {
                     s.lightTreeNodes, "lightTreeNodes");
     expectSameBytes(download<PixelState>(context(), pixelStates, LAYOUT_COUNT), s.pixelStates,
                     "pixelStates");
+    expectSameBytes(download<MaterialLobes>(context(), materialLobes, LAYOUT_COUNT),
+                    s.materialLobes, "materialLobes");
 }
 
 } // namespace

@@ -66,7 +66,7 @@ struct IntersectOutput {
 // lib/wavefront.h flattened to 32-bit words in declaration order, one region per struct type,
 // LAYOUT_COUNT records per region.
 #define LAYOUT_COUNT 5u
-#define LAYOUT_BUFFER_COUNT 14u // one per struct type, and the words (binding 8)
+#define LAYOUT_BUFFER_COUNT 15u // one per struct type, and the words (binding 8)
 #define LAYOUT_WORDS_BVH_NODE 20u
 #define LAYOUT_WORDS_TRIANGLE 12u
 #define LAYOUT_WORDS_TRIANGLE_NORMALS 12u
@@ -80,6 +80,7 @@ struct IntersectOutput {
 #define LAYOUT_WORDS_SHADOW_RAY 12u
 #define LAYOUT_WORDS_PIXEL_STATE 20u
 #define LAYOUT_WORDS_LIGHT_TREE_NODE 16u
+#define LAYOUT_WORDS_MATERIAL_LOBES 24u
 #define LAYOUT_OFFSET_BVH_NODES 0u
 #define LAYOUT_OFFSET_TRIANGLES (LAYOUT_OFFSET_BVH_NODES + LAYOUT_COUNT * LAYOUT_WORDS_BVH_NODE)
 #define LAYOUT_OFFSET_TRIANGLE_NORMALS                                                             \
@@ -99,8 +100,10 @@ struct IntersectOutput {
     (LAYOUT_OFFSET_SHADOW_RAYS + LAYOUT_COUNT * LAYOUT_WORDS_SHADOW_RAY)
 #define LAYOUT_OFFSET_LIGHT_TREE_NODES                                                             \
     (LAYOUT_OFFSET_PIXEL_STATES + LAYOUT_COUNT * LAYOUT_WORDS_PIXEL_STATE)
-#define LAYOUT_TOTAL_WORDS                                                                         \
+#define LAYOUT_OFFSET_MATERIAL_LOBES                                                               \
     (LAYOUT_OFFSET_LIGHT_TREE_NODES + LAYOUT_COUNT * LAYOUT_WORDS_LIGHT_TREE_NODE)
+#define LAYOUT_TOTAL_WORDS                                                                         \
+    (LAYOUT_OFFSET_MATERIAL_LOBES + LAYOUT_COUNT * LAYOUT_WORDS_MATERIAL_LOBES)
 
 // count_loop_iterations: per invocation, how many iterations each loop really ran.
 struct LoopCounts {

@@ -23,6 +23,7 @@ VKPT_READONLY_BUFFER(10, PathState, pathStates)
 VKPT_READONLY_BUFFER(11, ShadowRay, shadowRays)
 VKPT_READONLY_BUFFER(12, PixelState, pixelStates)
 VKPT_READONLY_BUFFER(13, LightTreeNode, lightTreeNodes)
+VKPT_READONLY_BUFFER(14, MaterialLobes, materialLobes)
 
 uint cursor;
 
@@ -250,4 +251,14 @@ void main() {
     putUint(lightTreeNodes[i].child1);
     putUint(lightTreeNodes[i].parent);
     putUint(lightTreeNodes[i].flags);
+
+    cursor = LAYOUT_OFFSET_MATERIAL_LOBES + i * LAYOUT_WORDS_MATERIAL_LOBES;
+    putVec3(materialLobes[i].diffuseTransmissionColor);
+    putFloat(materialLobes[i].diffuseTransmission);
+    putFloat(materialLobes[i].dispersion);
+    putUint(materialLobes[i].unused0);
+    putUint(materialLobes[i].unused1);
+    putUint(materialLobes[i].unused2);
+    putTextureSlot(materialLobes[i].diffuseTransmissionTexture);
+    putTextureSlot(materialLobes[i].diffuseTransmissionColorTexture);
 }

@@ -23,6 +23,7 @@ VKPT_WRITEONLY_BUFFER(10, PathState, pathStates)
 VKPT_WRITEONLY_BUFFER(11, ShadowRay, shadowRays)
 VKPT_WRITEONLY_BUFFER(12, PixelState, pixelStates)
 VKPT_WRITEONLY_BUFFER(13, LightTreeNode, lightTreeNodes)
+VKPT_WRITEONLY_BUFFER(14, MaterialLobes, materialLobes)
 
 uint cursor;
 
@@ -259,4 +260,14 @@ void main() {
     lightTreeNodes[i].child1 = takeUint();
     lightTreeNodes[i].parent = takeUint();
     lightTreeNodes[i].flags = takeUint();
+
+    cursor = LAYOUT_OFFSET_MATERIAL_LOBES + i * LAYOUT_WORDS_MATERIAL_LOBES;
+    materialLobes[i].diffuseTransmissionColor = takeVec3();
+    materialLobes[i].diffuseTransmission = takeFloat();
+    materialLobes[i].dispersion = takeFloat();
+    materialLobes[i].unused0 = takeUint();
+    materialLobes[i].unused1 = takeUint();
+    materialLobes[i].unused2 = takeUint();
+    materialLobes[i].diffuseTransmissionTexture = takeTextureSlot();
+    materialLobes[i].diffuseTransmissionColorTexture = takeTextureSlot();
 }
