@@ -1338,6 +1338,13 @@ def write_invalid_scenes():
          "a transmissionFactor of 1.5"),
         ("ior_below_one.gltf", glass_material_scene({"KHR_materials_ior": {"ior": 0.5}}),
          "an ior of 0.5"),
+        ("dispersion_negative.gltf", glass_material_scene(
+            {"KHR_materials_volume": {"thicknessFactor": 1},
+             "KHR_materials_dispersion": {"dispersion": -1}}),
+         "a KHR_materials_dispersion of -1"),
+        ("diffuse_transmission_out_of_range.gltf", glass_material_scene(
+            {"KHR_materials_diffuse_transmission": {"diffuseTransmissionFactor": 1.5}}),
+         "a diffuseTransmissionFactor of 1.5"),
         ("attenuation_distance_zero.gltf", glass_material_scene(
             {"KHR_materials_volume": {"thicknessFactor": 1, "attenuationDistance": 0}}),
          "an attenuationDistance of 0"),

@@ -109,6 +109,9 @@ void writeFeatures(JsonWriter& json, const RenderReport& r) {
     json.field("specularTextures", f.specularTextures);
     json.field("anisotropy", f.anisotropy).field("anisotropyTextures", f.anisotropyTextures);
     json.field("iridescence", f.iridescence).field("iridescenceTextures", f.iridescenceTextures);
+    json.field("diffuseTransmission", f.diffuseTransmission)
+        .field("diffuseTransmissionTextures", f.diffuseTransmissionTextures);
+    json.field("dispersion", f.dispersion);
     json.field("textureCoordinates", f.textureCoordinates());
     json.field("alphaMask", f.alphaMask).field("doubleSided", f.doubleSided);
     json.field("transmission", f.transmission);

@@ -115,6 +115,21 @@ makeGpuSpecularLobes(const std::vector<SceneMaterial>& materials) {
     return result;
 }
 
+std::vector<gpu::MaterialLobes> makeGpuMaterialLobes(const std::vector<SceneMaterial>& materials) {
+    std::vector<gpu::MaterialLobes> result;
+    result.reserve(materials.size());
+    for (const SceneMaterial& m : materials) {
+        gpu::MaterialLobes g{};
+        g.diffuseTransmission = m.hasDiffuseTransmission() ? m.diffuseTransmission : 0.0f;
+        g.diffuseTransmissionColor = m.diffuseTransmissionColor;
+        g.diffuseTransmissionTexture = makeSlot(m.diffuseTransmissionTexture);
+        g.diffuseTransmissionColorTexture = makeSlot(m.diffuseTransmissionColorTexture);
+        g.dispersion = m.hasDispersion() ? m.dispersion : 0.0f;
+        result.push_back(g);
+    }
+    return result;
+}
+
 GpuTextures makeGpuTextures(const Scene& scene) {
     GpuTextures result;
     std::vector<std::uint64_t> imageOffsets;

@@ -12,6 +12,10 @@ namespace vkpt {
 
 std::vector<gpu::Material> makeGpuMaterials(const std::vector<SceneMaterial>& materials);
 
+// The materialLobes array: one record per material, for scenes with diffuse transmission or
+// dispersion (only their kernels read it).
+std::vector<gpu::MaterialLobes> makeGpuMaterialLobes(const std::vector<SceneMaterial>& materials);
+
 struct GpuTextures {
     std::vector<gpu::TextureInfo> textures; // one per Scene::textures entry
     std::vector<std::uint32_t> texels;      // each image once, however many textures use it

@@ -93,6 +93,8 @@ PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options) {
     }
     prepared.materials = makeGpuMaterials(scene.materials);
     if (features.specularLobes()) prepared.specularLobes = makeGpuSpecularLobes(scene.materials);
+    if (features.diffuseTransmission || features.dispersion)
+        prepared.materialLobes = makeGpuMaterialLobes(scene.materials);
     if (features.metallicRoughnessMaterials)
         prepared.albedoTables.assign(gpu::albedoTableEntries.begin(),
                                      gpu::albedoTableEntries.end());

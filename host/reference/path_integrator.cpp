@@ -95,6 +95,7 @@ glm::vec3 integratePath(IntegratorContext& context, const SampleKey& key, const 
     float previousBsdfPdf = 0.0f;
     const bool volumes = gpu::sceneHasTransmission(view);
     glm::vec3 medium(0.0f); // σ of the medium the ray travels in; 0 outside every volume
+    float wavelength = VKPT_NO_WAVELENGTH; // nm, once the path meets dispersive glass
     for (std::uint32_t bounce = 0;; ++bounce) {
         RayKind kind = bounce == 0 ? RayKind::Camera : RayKind::Extension;
         ClosestHit hit = context.tracer.closest(origin, direction, kind);
@@ -120,6 +121,9 @@ glm::vec3 integratePath(IntegratorContext& context, const SampleKey& key, const 
             radiance += throughput * emitted * weight;
         }
         if (bounce >= settings.maxDepth) break;
+        if (scene.features.dispersion)
+            wavelength = gpu::bindWavelength(surface.shading, throughput, wavelength,
+                                             sampleFloats(key, 0, DIM_CAMERA).z);
         PathVertex vertex{surface, bounce, medium, volumes};
         if (gpu::pathFilterKeeps(filter, bounce + 1))
             radiance += throughput * estimateDirectWithMis(context, key, vertex);
@@ -132,7 +136,7 @@ glm::vec3 integratePath(IntegratorContext& context, const SampleKey& key, const 
             gpu::russianRouletteSurvival(throughput, bounce + 1, settings.rrStartDepth);
         if (scatter.russianRoulette >= survival) break;
         throughput /= survival;
-        previousBsdfPdf = gpu::misPdfOfBsdfSample(scatter.bsdf);
+        previousBsdfPdf = gpu::misPdfOfBsdfSample(scatter.bsdf, surface.shading);
         origin = gpu::offsetFromSurface(
             surface.position, gpu::continuationNormal(scatter.bsdf, surface.geometricNormal),
             surface.coordinateScale);

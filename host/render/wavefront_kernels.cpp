@@ -120,7 +120,8 @@ bool needsLayeredBsdf(const SceneFeatures& features) {
 // them as constants, pruned: shaders/CMakeLists.txt).
 bool needsMaterialExtensions(const SceneFeatures& features) {
     const std::array<bool, FEATURE_COUNT> on = features.kernelFeatures();
-    return on[FEATURE_SPECULAR_TEXTURES] || on[FEATURE_ANISOTROPY] || on[FEATURE_IRIDESCENCE];
+    return on[FEATURE_SPECULAR_TEXTURES] || on[FEATURE_ANISOTROPY] || on[FEATURE_IRIDESCENCE] ||
+           on[FEATURE_DIFFUSE_TRANSMISSION] || on[FEATURE_DISPERSION];
 }
 
 // The kernel's build in one embedded library, if that library has one.

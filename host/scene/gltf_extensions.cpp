@@ -26,6 +26,8 @@ const std::vector<std::string> kSupportedExtensions = {"KHR_materials_emissive_s
                                                        "KHR_materials_unlit",
                                                        "KHR_materials_anisotropy",
                                                        "KHR_materials_iridescence",
+                                                       "KHR_materials_diffuse_transmission",
+                                                       "KHR_materials_dispersion",
                                                        "KHR_materials_variants",
                                                        "KHR_draco_mesh_compression",
                                                        "EXT_meshopt_compression",

@@ -24,6 +24,8 @@ constexpr const char* kSheen = "KHR_materials_sheen";
 constexpr const char* kUnlit = "KHR_materials_unlit";
 constexpr const char* kAnisotropy = "KHR_materials_anisotropy";
 constexpr const char* kIridescence = "KHR_materials_iridescence";
+constexpr const char* kDiffuseTransmission = "KHR_materials_diffuse_transmission";
+constexpr const char* kDispersion = "KHR_materials_dispersion";
 
 std::string materialName(std::size_t index) {
     return "material " + std::to_string(index);
@@ -274,6 +276,39 @@ void readIridescence(const tinygltf::Material& material, std::size_t index, Text
         readExtensionTexture(*extension, "iridescenceThicknessTexture", textures, where);
 }
 
+// KHR_materials_diffuse_transmission: the share of the diffuse base transmitted, in [0, 1] (A of
+// its texture), and its colour, each channel in [0, 1] (RGB of its sRGB texture).
+void readDiffuseTransmission(const tinygltf::Material& material, std::size_t index,
+                             TextureTable& textures, SceneMaterial& converted) {
+    const tinygltf::Value* extension = findExtension(material.extensions, kDiffuseTransmission);
+    if (extension == nullptr) return;
+    const std::string where = materialName(index) + ": " + kDiffuseTransmission;
+    converted.diffuseTransmission =
+        static_cast<float>(readUnitNumber(*extension, "diffuseTransmissionFactor", 0.0, where));
+    const std::vector<double> color =
+        readNumbers(*extension, "diffuseTransmissionColorFactor", {1.0, 1.0, 1.0}, where);
+    for (double c : color)
+        if (c < 0.0 || c > 1.0)
+            throw GltfProblem(where + ": diffuseTransmissionColorFactor must be in [0, 1]");
+    converted.diffuseTransmissionColor = glm::vec3(glm::dvec3(color[0], color[1], color[2]));
+    converted.diffuseTransmissionTexture =
+        readExtensionTexture(*extension, "diffuseTransmissionTexture", textures, where);
+    converted.diffuseTransmissionColorTexture =
+        readExtensionTexture(*extension, "diffuseTransmissionColorTexture", textures, where);
+}
+
+// KHR_materials_dispersion: 20/V_d, at least 0 (0: none).
+void readDispersion(const tinygltf::Material& material, std::size_t index,
+                    SceneMaterial& converted) {
+    const tinygltf::Value* extension = findExtension(material.extensions, kDispersion);
+    if (extension == nullptr) return;
+    const std::string where = materialName(index) + ": " + kDispersion;
+    const double dispersion = readNumber(*extension, "dispersion", 0.0, where);
+    if (!(dispersion >= 0.0) || !std::isfinite(dispersion))
+        throw GltfProblem(where + ": dispersion must be a finite number >= 0");
+    converted.dispersion = static_cast<float>(dispersion);
+}
+
 void readTextures(const tinygltf::Material& material, std::size_t index, TextureTable& textures,
                   SceneMaterial& converted) {
     const std::string where = materialName(index) + ": ";
@@ -338,6 +373,8 @@ SceneMaterial convertMaterial(const tinygltf::Material& material, std::size_t in
     readSheen(material, index, textures, converted);
     readAnisotropy(material, index, textures, converted);
     readIridescence(material, index, textures, converted);
+    readDiffuseTransmission(material, index, textures, converted);
+    readDispersion(material, index, converted);
     return converted;
 }
 

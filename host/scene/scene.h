@@ -73,6 +73,13 @@ struct SceneMaterial {
     float iridescenceThicknessMaximum = 400.0f;   // nm
     TextureReference iridescenceTexture;          // linear: R factor
     TextureReference iridescenceThicknessTexture; // linear: G thickness
+    // KHR_materials_diffuse_transmission (factor 0: the diffuse base only reflects)
+    float diffuseTransmission = 0.0f;                 // diffuseTransmissionFactor
+    glm::vec3 diffuseTransmissionColor{1.0f};         // diffuseTransmissionColorFactor
+    TextureReference diffuseTransmissionTexture;      // linear: A factor
+    TextureReference diffuseTransmissionColorTexture; // sRGB: RGB colour
+    // KHR_materials_dispersion: 20/V_d (0: none)
+    float dispersion = 0.0f;
     // KHR_materials_unlit: the loader made the base colour the emission and the rest black
     // (gltf_materials.cpp); kept for reports and tests, shading needs nothing else.
     bool unlit = false;
@@ -97,13 +104,16 @@ struct SceneMaterial {
     bool needsTangents() const { return hasNormalMap() || hasAnisotropy(); }
     // A thin film over the GGX lobe: a Lambertian material has none to colour.
     bool hasIridescence() const { return !isDiffuseOnly() && iridescence > 0.0f; }
+    bool hasDiffuseTransmission() const { return diffuseTransmission > 0.0f && !unlit; }
+    // Dispersion shows where glass refracts into a volume (shared/bsdf.h, hasDispersion).
+    bool hasDispersion() const { return dispersion > 0.0f && transmits() && thickness > 0.0f; }
     bool hasSheen() const { return glm::any(glm::greaterThan(sheenColor, glm::vec3(0.0f))); }
 
     // Lambertian only: the glTF model with no metal, no specular layer, no glass and no
     // clearcoat or sheen.
     bool isDiffuseOnly() const {
         return metallic == 0.0f && specular == 0.0f && metallicRoughnessTexture.texture < 0 &&
-               !transmits() && !hasClearcoat() && !hasSheen();
+               !transmits() && !hasClearcoat() && !hasSheen() && !hasDiffuseTransmission();
     }
     bool transmits() const { return transmission > 0.0f || transmissionTexture.texture >= 0; }
     // Whether shading needs the dielectric extensions' data (FEATURE_TRANSMISSION).

@@ -77,6 +77,13 @@ void addMaterial(const SceneMaterial& material, SceneFeatures& features) {
         features.iridescenceTextures |= material.iridescenceTexture.texture >= 0 ||
                                         material.iridescenceThicknessTexture.texture >= 0;
     }
+    if (material.hasDiffuseTransmission()) {
+        features.diffuseTransmission = true;
+        features.diffuseTransmissionTextures |=
+            material.diffuseTransmissionTexture.texture >= 0 ||
+            material.diffuseTransmissionColorTexture.texture >= 0;
+    }
+    features.dispersion |= material.hasDispersion();
     if (material.hasAnisotropy()) {
         features.anisotropy = true;
         features.anisotropyTextures |= material.anisotropyTexture.texture >= 0;
@@ -147,6 +154,8 @@ std::array<bool, FEATURE_COUNT> SceneFeatures::kernelFeatures() const {
     on[FEATURE_SPECULAR_TEXTURES] = specularTextures;
     on[FEATURE_ANISOTROPY] = anisotropy;
     on[FEATURE_IRIDESCENCE] = iridescence;
+    on[FEATURE_DIFFUSE_TRANSMISSION] = diffuseTransmission;
+    on[FEATURE_DISPERSION] = dispersion;
     return on;
 }
 
@@ -180,6 +189,7 @@ SceneFeatures generalFeatures(const SceneFeatures& used) {
     all.clearcoatTextures = all.sheenTextures = all.specularTextures = true;
     all.anisotropy = all.anisotropyTextures = true;
     all.iridescence = all.iridescenceTextures = true;
+    all.diffuseTransmission = all.diffuseTransmissionTextures = all.dispersion = true;
     all.triangles = all.spheres = true;
     all.emissiveTriangles = all.emissiveSpheres = true;
     all.pointLights = all.spotLights = all.directionalLights = true;
@@ -199,6 +209,8 @@ std::string describeFeatures(const SceneFeatures& features) {
     appendIf(features.sheenMaterials, "sheen", names);
     appendIf(features.anisotropy, "anisotropy", names);
     appendIf(features.iridescence, "iridescence", names);
+    appendIf(features.diffuseTransmission, "diffuse transmission", names);
+    appendIf(features.dispersion, "dispersion", names);
     std::vector<std::string> textures;
     appendIf(features.baseColorTextures, "base colour", textures);
     appendIf(features.metallicRoughnessTextures, "metallic-roughness", textures);
@@ -210,6 +222,7 @@ std::string describeFeatures(const SceneFeatures& features) {
     appendIf(features.specularTextures, "specular", textures);
     appendIf(features.anisotropyTextures, "anisotropy", textures);
     appendIf(features.iridescenceTextures, "iridescence", textures);
+    appendIf(features.diffuseTransmissionTextures, "diffuse transmission", textures);
     if (!textures.empty()) names.push_back("textures (" + joined(textures) + ")");
     appendIf(features.alphaMask, "alpha mask", names);
     appendIf(features.doubleSided, "double-sided", names);

@@ -35,6 +35,11 @@ struct SceneFeatures {
     bool anisotropyTextures = false;  // its anisotropyTexture
     bool iridescence = false;         // KHR_materials_iridescence on a GGX material
     bool iridescenceTextures = false; // its factor or thickness texture
+    // KHR_materials_diffuse_transmission: some diffuse base transmits (materialLobes)
+    bool diffuseTransmission = false;
+    bool diffuseTransmissionTextures = false; // its factor or colour texture
+    // KHR_materials_dispersion on glass that bounds a volume: paths carry a wavelength
+    bool dispersion = false;
     bool triangles = false;
     bool spheres = false;
     // Meshes placed by instances: a two-level BVH. A layout, not an optional feature: --general
@@ -56,7 +61,8 @@ struct SceneFeatures {
     bool textures() const {
         return baseColorTextures || metallicRoughnessTextures || emissiveTextures ||
                normalTextures || transmissionTextures || clearcoatTextures || sheenTextures ||
-               specularTextures || anisotropyTextures || iridescenceTextures;
+               specularTextures || anisotropyTextures || iridescenceTextures ||
+               diffuseTransmissionTextures;
     }
     // TEXCOORD_0 is needed only to read textures.
     bool textureCoordinates() const { return textures(); }

@@ -41,6 +41,8 @@ void main() {
     pathStates[slot].previousBsdfPdf = 0.0;
     // Paths start outside every volume (shared/volume.h).
     if (featureTransmission) pathStates[slot].mediumCoefficient = vec3(0.0);
+    // Paths carry no wavelength until they meet dispersive glass (shared/dispersion.h).
+    if (featureDispersion) pathStates[slot].wavelength = VKPT_NO_WAVELENGTH;
     // A sample whose camera ray misses keeps these; shade_hits overwrites them at a hit.
     if (renderAovs) sampleFeatures[slot] = missFeatures();
     rays[slot] = RayRecord(cameraRayOrigin(frame.camera, film), slot, direction, 0u);

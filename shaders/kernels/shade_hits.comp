@@ -60,6 +60,9 @@ void storePathState(uint slot, PathState before, PathState after) {
         pathStates[slot].previousBsdfPdf = after.previousBsdfPdf;
     if (featureTransmission && !sameBits(after.mediumCoefficient, before.mediumCoefficient))
         pathStates[slot].mediumCoefficient = after.mediumCoefficient;
+    if (featureDispersion &&
+        floatBitsToUint(after.wavelength) != floatBitsToUint(before.wavelength))
+        pathStates[slot].wavelength = after.wavelength;
 }
 
 void clearLightSamples(uint ray) {
@@ -117,7 +120,7 @@ void continuePath(Vertex vertex, inout PathState state, inout Shading shading) {
         russianRouletteSurvival(state.throughput, passParams.bounce + 1u, frame.rrStartDepth);
     if (u.z >= survival) return;
     state.throughput /= survival;
-    state.previousBsdfPdf = misPdfOfBsdfSample(bsdf);
+    state.previousBsdfPdf = misPdfOfBsdfSample(bsdf, s.shading);
     vec3 origin = offsetFromSurface(s.position, continuationNormal(bsdf, s.geometricNormal),
                                     s.coordinateScale);
     if (featureTransmission && bsdfSampleTransmits(bsdf))
@@ -139,6 +142,13 @@ void shadePathVertex(Vertex vertex, inout PathState state, inout Shading shading
         state.radiance += state.throughput * emitted * weight;
     }
     if (bounce >= frame.maxDepth) return;
+    if (featureDispersion) {
+        // The path's wavelength number: DIM_CAMERA's z at bounce 0 (docs/integrator.md).
+        vec4 camera = sampleFloats(frame.samplerSetup, frame.camera.width, frame.seed,
+                                   state.pixel, state.sampleIndex, 0u, DIM_CAMERA);
+        state.wavelength =
+            bindWavelength(vertex.surface.shading, state.throughput, state.wavelength, camera.z);
+    }
     shading.lit = pathFilterKeeps(frame.pathFilter, bounce + 1u);
     if (shading.lit) {
         writePathLightSamples(vertex, state);

@@ -26,6 +26,8 @@ const bool featureSheen = false;
 const bool featureSpecularTextures = false;
 const bool featureAnisotropy = false;
 const bool featureIridescence = false;
+const bool featureDiffuseTransmission = false;
+const bool featureDispersion = false;
 #else
 // glTF GGX materials (diffuse-only scenes keep the Lambertian BSDF alone).
 layout(constant_id = FEATURE_METALLIC_ROUGHNESS) const bool featureMetallicRoughness = true;
@@ -42,6 +44,8 @@ layout(constant_id = FEATURE_SHEEN) const bool featureSheen = true;
 const bool featureSpecularTextures = false;
 const bool featureAnisotropy = false;
 const bool featureIridescence = false;
+const bool featureDiffuseTransmission = false;
+const bool featureDispersion = false;
 #else
 // Some GGX material has a KHR_materials_specular texture.
 layout(constant_id = FEATURE_SPECULAR_TEXTURES) const bool featureSpecularTextures = true;
@@ -49,6 +53,12 @@ layout(constant_id = FEATURE_SPECULAR_TEXTURES) const bool featureSpecularTextur
 layout(constant_id = FEATURE_ANISOTROPY) const bool featureAnisotropy = true;
 // Some GGX material has a KHR_materials_iridescence film.
 layout(constant_id = FEATURE_IRIDESCENCE) const bool featureIridescence = true;
+// Some material's diffuse base transmits (KHR_materials_diffuse_transmission): shading reads
+// materialLobes, and light sampling reaches the far side of a thin wall.
+layout(constant_id = FEATURE_DIFFUSE_TRANSMISSION) const bool featureDiffuseTransmission = true;
+// Some glass disperses (KHR_materials_dispersion): a path that meets it carries a wavelength in
+// PathState (shared/dispersion.h).
+layout(constant_id = FEATURE_DISPERSION) const bool featureDispersion = true;
 #endif
 #endif
 // Base colour, metallic-roughness or emissive textures, and the TEXCOORD_0 they are read at.

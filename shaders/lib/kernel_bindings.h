@@ -56,6 +56,7 @@
     SCENE(BINDING_TRIANGLE_TANGENTS)                                                               \
     SCENE(BINDING_MATERIALS)                                                                       \
     SCENE(BINDING_SPECULAR_LOBES)                                                                  \
+    SCENE(BINDING_MATERIAL_LOBES)                                                                  \
     SCENE(BINDING_TEXTURES)                                                                        \
     SCENE(BINDING_EMITTERS)                                                                        \
     SCENE(BINDING_LIGHT_TREE)                                                                      \

@@ -185,7 +185,7 @@ PathState fetchPathState(uint slot) {
     uvec4 c = RECORD_TEXEL(pathStateTexels, 4u, slot, 2u);
     uvec4 d = RECORD_TEXEL(pathStateTexels, 4u, slot, 3u);
     return PathState(texelVec3(a), a.w, texelVec3(b), b.w, texelVec3(c), uintBitsToFloat(c.w),
-                     texelVec3(d), d.w);
+                     texelVec3(d), uintBitsToFloat(d.w));
 }
 
 #endif // VKPT_RECORDS_GLSL

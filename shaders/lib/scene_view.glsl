@@ -101,6 +101,8 @@ bool sceneHasSheen() {
 #define sceneHasSpecularTextures(noSceneArgument) featureSpecularTextures
 #define sceneHasAnisotropy(noSceneArgument) featureAnisotropy
 #define sceneHasIridescence(noSceneArgument) featureIridescence
+#define sceneHasDiffuseTransmission(noSceneArgument) featureDiffuseTransmission
+#define sceneHasDispersion(noSceneArgument) featureDispersion
 
 bool sceneHasInstances() {
     return featureInstances;

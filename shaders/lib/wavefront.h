@@ -157,7 +157,10 @@ struct PathState {
                            // PDF_NOT_LIGHT_SAMPLED (shared/path_rules.h)
     // KHR_materials_volume: the medium the current ray travels in (shared/volume.h).
     vec3 mediumCoefficient; // Beer–Lambert σ per unit length; 0 outside every volume
-    uint unusedMedium;
+    // KHR_materials_dispersion (shared/dispersion.h): the path's wavelength in nm once it has
+    // met dispersive glass, VKPT_NO_WAVELENGTH before. Written and read only in scenes with
+    // FEATURE_DISPERSION.
+    float wavelength;
 };
 
 // A ray queue entry. The rays buffer holds two queues of slotCount entries: bounce b reads half

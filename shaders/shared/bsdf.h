@@ -37,6 +37,15 @@
 // KHR_materials_iridescence mixes a thin film's Fresnel term (iridescence.h) into the dielectric
 // highlight's and the metal's; the layering then takes the film's albedo as iridescentAlbedo.
 //
+// KHR_materials_diffuse_transmission splits the diffuse base between reflection and a Lambertian
+// transmission to the other side (the extension's mix(diffuse_brdf(baseColor),
+// diffuse_btdf(diffuseTransmissionColor), diffuseTransmission)), both under the specular layer:
+//   diffuse(wi above) = (1 − dt) · baseColor/π · (1 − Es(μo))(1 − Es(μi)) / (1 − Es_avg)
+//   diffuse(wi below) = dt · dtColor/π · (1 − Es(μo))(1 − Es(|μi|)) / (1 − Es_avg)
+// so the split keeps the reciprocal form's albedo (1 − Es(μo))·ρ, now shared by the two sides,
+// and the transmitted lobe is the reflected one mirrored through the surface (reciprocal under
+// swapping wo and wi, both sides' layers alike). Its sampler is the mirrored cosine hemisphere.
+//
 // KHR_materials_anisotropy stretches the base's GGX lobe (ggx_anisotropic.h; baseGgxReflection
 // and its pdf and sampler); the albedo tables then stand in at baseAlbedoAlpha's α per direction.
 //
@@ -49,6 +58,7 @@
 
 #include "albedo_lookup.h"
 #include "bsdf_dielectric.h"
+#include "dispersion.h"
 #include "ggx.h"
 #include "ggx_anisotropic.h"
 #include "host_device.h"
@@ -97,6 +107,12 @@ struct ShadingMaterial {
     float iridescence;
     float iridescenceIor;       // the film's index of refraction
     float iridescenceThickness; // the film's thickness in nanometres
+    // KHR_materials_diffuse_transmission: the share of the diffuse base transmitted to the other
+    // side, and its colour. 0: the diffuse base only reflects.
+    float diffuseTransmission;
+    vec3 diffuseTransmissionColor;
+    // KHR_materials_dispersion: 20/V_d of the glass (dispersion.h); 0: none.
+    float dispersion;
 };
 
 // roughness is perceptual; it is clamped to [0, 1] (the glTF range) before squaring. Opaque,
@@ -127,6 +143,43 @@ VKPT_FN ShadingMaterial makeShadingMaterial(vec3 baseColor, float metallic, floa
     m.iridescence = 0.0f;
     m.iridescenceIor = 1.3f;
     m.iridescenceThickness = 400.0f;
+    m.diffuseTransmission = 0.0f;
+    m.diffuseTransmissionColor = vec3(1.0f);
+    m.dispersion = 0.0f;
+    return m;
+}
+
+// factor in [0, 1] and colour (KHR_materials_diffuse_transmission).
+VKPT_FN ShadingMaterial withDiffuseTransmission(ShadingMaterial m, float factor, vec3 color) {
+    m.diffuseTransmission = clamp(factor, 0.0f, 1.0f);
+    m.diffuseTransmissionColor = clamp(color, vec3(0.0f), vec3(1.0f));
+    return m;
+}
+
+// A macro in a kernel, for the reason hasAnisotropy's note gives.
+#ifdef VKPT_FEATURES_GLSL
+#define hasDiffuseTransmission(m) (featureDiffuseTransmission && (m).diffuseTransmission > 0.0f)
+#define hasDispersion(m)                                                                           \
+    (featureDispersion && (m).dispersion > 0.0f && (m).transmission > 0.0f && !(m).thinWalled)
+#else
+VKPT_FN bool hasDiffuseTransmission(ShadingMaterial m) {
+    return m.diffuseTransmission > 0.0f;
+}
+// Dispersion shows where light refracts into a volume: thin walls do not bend it.
+VKPT_FN bool hasDispersion(ShadingMaterial m) {
+    return m.dispersion > 0.0f && m.transmission > 0.0f && !m.thinWalled;
+}
+#endif
+
+// The glass at `wavelength` (nm): the ratio of indices a refraction crosses, from the index at
+// that wavelength (dispersion.h). eta ≥ 1 enters the volume (eta = ior), eta < 1 leaves it
+// (1/ior). The specular layer's F0 keeps the d line's index (the extension disperses
+// refraction).
+VKPT_FN ShadingMaterial atWavelength(ShadingMaterial m, float wavelength) {
+    bool entering = m.eta >= 1.0f;
+    float iorD = entering ? m.eta : 1.0f / m.eta;
+    float ior = dispersiveIor(iorD, m.dispersion, wavelength);
+    m.eta = entering ? ior : 1.0f / ior;
     return m;
 }
 
@@ -351,12 +404,29 @@ VKPT_FN vec3 diffuseTransmittance(ShadingMaterial m, vec3 wo, vec3 wi) {
     return result;
 }
 
+// The diffuse base's reflectance: baseColor, less the share KHR_materials_diffuse_transmission
+// sends to the other side.
+VKPT_FN vec3 diffuseReflectance(ShadingMaterial m) {
+    if (!hasDiffuseTransmission(m)) return m.baseColor;
+    return (1.0f - m.diffuseTransmission) * m.baseColor;
+}
+
 // ggx is D G2 / (4 μo μi) at the half vector, cosVH its V·H and fresnelWeight Schlick's
 // (1 − V·H)^5 there.
 VKPT_FN vec3 evaluateOpaqueDielectric(ShadingMaterial m, vec3 wo, vec3 wi, float ggx, float cosVH,
                                       float fresnelWeight) {
     vec3 fresnel = baseFresnel(m, dielectricF0(m), cosVH, fresnelWeight);
-    return m.specular * ggx * fresnel + m.baseColor * VKPT_INV_PI * diffuseTransmittance(m, wo, wi);
+    return m.specular * ggx * fresnel +
+           diffuseReflectance(m) * VKPT_INV_PI * diffuseTransmittance(m, wo, wi);
+}
+
+// The base's diffuse lobes, wi below the surface: the Lambertian transmission, the reflected
+// lobe's mirror image, in the opaque dielectric's share (what metal and glass leave it).
+VKPT_FN vec3 evaluateDiffuseTransmission(ShadingMaterial m, vec3 wo, vec3 wi) {
+    vec3 mirrored = mirroredThroughSurface(wi);
+    float share = (1.0f - m.metallic) * (1.0f - m.transmission) * m.diffuseTransmission;
+    return (share * VKPT_INV_PI) * m.diffuseTransmissionColor *
+           diffuseTransmittance(m, wo, mirrored);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -476,7 +546,11 @@ VKPT_FN vec3 evaluateBsdf(ShadingMaterial m, vec3 wo, vec3 wi) {
     vec3 glass = vec3(0.0f); // for wi on either side
     if (m.transmission > 0.0f) glass = evaluateDielectric(glassLobeOf(m), wo, wi);
     if (!(wo.z > 0.0f)) return glassShare(m) * glass;
-    if (!(wi.z > 0.0f)) return (layersTransmittance(m, wo) * glassShare(m)) * glass;
+    if (!(wi.z > 0.0f)) {
+        vec3 transmitted = glassShare(m) * glass;
+        if (hasDiffuseTransmission(m)) transmitted += evaluateDiffuseTransmission(m, wo, wi);
+        return layersTransmittance(m, wo) * transmitted;
+    }
     vec3 f = evaluateBase(m, wo, wi, glass);
     if (hasSheen(m)) {
         f = evaluateSheen(m, wo, wi) + (1.0f - sheenAlbedoBound(m, wo.z)) * f;
@@ -500,6 +574,7 @@ struct LobeProbabilities {
     float clearcoat;
     float sheen;
     float glass;
+    float diffuseTransmission; // KHR_materials_diffuse_transmission's mirrored cosine hemisphere
 };
 
 // Each lobe's weight is its albedo at wo from the tables, by luminance, times what the layers
@@ -527,18 +602,24 @@ VKPT_FN LobeProbabilities lobeProbabilities(ShadingMaterial m, vec3 wo) {
                                        luminance(metalAlbedo(m, wo)), m.metallic);
     if (!(m.metallic > 0.0f || opaque * m.specular * maxComponent(dielectricF0(m)) > 0.0f))
         specularWeight = 0.0f;
-    float diffuseWeight = below * (1.0f - m.metallic) * opaque *
-                          luminance(m.baseColor * max(vec3(1.0f) - dielectricSpecular, vec3(0.0f)));
+    vec3 underSpecular = max(vec3(1.0f) - dielectricSpecular, vec3(0.0f));
+    float diffuseWeight =
+        below * (1.0f - m.metallic) * opaque * luminance(diffuseReflectance(m) * underSpecular);
     float glassWeight = below * glassShare(m);
+    float transmittedWeight = 0.0f;
+    if (hasDiffuseTransmission(m))
+        transmittedWeight = below * (1.0f - m.metallic) * opaque * m.diffuseTransmission *
+                            luminance(m.diffuseTransmissionColor * underSpecular);
     float lobes = (diffuseWeight > 0.0f ? 1.0f : 0.0f) + (specularWeight > 0.0f ? 1.0f : 0.0f) +
                   (clearcoatWeight > 0.0f ? 1.0f : 0.0f) + (sheenWeight > 0.0f ? 1.0f : 0.0f) +
-                  (glassWeight > 0.0f ? 1.0f : 0.0f);
+                  (glassWeight > 0.0f ? 1.0f : 0.0f) + (transmittedWeight > 0.0f ? 1.0f : 0.0f);
     LobeProbabilities p;
     p.diffuse = 0.0f;
     p.specular = 0.0f;
     p.clearcoat = 0.0f;
     p.sheen = 0.0f;
     p.glass = 0.0f;
+    p.diffuseTransmission = 0.0f;
     if (lobes == 0.0f) {
         p.diffuse = 1.0f;
         return p;
@@ -550,16 +631,18 @@ VKPT_FN LobeProbabilities lobeProbabilities(ShadingMaterial m, vec3 wo) {
         p.clearcoat = clearcoatWeight > 0.0f ? 1.0f : 0.0f;
         p.sheen = sheenWeight > 0.0f ? 1.0f : 0.0f;
         p.glass = glassWeight > 0.0f ? 1.0f : 0.0f;
+        p.diffuseTransmission = transmittedWeight > 0.0f ? 1.0f : 0.0f;
         return p;
     }
     float minimum = VKPT_MIN_LOBE_PROBABILITY;
-    float share = (1.0f - lobes * minimum) /
-                  (diffuseWeight + specularWeight + clearcoatWeight + sheenWeight + glassWeight);
+    float share = (1.0f - lobes * minimum) / (diffuseWeight + specularWeight + clearcoatWeight +
+                                              sheenWeight + glassWeight + transmittedWeight);
     if (diffuseWeight > 0.0f) p.diffuse = minimum + share * diffuseWeight;
     if (specularWeight > 0.0f) p.specular = minimum + share * specularWeight;
     if (clearcoatWeight > 0.0f) p.clearcoat = minimum + share * clearcoatWeight;
     if (sheenWeight > 0.0f) p.sheen = minimum + share * sheenWeight;
     if (glassWeight > 0.0f) p.glass = minimum + share * glassWeight;
+    if (transmittedWeight > 0.0f) p.diffuseTransmission = minimum + share * transmittedWeight;
     return p;
 }
 
@@ -576,7 +659,10 @@ VKPT_FN float clearcoatPdf(ShadingMaterial m, vec3 wo, vec3 wi) {
 // glass lobe's sampler reaches (a smooth glass's density is 0 everywhere: its samples are delta).
 VKPT_FN float mixtureBsdfPdf(ShadingMaterial m, vec3 wo, vec3 wi, LobeProbabilities p) {
     float pdf = p.glass > 0.0f ? p.glass * dielectricPdf(glassLobeOf(m), wo, wi) : 0.0f;
-    if (!(wi.z > 0.0f)) return pdf;
+    if (!(wi.z > 0.0f)) {
+        if (hasDiffuseTransmission(m)) pdf += p.diffuseTransmission * -wi.z * VKPT_INV_PI;
+        return pdf;
+    }
     vec3 h = normalize(wo + wi);
     pdf += p.diffuse * wi.z * VKPT_INV_PI;
     if (p.specular > 0.0f) pdf += p.specular * baseGgxReflectionPdf(m, wo, h);
@@ -633,9 +719,9 @@ VKPT_FN BsdfSample sampleGlassLobe(ShadingMaterial m, vec3 wo, vec2 u, float uCh
 }
 
 // uDirection places the direction within the lobe, uLobe picks the lobe (metallic-roughness
-// only; in the order glass, specular, clearcoat, sheen, diffuse). A GGX sample reflected below
-// the surface is invalid: the path ends there, which is the energy single-scattering microfacet
-// models lose by design.
+// only; in the order glass, specular, clearcoat, sheen, diffuse transmission, diffuse). A GGX
+// sample reflected below the surface is invalid: the path ends there, which is the energy
+// single-scattering microfacet models lose by design.
 VKPT_FN BsdfSample sampleBsdf(ShadingMaterial m, vec3 wo, vec2 uDirection, float uLobe) {
     BsdfSample s = invalidBsdfSample();
     if (!m.metallicRoughness) {
@@ -650,6 +736,7 @@ VKPT_FN BsdfSample sampleBsdf(ShadingMaterial m, vec3 wo, vec2 uDirection, float
     if (uLobe < p.glass) return sampleGlassLobe(m, wo, uDirection, uLobe / p.glass, p);
     uLobe -= p.glass;
     vec3 wi;
+    bool transmits = false; // the diffuse transmission's sample: the only one that may go below
     if (uLobe < p.specular) {
         wi = sampleBaseGgxReflection(m, wo, uDirection);
     } else if (uLobe < p.specular + p.clearcoat) {
@@ -662,15 +749,19 @@ VKPT_FN BsdfSample sampleBsdf(ShadingMaterial m, vec3 wo, vec2 uDirection, float
         wi = fromClearcoatFrame(m, wiC);
     } else if (uLobe < p.specular + p.clearcoat + p.sheen) {
         wi = sampleUniformHemisphere(uDirection);
+    } else if (hasDiffuseTransmission(m) &&
+               uLobe < p.specular + p.clearcoat + p.sheen + p.diffuseTransmission) {
+        wi = mirroredThroughSurface(sampleCosineHemisphere(uDirection));
+        transmits = true;
     } else {
         wi = sampleCosineHemisphere(uDirection);
     }
-    if (!(wi.z > 0.0f)) return s;
+    if (transmits ? !(wi.z < 0.0f) : !(wi.z > 0.0f)) return s;
     float pdf = mixtureBsdfPdf(m, wo, wi, p);
     if (!(pdf > 0.0f)) return s;
     s.direction = wi;
     s.pdf = pdf;
-    s.weight = evaluateBsdf(m, wo, wi) * (wi.z / pdf);
+    s.weight = evaluateBsdf(m, wo, wi) * (abs(wi.z) / pdf);
     s.valid = true;
     return s;
 }

@@ -283,6 +283,27 @@ struct SpecularLobeParams {
     TextureSlot iridescenceThicknessTexture; // linear; thickness in .g
 };
 
+// The lobes that only some scenes have, in an array of their own (materialLobes, one record per
+// material, empty unless FEATURE_DIFFUSE_TRANSMISSION or FEATURE_DISPERSION), so that the
+// Material record every scene reads does not grow for them: only the kernels specialised for
+// those features read it.
+struct MaterialLobes {
+    // KHR_materials_diffuse_transmission (shared/bsdf.h): the share of the diffuse base that
+    // passes to the other side, and its colour. 0: the diffuse base only reflects.
+    vec3 diffuseTransmissionColor; // diffuseTransmissionColorFactor, linear RGB
+    float diffuseTransmission;     // diffuseTransmissionFactor
+    // KHR_materials_dispersion (shared/dispersion.h): 20/V, V the Abbe number. 0: none.
+    float dispersion;
+    uint unused0;
+    uint unused1;
+    uint unused2;
+    TextureSlot diffuseTransmissionTexture;      // linear; factor in .a
+    TextureSlot diffuseTransmissionColorTexture; // sRGB; colour in .rgb
+};
+
+// A path's wavelength before it meets dispersive glass (PathState, shared/dispersion.h).
+#define VKPT_NO_WAVELENGTH 0.0f
+
 // ---------------------------------------------------------------------------------------------
 // Textures: RGBA8 texels packed one per uint (R in the low byte, as unpackUnorm4x8 reads
 // them) in one storage buffer, each texture a row-major block starting at texelOffset, row 0
@@ -382,10 +403,12 @@ struct EnvironmentParams {
 #define FEATURE_SHEEN 12
 #define FEATURE_INSTANCES 13  // a two-level BVH: meshes placed by instances
 #define FEATURE_LIGHT_TREE 14 // emitters chosen by the light BVH (lightTree), not the power CDF
-#define FEATURE_SPECULAR_TEXTURES 15 // KHR_materials_specular textures on a GGX material
-#define FEATURE_ANISOTROPY 16        // KHR_materials_anisotropy on a GGX material
-#define FEATURE_IRIDESCENCE 17       // KHR_materials_iridescence on a GGX material
-#define FEATURE_COUNT 18
+#define FEATURE_SPECULAR_TEXTURES 15    // KHR_materials_specular textures on a GGX material
+#define FEATURE_ANISOTROPY 16           // KHR_materials_anisotropy on a GGX material
+#define FEATURE_IRIDESCENCE 17          // KHR_materials_iridescence on a GGX material
+#define FEATURE_DIFFUSE_TRANSMISSION 18 // KHR_materials_diffuse_transmission (materialLobes)
+#define FEATURE_DISPERSION 19           // KHR_materials_dispersion: paths carry a wavelength
+#define FEATURE_COUNT 20
 
 // ---------------------------------------------------------------------------------------------
 // The camera (shared/camera.h). Pixel (0, 0) is the top-left; a sample at (x + u, y + v) has
@@ -449,6 +472,9 @@ static_assert(offsetof(Material, sheenColor) == 272 && offsetof(Material, sheenR
               offsetof(Material, clearcoatNormalTexture) == 368 &&
               offsetof(Material, sheenColorTexture) == 400 &&
               offsetof(Material, sheenRoughnessTexture) == 432);
+static_assert(sizeof(MaterialLobes) == 96 && offsetof(MaterialLobes, dispersion) == 16 &&
+              offsetof(MaterialLobes, diffuseTransmissionTexture) == 32 &&
+              offsetof(MaterialLobes, diffuseTransmissionColorTexture) == 64);
 static_assert(sizeof(TextureInfo) == 16);
 static_assert(sizeof(Emitter) == 64 && offsetof(Emitter, direction) == 16 &&
               offsetof(Emitter, primitive) == 28 && offsetof(Emitter, intensity) == 32 &&

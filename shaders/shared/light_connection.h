@@ -8,6 +8,7 @@
 #include "bsdf.h"
 #include "host_device.h"
 #include "lights.h"
+#include "path_rules.h"
 #include "ray_offset.h"
 #include "scene_view.h"
 #include "surface.h"
@@ -46,11 +47,18 @@ VKPT_FN LightConnection connectLightSample(SurfacePoint s, vec4 u VKPT_SCENE_PAR
     LightSample light = sampleLight(s.position, u VKPT_SCENE_ARG);
     if (!light.valid || light.radiance == vec3(0.0f)) return c;
     float cosSurface = dot(light.direction, s.shadingNormal);
-    if (cosSurface <= 0.0f || dot(light.direction, s.geometricNormal) <= 0.0f) return c;
+    float side = dot(light.direction, s.geometricNormal);
+    // A light on the far side counts only through a thin wall that transmits diffusely, and
+    // then on the far side of both normals, as a transmitted BSDF sample must be.
+    bool through = sceneHasDiffuseTransmission(VKPT_SCENE_ARG_ONLY) &&
+                   lightSampledThrough(s.shading) && cosSurface < 0.0f && side < 0.0f;
+    if (!through && (cosSurface <= 0.0f || side <= 0.0f)) return c;
     BsdfValue bsdf = evaluateSurfaceBsdf(s, light.direction);
     if (bsdf.f == vec3(0.0f)) return c;
-    // Both ends move off their surfaces, so the shadow ray can hit neither of them.
-    c.origin = offsetFromSurface(s.position, s.geometricNormal, s.coordinateScale);
+    // Both ends move off their surfaces, so the shadow ray can hit neither of them; a shadow
+    // ray through a thin wall leaves from its far side.
+    c.origin = offsetFromSurface(s.position, through ? -s.geometricNormal : s.geometricNormal,
+                                 s.coordinateScale);
     if (light.atInfinity) {
         c.direction = light.direction;
         c.tMax = VKPT_FAR;
@@ -60,7 +68,7 @@ VKPT_FN LightConnection connectLightSample(SurfacePoint s, vec4 u VKPT_SCENE_PAR
                                                       light.coordinateScale);
         c.direction = target - c.origin;
     }
-    c.contribution = bsdf.f * light.radiance * cosSurface;
+    c.contribution = bsdf.f * light.radiance * abs(cosSurface);
     c.lightPdf = light.pdfSolidAngle;
     c.bsdfPdf = light.delta ? 0.0f : bsdf.pdf;
     c.valid = true;

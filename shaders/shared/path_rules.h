@@ -4,6 +4,7 @@
 #define VKPT_PATH_RULES_H
 
 #include "bsdf.h"
+#include "dispersion.h"
 #include "host_device.h"
 #include "sampling.h"
 
@@ -52,8 +53,19 @@ VKPT_FN bool bsdfSampleTransmits(BsdfSample s) {
     return s.direction.z < 0.0f;
 }
 
-VKPT_FN float misPdfOfBsdfSample(BsdfSample s) {
-    return (s.delta || bsdfSampleTransmits(s)) ? PDF_NOT_LIGHT_SAMPLED : s.pdf;
+// Light sampling reaches the far side of a thin wall whose diffuse base transmits
+// (KHR_materials_diffuse_transmission): its shadow ray leaves from that side
+// (light_connection.h). Not a volume's: a shadow ray from inside meets the volume's own boundary,
+// which blocks it.
+VKPT_FN bool lightSampledThrough(ShadingMaterial m) {
+    return hasDiffuseTransmission(m) && m.thinWalled;
+}
+
+// m: the material that made the sample.
+VKPT_FN float misPdfOfBsdfSample(BsdfSample s, ShadingMaterial m) {
+    if (s.delta) return PDF_NOT_LIGHT_SAMPLED;
+    if (bsdfSampleTransmits(s) && !lightSampledThrough(m)) return PDF_NOT_LIGHT_SAMPLED;
+    return s.pdf;
 }
 
 // The power heuristic of one BSDF sample against N light samples (Veach 1997, §9.2.4), or 1
@@ -61,6 +73,22 @@ VKPT_FN float misPdfOfBsdfSample(BsdfSample s) {
 VKPT_FN float emissionMisWeight(float previousBsdfPdf, float lightSamples, float pdfLight) {
     if (previousBsdfPdf < 0.0f) return 1.0f;
     return powerHeuristic(1.0f, previousBsdfPdf, lightSamples, pdfLight);
+}
+
+// KHR_materials_dispersion (dispersion.h): the wavelength a path carries after meeting material
+// m. At its first dispersive glass the path takes λ from uWavelength (DIM_CAMERA's z at bounce
+// 0, so one wavelength per path wherever it binds) and its throughput the weight w(λ), once; at
+// that vertex and every later dispersive one the glass is taken at λ. Anything else is left
+// unchanged: what a path gathered before it had λ does not depend on λ, and E[w] = 1.
+VKPT_FN float bindWavelength(VKPT_INOUT(ShadingMaterial) m, VKPT_INOUT(vec3) throughput,
+                             float wavelength, float uWavelength) {
+    if (!hasDispersion(m)) return wavelength;
+    if (wavelength == VKPT_NO_WAVELENGTH) {
+        wavelength = sampleWavelength(uWavelength);
+        throughput *= wavelengthWeight(wavelength);
+    }
+    m = atWavelength(m, wavelength);
+    return wavelength;
 }
 
 // Whether a sampled world direction continues the path: a reflection must leave above the

@@ -61,6 +61,9 @@
        iridescence), so that the Material record stays small (host_device.h) */                  \
     X(specularLobes,     SpecularLobeParams, BINDING_SPECULAR_LOBES,  31, TEXELS,  SPLIT,         \
       specularLobes,     VIEW, sceneSpecularLobes)                                                 \
+    /* One per material; empty unless features.diffuseTransmission or features.dispersion */     \
+    X(materialLobes,     MaterialLobes,    BINDING_MATERIAL_LOBES,     32, STORAGE, SPLIT,         \
+      materialLobes,     VIEW, sceneMaterialLobes)                                                 \
     X(emitters,          Emitter,          BINDING_EMITTERS,            5, TEXELS,  SPLIT,         \
       emitters,          VIEW, sceneEmitter)                                                       \
     /* The light BVH; empty unless features.lightTree */                                           \

@@ -22,8 +22,8 @@
 //        sceneHasPunctualLights(), sceneHasEnvironment(), sceneHasEmitterCdf(),
 //        sceneHasDoubleSided(), sceneHasNormalMaps(), sceneHasTransmission(),
 //        sceneHasClearcoat(), sceneHasSheen(), sceneHasSpecularTextures(),
-//        sceneHasAnisotropy(), sceneHasIridescence(), sceneHasInstances(),
-//        sceneHasLightTree()
+//        sceneHasAnisotropy(), sceneHasIridescence(), sceneHasDiffuseTransmission(),
+//        sceneHasDispersion(), sceneHasInstances(), sceneHasLightTree()
 #ifndef VKPT_SCENE_VIEW_H
 #define VKPT_SCENE_VIEW_H
 
@@ -120,6 +120,12 @@ VKPT_FN bool sceneHasAnisotropy(VKPT_SCENE_PARAM_ONLY) {
 }
 VKPT_FN bool sceneHasIridescence(VKPT_SCENE_PARAM_ONLY) {
     return scene.features[FEATURE_IRIDESCENCE];
+}
+VKPT_FN bool sceneHasDiffuseTransmission(VKPT_SCENE_PARAM_ONLY) {
+    return scene.features[FEATURE_DIFFUSE_TRANSMISSION];
+}
+VKPT_FN bool sceneHasDispersion(VKPT_SCENE_PARAM_ONLY) {
+    return scene.features[FEATURE_DISPERSION];
 }
 VKPT_FN bool sceneHasInstances(VKPT_SCENE_PARAM_ONLY) {
     return scene.features[FEATURE_INSTANCES];

@@ -218,19 +218,48 @@ VKPT_FN ShadingMaterial withSurfaceIridescence(ShadingMaterial shading, Specular
     return withIridescence(shading, factor, lobes.iridescenceIor, thickness);
 }
 
+// Whether the material's diffuse transmission reads a texture (and so needs TEXCOORD_0).
+VKPT_FN bool hasLobeTexture(uint material VKPT_SCENE_PARAM) {
+    if (!sceneHasDiffuseTransmission(VKPT_SCENE_ARG_ONLY)) return false;
+    MaterialLobes lobes = sceneMaterialLobes(material VKPT_SCENE_ARG);
+    return lobes.diffuseTransmission > 0.0f &&
+           (hasTexture(lobes.diffuseTransmissionTexture VKPT_SCENE_ARG) ||
+            hasTexture(lobes.diffuseTransmissionColorTexture VKPT_SCENE_ARG));
+}
+
+// KHR_materials_diffuse_transmission and KHR_materials_dispersion at the point, from the
+// material's record of materialLobes (read only in scenes with either): the transmitted share,
+// factor × diffuseTransmissionTexture.a, its colour, factor × diffuseTransmissionColorTexture.rgb
+// (sRGB), and the glass's dispersion.
+VKPT_FN ShadingMaterial withMaterialLobes(ShadingMaterial shading, uint material,
+                                          vec2 uv VKPT_SCENE_PARAM) {
+    MaterialLobes lobes = sceneMaterialLobes(material VKPT_SCENE_ARG);
+    if (sceneHasDiffuseTransmission(VKPT_SCENE_ARG_ONLY) && lobes.diffuseTransmission > 0.0f) {
+        float factor = lobes.diffuseTransmission *
+                       sampleSlot(lobes.diffuseTransmissionTexture, uv, false VKPT_SCENE_ARG).w;
+        vec3 color =
+            lobes.diffuseTransmissionColor *
+            vec3(sampleSlot(lobes.diffuseTransmissionColorTexture, uv, true VKPT_SCENE_ARG));
+        shading = withDiffuseTransmission(shading, factor, color);
+    }
+    if (sceneHasDispersion(VKPT_SCENE_ARG_ONLY)) shading.dispersion = lobes.dispersion;
+    return shading;
+}
+
 // The material at the point: factors times textures (each read only when present). Needs
 // s.outgoing for the normal texture's bend.
 VKPT_FN void fillMaterial(VKPT_INOUT(SurfacePoint) s, Triangle primitive,
                           TriangleHit hit VKPT_SCENE_PARAM) {
-    uint material = placedMaterialIndex(s.instance, primitive VKPT_SCENE_ARG);
-    Material m = sceneMaterial(material VKPT_SCENE_ARG);
-    SpecularLobeParams lobes = specularLobesOf(material VKPT_SCENE_ARG);
+    uint materialIndex = placedMaterialIndex(s.instance, primitive VKPT_SCENE_ARG);
+    Material m = sceneMaterial(materialIndex VKPT_SCENE_ARG);
+    SpecularLobeParams lobes = specularLobesOf(materialIndex VKPT_SCENE_ARG);
     vec4 baseColor = m.baseColor;
     float metallic = m.metallic;
     float roughness = m.roughness;
     s.emission = m.emission;
     vec2 uv = vec2(0.0f);
-    if (hasAnyTexture(m VKPT_SCENE_ARG) || hasSpecularLobeTexture(lobes VKPT_SCENE_ARG)) {
+    if (hasAnyTexture(m VKPT_SCENE_ARG) || hasSpecularLobeTexture(lobes VKPT_SCENE_ARG) ||
+        hasLobeTexture(materialIndex VKPT_SCENE_ARG)) {
         uv = primitiveUv(s.triangle, primitive, hit.u, hit.v, s.rawShadingNormal VKPT_SCENE_ARG);
         baseColor = m.baseColor * sampleSlot(m.baseColorTexture, uv, true VKPT_SCENE_ARG);
         vec4 metalRough = sampleSlot(m.metallicRoughnessTexture, uv, false VKPT_SCENE_ARG);
@@ -255,6 +284,10 @@ VKPT_FN void fillMaterial(VKPT_INOUT(SurfacePoint) s, Triangle primitive,
     if (metallicRoughness) s.shading = withMaterialLayers(s.shading, m, uv VKPT_SCENE_ARG);
     if (sceneHasIridescence(VKPT_SCENE_ARG_ONLY) && metallicRoughness && lobes.iridescence > 0.0f)
         s.shading = withSurfaceIridescence(s.shading, lobes, uv VKPT_SCENE_ARG);
+    if ((sceneHasDiffuseTransmission(VKPT_SCENE_ARG_ONLY) ||
+         sceneHasDispersion(VKPT_SCENE_ARG_ONLY)) &&
+        metallicRoughness)
+        s.shading = withMaterialLobes(s.shading, materialIndex, uv VKPT_SCENE_ARG);
     if (sceneHasAnisotropy(VKPT_SCENE_ARG_ONLY) && metallicRoughness &&
         lobes.anisotropyStrength > 0.0f && length(s.rawShadingNormal) > 0.0f)
         s.shading = withSurfaceAnisotropy(s.shading, s, lobes, hit, uv VKPT_SCENE_ARG);

@@ -42,6 +42,7 @@ struct SharedStructs {
     std::vector<PixelState> pixelStates;
     std::vector<LightTreeNode> lightTreeNodes;
     std::vector<SpecularLobeParams> specularLobes;
+    std::vector<MaterialLobes> materialLobes;
 };
 
 TextureSlot makeTextureSlot(Values& x) {
@@ -117,7 +118,7 @@ SharedStructs makeStructs() {
         s.environments.push_back(makeEnvironment(x));
         s.cameras.push_back(makeCamera(x));
         s.frames.push_back(makeFrameParams(x));
-        s.pathStates.push_back({x.v3(), x.u(), x.v3(), x.u(), x.v3(), x.f(), x.v3(), x.u()});
+        s.pathStates.push_back({x.v3(), x.u(), x.v3(), x.u(), x.v3(), x.f(), x.v3(), x.f()});
         s.shadowRays.push_back({x.v3(), x.u(), x.v3(), x.f(), x.v3(), x.f()});
         s.pixelStates.push_back({x.v3(), x.u(), x.v3(), x.u(), x.f(), x.f(), x.u(), x.u(), x.v3(),
                                  x.u(), x.v3(), x.u()});
@@ -138,6 +139,8 @@ SharedStructs makeStructs() {
         lobes.iridescenceTexture = makeTextureSlot(x);
         lobes.iridescenceThicknessTexture = makeTextureSlot(x);
         s.specularLobes.push_back(lobes);
+        s.materialLobes.push_back(
+            {x.v3(), x.f(), x.f(), x.u(), x.u(), x.u(), makeTextureSlot(x), makeTextureSlot(x)});
     }
     return s;
 }
@@ -165,6 +168,7 @@ std::vector<uint> flatten(const SharedStructs& s) {
     appendWords(words, s.pixelStates);
     appendWords(words, s.lightTreeNodes);
     appendWords(words, s.specularLobes);
+    appendWords(words, s.materialLobes);
     return words;
 }
 
@@ -204,11 +208,12 @@ TEST_F(LayoutRoundTrip, DeviceReadsEveryFieldAtItsCppOffset) {
     const Buffer pixelStates = structBuffer("pixelStates", s.pixelStates);
     const Buffer lightTreeNodes = structBuffer("lightTreeNodes", s.lightTreeNodes);
     const Buffer specularLobes = structBuffer("specularLobes", s.specularLobes);
+    const Buffer materialLobes = structBuffer("materialLobes", s.materialLobes);
     const Kernel kernel = makeKernel("read_layouts", LAYOUT_BUFFER_COUNT, 0);
     runKernel(kernel,
               {&bvhNodes, &triangles, &triangleNormals, &materials, &textures, &emitters,
                &environments, &cameras, &words, &frames, &pathStates, &shadowRays, &pixelStates,
-               &lightTreeNodes, &specularLobes},
+               &lightTreeNodes, &specularLobes, &materialLobes},
               LAYOUT_COUNT);
 
     const std::vector<uint> expected = flatten(s);
@@ -241,11 +246,13 @@ TEST_F(LayoutRoundTrip, DeviceWritesEveryFieldAtItsCppOffset) {
         makeStorageBuffer("lightTreeNodes", LAYOUT_COUNT * sizeof(LightTreeNode));
     const Buffer specularLobes =
         makeStorageBuffer("specularLobes", LAYOUT_COUNT * sizeof(SpecularLobeParams));
+    const Buffer materialLobes =
+        makeStorageBuffer("materialLobes", LAYOUT_COUNT * sizeof(MaterialLobes));
     const Kernel kernel = makeKernel("write_layouts", LAYOUT_BUFFER_COUNT, 0);
     runKernel(kernel,
               {&bvhNodes, &triangles, &triangleNormals, &materials, &textures, &emitters,
                &environments, &cameras, &words, &frames, &pathStates, &shadowRays, &pixelStates,
-               &lightTreeNodes, &specularLobes},
+               &lightTreeNodes, &specularLobes, &materialLobes},
               LAYOUT_COUNT);
 
     expectSameBytes(download<WideBvhNode>(context(), bvhNodes, LAYOUT_COUNT), s.bvhNodes,
@@ -273,6 +280,8 @@ TEST_F(LayoutRoundTrip, DeviceWritesEveryFieldAtItsCppOffset) {
                     s.specularLobes, "specularLobes");
     expectSameBytes(download<PixelState>(context(), pixelStates, LAYOUT_COUNT), s.pixelStates,
                     "pixelStates");
+    expectSameBytes(download<MaterialLobes>(context(), materialLobes, LAYOUT_COUNT),
+                    s.materialLobes, "materialLobes");
 }
 
 } // namespace

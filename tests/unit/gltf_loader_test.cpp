@@ -308,6 +308,11 @@ const InvalidCase kInvalidCases[] = {
     {"TransmissionOutOfRange", "transmission_out_of_range.gltf",
      "material 0: KHR_materials_transmission: transmissionFactor must be in [0, 1]"},
     {"IorBelowOne", "ior_below_one.gltf", "material 0: KHR_materials_ior: ior must be >= 1 (or 0)"},
+    {"DispersionNegative", "dispersion_negative.gltf",
+     "material 0: KHR_materials_dispersion: dispersion must be a finite number >= 0"},
+    {"DiffuseTransmissionOutOfRange", "diffuse_transmission_out_of_range.gltf",
+     "material 0: KHR_materials_diffuse_transmission: diffuseTransmissionFactor must be in [0, "
+     "1]"},
     {"AttenuationDistanceZero", "attenuation_distance_zero.gltf",
      "material 0: KHR_materials_volume: attenuationDistance must be > 0"},
     {"NegativeLightIntensity", "light_negative_intensity.gltf",

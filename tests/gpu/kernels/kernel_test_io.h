@@ -66,7 +66,7 @@ struct IntersectOutput {
 // lib/wavefront.h flattened to 32-bit words in declaration order, one region per struct type,
 // LAYOUT_COUNT records per region.
 #define LAYOUT_COUNT 5u
-#define LAYOUT_BUFFER_COUNT 15u // one per struct type, and the words (binding 8)
+#define LAYOUT_BUFFER_COUNT 16u // one per struct type, and the words (binding 8)
 #define LAYOUT_WORDS_BVH_NODE 20u
 #define LAYOUT_WORDS_TRIANGLE 12u
 #define LAYOUT_WORDS_TRIANGLE_NORMALS 12u
@@ -81,6 +81,7 @@ struct IntersectOutput {
 #define LAYOUT_WORDS_PIXEL_STATE 20u
 #define LAYOUT_WORDS_LIGHT_TREE_NODE 16u
 #define LAYOUT_WORDS_SPECULAR_LOBES 48u
+#define LAYOUT_WORDS_MATERIAL_LOBES 24u
 #define LAYOUT_OFFSET_BVH_NODES 0u
 #define LAYOUT_OFFSET_TRIANGLES (LAYOUT_OFFSET_BVH_NODES + LAYOUT_COUNT * LAYOUT_WORDS_BVH_NODE)
 #define LAYOUT_OFFSET_TRIANGLE_NORMALS                                                             \
@@ -102,8 +103,10 @@ struct IntersectOutput {
     (LAYOUT_OFFSET_PIXEL_STATES + LAYOUT_COUNT * LAYOUT_WORDS_PIXEL_STATE)
 #define LAYOUT_OFFSET_SPECULAR_LOBES                                                               \
     (LAYOUT_OFFSET_LIGHT_TREE_NODES + LAYOUT_COUNT * LAYOUT_WORDS_LIGHT_TREE_NODE)
-#define LAYOUT_TOTAL_WORDS                                                                         \
+#define LAYOUT_OFFSET_MATERIAL_LOBES                                                               \
     (LAYOUT_OFFSET_SPECULAR_LOBES + LAYOUT_COUNT * LAYOUT_WORDS_SPECULAR_LOBES)
+#define LAYOUT_TOTAL_WORDS                                                                         \
+    (LAYOUT_OFFSET_MATERIAL_LOBES + LAYOUT_COUNT * LAYOUT_WORDS_MATERIAL_LOBES)
 
 // count_loop_iterations: per invocation, how many iterations each loop really ran.
 struct LoopCounts {
@@ -141,7 +144,8 @@ static_assert(sizeof(FrameParams) == 4 * LAYOUT_WORDS_FRAME_PARAMS &&
               sizeof(ShadowRay) == 4 * LAYOUT_WORDS_SHADOW_RAY &&
               sizeof(PixelState) == 4 * LAYOUT_WORDS_PIXEL_STATE &&
               sizeof(LightTreeNode) == 4 * LAYOUT_WORDS_LIGHT_TREE_NODE &&
-              sizeof(SpecularLobeParams) == 4 * LAYOUT_WORDS_SPECULAR_LOBES);
+              sizeof(SpecularLobeParams) == 4 * LAYOUT_WORDS_SPECULAR_LOBES &&
+              sizeof(MaterialLobes) == 4 * LAYOUT_WORDS_MATERIAL_LOBES);
 static_assert(sizeof(LoopCounts) == 16 && sizeof(LoopParams) == 32);
 } // namespace vkpt::gpu::test
 #endif

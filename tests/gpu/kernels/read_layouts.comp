@@ -24,6 +24,7 @@ VKPT_READONLY_BUFFER(11, ShadowRay, shadowRays)
 VKPT_READONLY_BUFFER(12, PixelState, pixelStates)
 VKPT_READONLY_BUFFER(13, LightTreeNode, lightTreeNodes)
 VKPT_READONLY_BUFFER(14, SpecularLobeParams, specularLobes)
+VKPT_READONLY_BUFFER(15, MaterialLobes, materialLobes)
 
 uint cursor;
 
@@ -203,7 +204,7 @@ void main() {
     putVec3(pathStates[i].lightScale);
     putFloat(pathStates[i].previousBsdfPdf);
     putVec3(pathStates[i].mediumCoefficient);
-    putUint(pathStates[i].unusedMedium);
+    putFloat(pathStates[i].wavelength);
 
     cursor = LAYOUT_OFFSET_SHADOW_RAYS + i * LAYOUT_WORDS_SHADOW_RAY;
     putVec3(shadowRays[i].origin);
@@ -253,4 +254,13 @@ void main() {
     putFloat(specularLobes[i].iridescenceThicknessMaximum);
     putTextureSlot(specularLobes[i].iridescenceTexture);
     putTextureSlot(specularLobes[i].iridescenceThicknessTexture);
+    cursor = LAYOUT_OFFSET_MATERIAL_LOBES + i * LAYOUT_WORDS_MATERIAL_LOBES;
+    putVec3(materialLobes[i].diffuseTransmissionColor);
+    putFloat(materialLobes[i].diffuseTransmission);
+    putFloat(materialLobes[i].dispersion);
+    putUint(materialLobes[i].unused0);
+    putUint(materialLobes[i].unused1);
+    putUint(materialLobes[i].unused2);
+    putTextureSlot(materialLobes[i].diffuseTransmissionTexture);
+    putTextureSlot(materialLobes[i].diffuseTransmissionColorTexture);
 }

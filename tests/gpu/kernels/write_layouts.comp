@@ -24,6 +24,7 @@ VKPT_WRITEONLY_BUFFER(11, ShadowRay, shadowRays)
 VKPT_WRITEONLY_BUFFER(12, PixelState, pixelStates)
 VKPT_WRITEONLY_BUFFER(13, LightTreeNode, lightTreeNodes)
 VKPT_WRITEONLY_BUFFER(14, SpecularLobeParams, specularLobes)
+VKPT_WRITEONLY_BUFFER(15, MaterialLobes, materialLobes)
 
 uint cursor;
 
@@ -212,7 +213,7 @@ void main() {
     pathStates[i].lightScale = takeVec3();
     pathStates[i].previousBsdfPdf = takeFloat();
     pathStates[i].mediumCoefficient = takeVec3();
-    pathStates[i].unusedMedium = takeUint();
+    pathStates[i].wavelength = takeFloat();
 
     cursor = LAYOUT_OFFSET_SHADOW_RAYS + i * LAYOUT_WORDS_SHADOW_RAY;
     shadowRays[i].origin = takeVec3();
@@ -262,4 +263,13 @@ void main() {
     specularLobes[i].iridescenceThicknessMaximum = takeFloat();
     specularLobes[i].iridescenceTexture = takeTextureSlot();
     specularLobes[i].iridescenceThicknessTexture = takeTextureSlot();
+    cursor = LAYOUT_OFFSET_MATERIAL_LOBES + i * LAYOUT_WORDS_MATERIAL_LOBES;
+    materialLobes[i].diffuseTransmissionColor = takeVec3();
+    materialLobes[i].diffuseTransmission = takeFloat();
+    materialLobes[i].dispersion = takeFloat();
+    materialLobes[i].unused0 = takeUint();
+    materialLobes[i].unused1 = takeUint();
+    materialLobes[i].unused2 = takeUint();
+    materialLobes[i].diffuseTransmissionTexture = takeTextureSlot();
+    materialLobes[i].diffuseTransmissionColorTexture = takeTextureSlot();
 }
