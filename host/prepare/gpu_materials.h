@@ -12,6 +12,11 @@ namespace vkpt {
 
 std::vector<gpu::Material> makeGpuMaterials(const std::vector<SceneMaterial>& materials);
 
+// The materials' specular lobe extensions (specular textures, anisotropy, iridescence), in the
+// same order: the specularLobes array, filled only when features.specularLobes().
+std::vector<gpu::SpecularLobeParams>
+makeGpuSpecularLobes(const std::vector<SceneMaterial>& materials);
+
 // The materialLobes array: one record per material, for scenes with diffuse transmission or
 // dispersion (only their kernels read it).
 std::vector<gpu::MaterialLobes> makeGpuMaterialLobes(const std::vector<SceneMaterial>& materials);

@@ -74,12 +74,6 @@ PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options = {
 // of it (their power estimates). 1 for an empty scene.
 double sceneBoundingRadius(const Scene& scene);
 
-std::vector<gpu::Material> makeGpuMaterials(const std::vector<SceneMaterial>& materials);
-// The materials' specular lobe extensions (specular textures, anisotropy, iridescence), in the
-// same order: the specularLobes array, filled only when features.specularLobes().
-std::vector<gpu::SpecularLobeParams>
-makeGpuSpecularLobes(const std::vector<SceneMaterial>& materials);
-
 // Triangles and shading normals in the order of tree.primitiveOrder.
 void makeGpuTriangles(const Scene& scene, const BvhTree& tree,
                       std::vector<gpu::Triangle>& triangles,
