@@ -58,8 +58,12 @@ std::vector<gpu::Material> makeGpuMaterials(const std::vector<SceneMaterial>& ma
         gpu::Material g{};
         g.baseColor = m.baseColor;
         g.emission = m.emission;
+        const bool specularLobes =
+            m.hasSpecularTextures() || m.hasAnisotropy() || m.hasIridescence();
         g.flags = (m.doubleSided ? MATERIAL_DOUBLE_SIDED : 0u) |
-                  (m.isDiffuseOnly() ? 0u : MATERIAL_METALLIC_ROUGHNESS);
+                  (m.isDiffuseOnly() ? 0u : MATERIAL_METALLIC_ROUGHNESS) |
+                  (specularLobes ? MATERIAL_SPECULAR_LOBES : 0u) |
+                  (m.hasDiffuseTransmission() || m.hasDispersion() ? MATERIAL_LOBES : 0u);
         g.metallic = m.metallic;
         g.roughness = m.roughness;
         g.alphaCutoff = m.alphaCutoff;

@@ -195,6 +195,12 @@ struct TriangleTangents {
 // scenes made only of it compile without the microfacet code.
 #define MATERIAL_DOUBLE_SIDED 1u
 #define MATERIAL_METALLIC_ROUGHNESS 2u
+// The material has a record of its own in specularLobes (MATERIAL_SPECULAR_LOBES: specular
+// textures, anisotropy or iridescence) or in materialLobes (MATERIAL_LOBES: diffuse
+// transmission or dispersion). The general kernels (every feature on) may run on a scene's own
+// arrays, where those are empty: the flag, not the feature, decides whether a record is read.
+#define MATERIAL_SPECULAR_LOBES 4u
+#define MATERIAL_LOBES 8u
 
 #define ALPHA_MODE_OPAQUE 0u
 #define ALPHA_MODE_MASK 1u

@@ -64,9 +64,11 @@ VKPT_FN SpecularLobeParams noSpecularLobes() {
 }
 
 // Material `material`'s specular lobe extensions; none in a scene without them (whose array is
-// empty, and whose kernels fold this to constants).
+// empty, and whose kernels fold this to constants) or for a material without them (its flag).
 VKPT_FN SpecularLobeParams specularLobesOf(uint material VKPT_SCENE_PARAM) {
-    if (!sceneHasSpecularLobes(VKPT_SCENE_ARG_ONLY)) return noSpecularLobes();
+    if (!sceneHasSpecularLobes(VKPT_SCENE_ARG_ONLY) ||
+        (sceneMaterialFlags(material VKPT_SCENE_ARG) & MATERIAL_SPECULAR_LOBES) == 0u)
+        return noSpecularLobes();
     return sceneSpecularLobes(material VKPT_SCENE_ARG);
 }
 

@@ -220,7 +220,9 @@ VKPT_FN ShadingMaterial withSurfaceIridescence(ShadingMaterial shading, Specular
 
 // Whether the material's diffuse transmission reads a texture (and so needs TEXCOORD_0).
 VKPT_FN bool hasLobeTexture(uint material VKPT_SCENE_PARAM) {
-    if (!sceneHasDiffuseTransmission(VKPT_SCENE_ARG_ONLY)) return false;
+    if (!sceneHasDiffuseTransmission(VKPT_SCENE_ARG_ONLY) ||
+        (sceneMaterialFlags(material VKPT_SCENE_ARG) & MATERIAL_LOBES) == 0u)
+        return false;
     MaterialLobes lobes = sceneMaterialLobes(material VKPT_SCENE_ARG);
     return lobes.diffuseTransmission > 0.0f &&
            (hasTexture(lobes.diffuseTransmissionTexture VKPT_SCENE_ARG) ||
@@ -286,7 +288,7 @@ VKPT_FN void fillMaterial(VKPT_INOUT(SurfacePoint) s, Triangle primitive,
         s.shading = withSurfaceIridescence(s.shading, lobes, uv VKPT_SCENE_ARG);
     if ((sceneHasDiffuseTransmission(VKPT_SCENE_ARG_ONLY) ||
          sceneHasDispersion(VKPT_SCENE_ARG_ONLY)) &&
-        metallicRoughness)
+        metallicRoughness && (m.flags & MATERIAL_LOBES) != 0u)
         s.shading = withMaterialLobes(s.shading, materialIndex, uv VKPT_SCENE_ARG);
     if (sceneHasAnisotropy(VKPT_SCENE_ARG_ONLY) && metallicRoughness &&
         lobes.anisotropyStrength > 0.0f && length(s.rawShadingNormal) > 0.0f)

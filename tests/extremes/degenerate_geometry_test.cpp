@@ -154,7 +154,9 @@ Scene litFloor(bool needles) {
                 float f = -1.0f + 2.0f * float(k) / float(n);
                 return second ? glm::vec3(f, 0.0f, 1.0f) : glm::vec3(1.0f, 0.0f, -f);
             };
-            test::addTriangle(scene, apex, edge(i + 1, false), edge(i, false), white);
+            // Both halves face up, as the two-triangle floor does: the material is
+            // single-sided, and the camera sees through a back face (docs/scene-model.md).
+            test::addTriangle(scene, apex, edge(i, false), edge(i + 1, false), white);
             test::addTriangle(scene, apex, edge(i, true), edge(i + 1, true), white);
         }
     } else {
