@@ -43,6 +43,14 @@ source ci/lavapipe_env.sh
 # Tests write only into their own folders: the programs they run leave the user's pipeline cache
 # (~/.cache/vkpt) alone; tests/gpu/pipeline_cache_test.cpp covers the cache with its own files.
 export VKPT_NO_PIPELINE_CACHE=1
+# ctest starts the tests it knows to be long first, from the timings of the folder's last run; a
+# fresh folder has none, so seed them from ci/test_costs.txt (an earlier run's, made by
+# `ci/test_times.py JUNIT --costs`): otherwise a long test that starts last leaves a core idle.
+costs=build/ci/Testing/Temporary/CTestCostData.txt
+if [ ! -s "$costs" ]; then
+    mkdir -p "$(dirname "$costs")"
+    { awk 'NF == 2 { print $1, 1, $2 }' ci/test_costs.txt; echo ---; } >"$costs"
+fi
 timed tests ctest --preset ci --output-junit "$scratch/tests.xml" "$@"
 timed fuzz-build bash ci/build.sh fuzz
 timed fuzz-tests ctest --preset fuzz

@@ -13,7 +13,7 @@ namespace {
 
 // An interior tree node whose StackBvhChild (in its parent's pair, or the root) still needs
 // its `first` and `word`.
-struct Pending {
+struct PendingSubtree {
     std::uint32_t treeNode;
     StackBvhChild* child;
 };
@@ -45,12 +45,12 @@ public:
 
     // Lays out the block whose first pair holds the children of `top`, and queues the blocks
     // below it.
-    void block(Pending top, std::vector<Pending>& nextBlocks) {
+    void block(PendingSubtree top, std::vector<PendingSubtree>& nextBlocks) {
         const auto start = static_cast<std::uint32_t>(bvh_.pairs.size());
-        std::vector<Pending> level{top};
+        std::vector<PendingSubtree> level{top};
         for (std::uint32_t depth = 0; depth < kStackBvhBlockLevels && !level.empty(); ++depth) {
-            std::vector<Pending> below;
-            for (const Pending& p : level)
+            std::vector<PendingSubtree> below;
+            for (const PendingSubtree& p : level)
                 addPair(p, below);
             level = std::move(below);
         }
@@ -63,7 +63,7 @@ public:
 
 private:
     // The pair of p's children; their interior ones go to `below`.
-    void addPair(const Pending& p, std::vector<Pending>& below) {
+    void addPair(const PendingSubtree& p, std::vector<PendingSubtree>& below) {
         const BvhBuildNode& n = tree_.nodes[p.treeNode];
         VKPT_ASSERT(bvh_.pairs.size() < bvh_.pairs.capacity(), "pairs must not move");
         p.child->first = static_cast<std::uint32_t>(bvh_.pairs.size());
@@ -95,9 +95,9 @@ StackBvh makeStackBvhLayout(const BvhTree& tree) {
     if (bvh.root.isLeaf()) return bvh;
     bvh.pairs.reserve(tree.nodes.size() / 2); // one pair per interior node: (nodes − 1) / 2
     Layout layout(tree, bvh);
-    std::vector<Pending> blocks{{0, &bvh.root}};
+    std::vector<PendingSubtree> blocks{{0, &bvh.root}};
     while (!blocks.empty()) {
-        Pending top = blocks.back();
+        PendingSubtree top = blocks.back();
         blocks.pop_back();
         layout.block(top, blocks);
     }

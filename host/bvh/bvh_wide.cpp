@@ -20,7 +20,7 @@ namespace {
 using Kind = WideDraftChild::Kind;
 
 // Below this many wide nodes one thread lays them out faster than it can start others.
-constexpr std::size_t kParallelMinimum = 4096;
+constexpr std::size_t kParallelNodeMinimum = 4096;
 
 // Levels below each binary node (0 for a leaf); children follow their parents in the array,
 // so one backward pass sees every child before its parent.
@@ -438,7 +438,7 @@ std::vector<gpu::WideBvhNode> flattenWideBvh(BvhTree& tree, CollapseOrder order,
                                              std::uint32_t threadCount) {
     const WideDraft draft = collapseBvh(tree, order, threadCount);
     const std::uint32_t threads =
-        draft.nodes.size() >= kParallelMinimum ? resolveThreadCount(threadCount) : 1u;
+        draft.nodes.size() >= kParallelNodeMinimum ? resolveThreadCount(threadCount) : 1u;
     std::vector<std::uint32_t> primitiveBase;
     relayoutPrimitives(tree, draft, primitiveBase, threads);
     std::vector<gpu::WideBvhNode> nodes(draft.nodes.size());

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <map>
 
+#include "common/math_constants.h"
 #include "prepare/emission_mean.h"
 #include "shared/intersect.h"
 #include "shared/sampling.h"
@@ -18,8 +19,6 @@ float triangleArea(const gpu::Triangle& triangle) {
 }
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 double sides(const gpu::Material& material) {
     return (material.flags & MATERIAL_DOUBLE_SIDED) != 0 ? 2.0 : 1.0;

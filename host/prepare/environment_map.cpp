@@ -7,14 +7,13 @@
 #include <sstream>
 
 #include "common/errors.h"
+#include "common/math_constants.h"
 #include "image/hdr_read.h"
 #include "shared/sampling.h"
 
 namespace vkpt {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // The Rec. 709 weights of the shared luminance(), read from it so the two cannot drift apart;
 // applied in double, since a bright texel times the scale can exceed the float range.

@@ -8,13 +8,13 @@
 #include <limits>
 
 #include "common/errors.h"
+#include "common/math_constants.h"
 #include "shared/intersect.h"
 
 namespace vkpt {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr int kBuckets = 12;
 

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "common/math_constants.h"
 #include "prepare/emission_mean.h"
 #include "prepare/environment_map.h"
 #include "prepare/prepared_scene.h"
@@ -18,7 +19,6 @@ namespace vkpt {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 double luminanceOf(const glm::vec3& c) {
     return double(gpu::luminance(c));
 }

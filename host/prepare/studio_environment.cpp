@@ -4,22 +4,22 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/math_constants.h"
 #include "shared/environment.h"
 
 namespace vkpt {
 
 namespace {
 
-constexpr float kPi = 3.14159265358979323846f;
-
 constexpr float kHorizonRadiance = 0.6f;
 constexpr float kZenithRadiance = 1.0f;
 constexpr float kFloorRadiance = 0.25f;
-constexpr float kHorizonHalfWidth = 2.0f * kPi / 180.0f; // the floor–sky blend, ± this
+constexpr float kHorizonHalfWidth = 2.0f * kPiFloat / 180.0f; // the floor–sky blend, ± this
 constexpr float kKeyRadiance = 16.0f;
-constexpr float kKeyRadius = 12.0f * kPi / 180.0f;
-constexpr float kKeyEdge = 4.0f * kPi / 180.0f; // the key fades out over this, centred on its rim
-constexpr float kKeyElevation = 50.0f * kPi / 180.0f;
+constexpr float kKeyRadius = 12.0f * kPiFloat / 180.0f;
+constexpr float kKeyEdge =
+    4.0f * kPiFloat / 180.0f; // the key fades out over this, centred on its rim
+constexpr float kKeyElevation = 50.0f * kPiFloat / 180.0f;
 constexpr int kSamplesPerSide = 4; // per texel, per axis
 
 float smoothStep(float edge0, float edge1, float x) {

@@ -9,10 +9,6 @@
 namespace vkpt::gltf {
 namespace {
 
-std::string nodeName(int index) {
-    return "node " + std::to_string(index);
-}
-
 const tinygltf::Camera& findCamera(const tinygltf::Model& model, int nodeIndex) {
     const int index = model.nodes[static_cast<std::size_t>(nodeIndex)].camera;
     if (index < 0 || static_cast<std::size_t>(index) >= model.cameras.size()) {

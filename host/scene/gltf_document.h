@@ -16,6 +16,11 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// "node 7": how a problem names the node it is in.
+inline std::string nodeName(int index) {
+    return "node " + std::to_string(index);
+}
+
 // Reads a .gltf (JSON) or .glb (binary) file, its external buffers and the encoded bytes of its
 // external and data: URI images (Image::as_is). extensionsRequired is checked first, before
 // tinygltf's own checks can misreport a compressed file (gltf_json_prepass.h); EXT_meshopt

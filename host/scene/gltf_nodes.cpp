@@ -13,10 +13,6 @@
 namespace vkpt::gltf {
 namespace {
 
-std::string nodeName(int index) {
-    return "node " + std::to_string(index);
-}
-
 void requireLength(const std::vector<double>& values, std::size_t length, const char* property,
                    int nodeIndex) {
     if (values.size() == length) return;

@@ -45,10 +45,6 @@ constexpr const char* kMaterialKey = "vkpt_material";
 // unit length by a few 1e-7; a real non-uniform scale differs by far more.
 constexpr double kUniformTolerance = 1e-5;
 
-std::string nodeName(int index) {
-    return "node " + std::to_string(index);
-}
-
 struct ShapeReference {
     int shape = -1;
     bool explicitRequest = false; // rule 1: vkpt's own reference; rule 2: a collider

@@ -19,7 +19,6 @@ namespace {
 // triangle, or miss, in one walk: such pixels must stay rare, as in the colour comparison.
 constexpr float kFeatureAbsolute = 5e-4f;
 constexpr float kDepthRelative = 1e-5f;
-constexpr double kMinimumAgreement = 0.99;
 
 gpu::Camera testCamera(const LoadedTestScene& scene, const RenderSettings& settings) {
     return makeGpuCamera(selectCamera(scene.scene, settings.cameraIndex), settings.width,
@@ -87,7 +86,7 @@ protected:
         const double fraction = agreement(gpu, cpu.features, kFeatureAbsolute);
         std::printf("%s: features of %.2f %% of the pixels within %g\n", name.c_str(),
                     100.0 * fraction, double(kFeatureAbsolute));
-        EXPECT_GE(fraction, kMinimumAgreement) << name;
+        EXPECT_GE(fraction, kSameSeedMinimumAgreement) << name;
     }
 };
 

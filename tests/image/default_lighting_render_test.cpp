@@ -13,8 +13,6 @@
 namespace vkpt::test {
 namespace {
 
-constexpr double kMinimumAgreement = 0.99; // as render_compare_test.cpp
-
 // The scene as vkpt and vkpt-ref load it without --env, --env-color or --default-light off.
 LoadedTestScene loadWithDefaultLighting(const std::string& relative) {
     LoadOptions options;
@@ -36,7 +34,7 @@ protected:
         const SameSeedAgreement a = compareSameSeed(gpu, cpu);
         std::printf("%s: %s; mean luminance %.4f\n", name.c_str(), a.summary().c_str(),
                     meanLuminance(cpu).mean);
-        EXPECT_GE(a.fraction(), kMinimumAgreement) << writeComparisonImages(name, gpu, cpu);
+        EXPECT_GE(a.fraction(), kSameSeedMinimumAgreement) << writeComparisonImages(name, gpu, cpu);
         EXPECT_GT(meanLuminance(cpu).mean, 0.05) << name << ": the studio leaves the image dark";
     }
 

@@ -31,9 +31,6 @@
 namespace vkpt::test {
 namespace {
 
-// As feature_render_test.cpp: paths that diverge on a last-bit difference stay rare.
-constexpr double kMinimumAgreement = 0.99;
-
 // A quarter turn about y, scaled by (2, −0.5, 1) (a mirror) and moved by dyadic steps, written
 // out so that every entry and its inverse's is exact in float.
 glm::dmat4 exactPlacement() {
@@ -155,7 +152,8 @@ protected:
         const std::string name = GetParam().name + "_" + what;
         SameSeedAgreement agreement = compareSameSeed(a, b);
         std::printf("%s: %s\n", name.c_str(), agreement.summary().c_str());
-        EXPECT_GE(agreement.fraction(), kMinimumAgreement) << writeComparisonImages(name, a, b);
+        EXPECT_GE(agreement.fraction(), kSameSeedMinimumAgreement)
+            << writeComparisonImages(name, a, b);
         double total = 0.0;
         for (const glm::vec3& p : a.image.pixels)
             total += double(p.x + p.y + p.z);

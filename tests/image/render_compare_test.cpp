@@ -12,18 +12,6 @@
 namespace vkpt::test {
 namespace {
 
-// Pixels outside the float bound are paths that diverged: a decision (Russian roulette, a
-// direction below the surface, an edge hit) flipped on a last-bit difference. They must stay
-// rare: at most 1 % of the pixels.
-constexpr double kMinimumAgreement = 0.99;
-
-// Half h of an output as an output of its own, for compareSameSeed.
-RenderOutput halfOutput(const RenderOutput& output, int h) {
-    RenderOutput half;
-    half.image = output.halves[h];
-    return half;
-}
-
 class SameSeed : public GpuTest {
 protected:
     // The device's image, for a test's own checks.
@@ -36,21 +24,9 @@ protected:
     RenderOutput expectAgreement(const std::string& name, const LoadedTestScene& scene,
                                  const RenderSettings& settings,
                                  const WavefrontOptions& options = {}) {
-        RenderStats gpuStats, cpuStats;
+        RenderStats gpuStats;
         RenderOutput gpu = renderOnDevice(context(), scene, settings, &gpuStats, options);
-        RenderOutput cpu = renderTestScene(scene, settings, &cpuStats);
-        SameSeedAgreement a = compareSameSeed(gpu, cpu);
-        std::printf("%s: %s; rays %llu vs %llu\n", name.c_str(), a.summary().c_str(),
-                    (unsigned long long)gpuStats.rays.total(),
-                    (unsigned long long)cpuStats.rays.total());
-        EXPECT_GE(a.fraction(), kMinimumAgreement) << writeComparisonImages(name, gpu, cpu);
-        EXPECT_EQ(gpuStats.samplesTaken, cpuStats.samplesTaken);
-        for (int h = 0; h < 2; ++h) {
-            const SameSeedAgreement half = compareSameSeed(halfOutput(gpu, h), halfOutput(cpu, h));
-            std::printf("  half %d: %s\n", h, half.summary().c_str());
-            EXPECT_GE(half.fraction(), kMinimumAgreement) << "half " << h;
-            EXPECT_EQ(gpu.halfCounts[h], cpu.halfCounts[h]) << "half " << h;
-        }
+        expectSameSeedAsReference(name, scene, settings, gpu, gpuStats);
         return gpu;
     }
 };
@@ -166,29 +142,6 @@ TEST_F(SameSeed, ManyLightsMatchTheReference) {
     expectAgreement("many_lights_power",
                     loadTestScene("test/many-lights.gltf", {{}, false, LightSampler::Power}),
                     settings);
-}
-
-// The scene model's feature test scenes (scenes/test/features: spheres, GGX materials,
-// textures and alpha cut-outs, punctual lights, the environment map), each under the path
-// tracer and both direct estimators.
-TEST_F(SameSeed, FeatureTestScenesMatchTheReference) {
-    const std::vector<std::string> scenes = featureTestScenes();
-    if (scenes.empty()) GTEST_SKIP() << "no scenes in " << scenePath("test/features");
-    for (const std::string& path : scenes) {
-        SCOPED_TRACE(path);
-        LoadedTestScene scene = loadFeatureTestScene(path);
-        const std::string name = std::filesystem::path(path).stem().string();
-        RenderSettings settings = testSettings(24, 8);
-        settings.seed = 6;
-        settings.lightSamples = 2;
-        expectAgreement(name + "_path", scene, settings);
-        settings = testSettings(16, 4);
-        settings.integrator = Integrator::Direct;
-        settings.lightSamples = 2;
-        expectAgreement(name + "_direct_light", scene, settings);
-        settings.lightSampling = LightSampling::Hemisphere;
-        expectAgreement(name + "_direct_hemisphere", scene, settings);
-    }
 }
 
 // The feature scenes whose emitters are of several kinds (spheres, point, spot and directional

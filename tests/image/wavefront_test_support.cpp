@@ -54,6 +54,36 @@ RenderOutput renderOnDevice(GpuContext& context, const LoadedTestScene& loaded,
     return std::move(result.output);
 }
 
+namespace {
+
+// Half h of an output as an output of its own, for compareSameSeed.
+RenderOutput halfOutput(const RenderOutput& output, int h) {
+    RenderOutput half;
+    half.image = output.halves[h];
+    return half;
+}
+
+} // namespace
+
+void expectSameSeedAsReference(const std::string& name, const LoadedTestScene& scene,
+                               const RenderSettings& settings, const RenderOutput& gpu,
+                               const RenderStats& gpuStats) {
+    RenderStats cpuStats;
+    RenderOutput cpu = renderTestScene(scene, settings, &cpuStats);
+    SameSeedAgreement a = compareSameSeed(gpu, cpu);
+    std::printf("%s: %s; rays %llu vs %llu\n", name.c_str(), a.summary().c_str(),
+                (unsigned long long)gpuStats.rays.total(),
+                (unsigned long long)cpuStats.rays.total());
+    EXPECT_GE(a.fraction(), kSameSeedMinimumAgreement) << writeComparisonImages(name, gpu, cpu);
+    EXPECT_EQ(gpuStats.samplesTaken, cpuStats.samplesTaken) << name;
+    for (int h = 0; h < 2; ++h) {
+        const SameSeedAgreement half = compareSameSeed(halfOutput(gpu, h), halfOutput(cpu, h));
+        std::printf("  half %d: %s\n", h, half.summary().c_str());
+        EXPECT_GE(half.fraction(), kSameSeedMinimumAgreement) << name << ", half " << h;
+        EXPECT_EQ(gpu.halfCounts[h], cpu.halfCounts[h]) << name << ", half " << h;
+    }
+}
+
 SameSeedAgreement compareSameSeed(const RenderOutput& gpu, const RenderOutput& cpu) {
     SameSeedAgreement agreement;
     agreement.pixels = cpu.image.pixels.size();

@@ -54,6 +54,18 @@ inline constexpr double kSameSeedAbsolute = 1e-6;
 
 SameSeedAgreement compareSameSeed(const RenderOutput& gpu, const RenderOutput& cpu);
 
+// Pixels outside the float bound are paths that diverged: a decision (Russian roulette, a
+// direction below the surface, an edge hit) flipped on a last-bit difference. They must stay
+// rare: at most 1 % of the pixels.
+inline constexpr double kSameSeedMinimumAgreement = 0.99;
+
+// Renders `scene` with vkpt-ref at `settings` and expects the device's render of it (`gpu`,
+// with its statistics) to agree: at least kSameSeedMinimumAgreement of the pixels within the
+// bound, in the image and in both halves, with the same sample counts. Prints the figures.
+void expectSameSeedAsReference(const std::string& name, const LoadedTestScene& scene,
+                               const RenderSettings& settings, const RenderOutput& gpu,
+                               const RenderStats& gpuStats);
+
 // Writes <name>.gpu.pfm, <name>.cpu.pfm and <name>.diff.pfm (|gpu − cpu|) into the working
 // directory and returns a line naming them, for a failure message.
 std::string writeComparisonImages(const std::string& name, const RenderOutput& gpu,

@@ -10,13 +10,12 @@
 #include "../support/reference_render.h"
 #include "../support/render_checks.h"
 #include "../support/scene_builder.h"
+#include "common/math_constants.h"
 #include "image/image_compare.h"
 #include "prepare/environment_map.h"
 
 namespace vkpt {
 namespace {
-
-constexpr float kPi = 3.14159265358979f;
 
 // A camera at height h looking straight down at the origin, with a narrow field of view so
 // that the image's centre pixels see the floor right below it.
@@ -66,7 +65,7 @@ TEST(PunctualLights, PointLightFollowsTheInverseSquareLawInCandela) {
     point.intensity = glm::vec3(2.0f, 1.0f, 0.5f);
     scene.lights.push_back(point);
     RenderOutput output = test::renderTestScene(prepared(scene), directOnly(9, 4));
-    glm::vec3 expected = 0.5f / kPi * point.intensity / (0.5f * 0.5f);
+    glm::vec3 expected = 0.5f / kPiFloat * point.intensity / (0.5f * 0.5f);
     for (int c = 0; c < 3; ++c)
         EXPECT_NEAR(centrePixel(output)[c], expected[c], 2e-4f * expected[c]) << "channel " << c;
 }
@@ -86,7 +85,7 @@ TEST(PunctualLights, SpotLightIsFullInsideItsInnerConeAndDarkOutsideItsOuterCone
         spot.direction = glm::vec3(std::sin(tilt), -std::cos(tilt), 0.0f);
         scene.lights.push_back(spot);
         RenderOutput output = test::renderTestScene(prepared(scene), directOnly(9, 4));
-        float expected = aimedAtCamera ? 0.5f / kPi * 3.0f / 0.25f : 0.0f;
+        float expected = aimedAtCamera ? 0.5f / kPiFloat * 3.0f / 0.25f : 0.0f;
         EXPECT_NEAR(centrePixel(output).x, expected, 2e-4f * expected + 1e-7f)
             << (aimedAtCamera ? "inside the inner cone" : "outside the outer cone");
     }
@@ -101,7 +100,7 @@ TEST(PunctualLights, DirectionalLightGivesLambertsCosineLawInLux) {
     sun.intensity = glm::vec3(4.0f);
     scene.lights.push_back(sun);
     RenderOutput output = test::renderTestScene(prepared(scene), directOnly(8, 2));
-    float expected = 0.8f / kPi * 4.0f * 0.5f;
+    float expected = 0.8f / kPiFloat * 4.0f * 0.5f;
     for (const glm::vec3& pixel : output.image.pixels)
         ASSERT_NEAR(pixel.x, expected, 2e-5f * expected);
 }
@@ -185,7 +184,7 @@ TEST(AlphaMask, MaskedScreenLetsRaysThroughBelowTheCutoff) {
         // Between the light and the floor: blocks the light's shadow rays and the camera's view.
         test::addHorizontalGrid(scene, {-1.0f, -1.0f}, {1.0f, 1.0f}, 0.25f, true, 1, screen);
         RenderOutput output = test::renderTestScene(prepared(scene), directOnly(5, 2));
-        float open = 0.5f / kPi * 1.0f / 0.25f;
+        float open = 0.5f / kPiFloat * 1.0f / 0.25f;
         EXPECT_NEAR(centrePixel(output).x, alpha < 0.5f ? open : 0.0f, 2e-4f * open)
             << "alpha " << alpha;
     }

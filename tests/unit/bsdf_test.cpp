@@ -12,6 +12,7 @@
 #include "../support/adaptive_simpson.h"
 #include "../support/bsdf_chi_square.h"
 #include "../support/furnace.h"
+#include "common/math_constants.h"
 #include "shared/bsdf.h"
 #include "shared/rng.h"
 
@@ -21,8 +22,6 @@ namespace {
 using glm::vec2;
 using glm::vec3;
 using glm::vec4;
-
-constexpr double kPi = 3.14159265358979323846;
 
 using test::AlbedoEstimate;
 using test::estimateAlbedo;

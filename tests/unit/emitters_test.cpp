@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "../support/chi_square.h"
+#include "common/math_constants.h"
 #include "prepare/emitters.h"
 #include "prepare/prepared_scene.h"
 #include "prepare/prepared_scene_view.h"
@@ -17,8 +18,6 @@
 
 namespace vkpt {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 void addQuad(Scene& scene, glm::vec3 corner, glm::vec3 edgeA, glm::vec3 edgeB,
              std::uint32_t material) {

@@ -22,6 +22,7 @@
 #include "../support/chi_square.h"
 #include "../support/test_directory.h"
 #include "common/errors.h"
+#include "common/math_constants.h"
 #include "image/image_io.h"
 #include "shared/environment.h"
 #include "shared/rng.h"
@@ -32,7 +33,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kChiSquareTests = 3;
 const double kAlpha = 1.0 - std::pow(1.0 - 0.01, 1.0 / kChiSquareTests);
 

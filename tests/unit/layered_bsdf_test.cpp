@@ -16,6 +16,7 @@
 
 #include "../support/adaptive_simpson.h"
 #include "../support/furnace.h"
+#include "common/math_constants.h"
 #include "shared/albedo_lookup.h"
 #include "shared/bsdf.h"
 
@@ -24,7 +25,6 @@ namespace {
 
 using glm::vec3;
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kSize = VKPT_ALBEDO_TABLE_SIZE;
 
 // Adaptive Simpson (tests/support/adaptive_simpson.h) over 16 first panels, to an absolute

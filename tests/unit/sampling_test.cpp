@@ -3,13 +3,13 @@
 #include <gtest/gtest.h>
 
 #include "../support/chi_square.h"
+#include "common/math_constants.h"
 #include "shared/rng.h"
 #include "shared/sampling.h"
 
 namespace vkpt {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kAlpha = 0.01;
 
 // Bins over (z = cos θ, φ) of the hemisphere, with dω = dz dφ.

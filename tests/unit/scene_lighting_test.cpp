@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "../support/scene_builder.h"
+#include "common/math_constants.h"
 #include "prepare/environment_map.h"
 #include "prepare/scene_lighting.h"
 #include "prepare/studio_environment.h"
@@ -19,8 +20,6 @@ namespace {
 
 using test::addMaterial;
 using test::addQuad;
-
-constexpr double kPi = 3.14159265358979323846;
 
 // A 2 × 2 floor of the given material, facing up, at y = 0.
 Scene floorScene(glm::vec3 emission = glm::vec3(0.0f)) {

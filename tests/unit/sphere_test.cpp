@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "../support/chi_square.h"
+#include "common/math_constants.h"
 #include "shared/ray_offset.h"
 #include "shared/rng.h"
 #include "shared/sphere.h"
@@ -20,7 +21,6 @@ using glm::vec2;
 using glm::vec3;
 using glm::vec4;
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kFloatEpsilon = 1.1920928955078125e-7;
 
 // ---------------------------------------------------------------------------------------------
