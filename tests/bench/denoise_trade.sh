@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # denoise_trade.sh — the measurements of docs/trade/denoise.md: for each scene a high-spp
-# reference (vkpt-ref, as a state: its variance is subtracted from every error), then at each
-# sample count a render to a state (.exr), its raw image
+# reference (vkpt-ref at another seed; its own noise is fitted from the raw errors and
+# subtracted, denoise_trade.py), then at each sample count a render to a state (.exr), its raw image
 # (vkpt-merge) and its denoised image (vkpt-denoise on the device), with the process CPU time of
 # each step; denoise_trade.py turns them into relMSE, N_eq and relMSE × time (CSV on stdout), and
 # pictures at PICTURE_SPP into docs/trade/images.
@@ -34,8 +34,6 @@ for entry in $scenes; do
         timed "$work/${name}_ref.time" "$app/vkpt-ref" "${common[@]}" --spp "$ref_spp" --seed 7 \
             -o "$work/${name}_ref.exr" "$scene"
         "$app/vkpt-merge" -q -o "$work/${name}_ref.pfm" "$work/${name}_ref.exr"
-        oiiotool "$work/${name}_ref.exr" --ch variance,variance,variance \
-            -o "$work/${name}_ref_variance.pfm"
     fi
     for spp in $spps; do
         echo "denoise_trade: $name: $spp spp" >&2
