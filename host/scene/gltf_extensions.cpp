@@ -35,6 +35,17 @@ const std::vector<std::string> kSupportedExtensions = {"KHR_materials_emissive_s
                                                        "EXT_texture_webp",
                                                        "EXT_mesh_gpu_instancing"};
 
+// Extensions that describe the asset (XMP metadata: its title, creator, licence) and nothing that
+// is drawn: an image made without reading them is the image the file describes, so they are not
+// reported as ignored. KHR_xmp is the name exporters wrote before KHR_xmp_json_ld was ratified
+// (TransmissionTest.glb among the Khronos samples).
+const std::vector<std::string> kMetadataExtensions = {"KHR_xmp_json_ld", "KHR_xmp"};
+
+bool isMetadataExtension(const std::string& extension) {
+    return std::find(kMetadataExtensions.begin(), kMetadataExtensions.end(), extension) !=
+           kMetadataExtensions.end();
+}
+
 std::string joinNames(const std::vector<std::string>& names) {
     std::string joined;
     for (const std::string& name : names)
@@ -69,7 +80,8 @@ void checkRequiredExtensions(const std::vector<std::string>& extensionsRequired)
 std::vector<std::string> ignoredExtensions(const std::vector<std::string>& extensionsUsed) {
     std::vector<std::string> ignored;
     for (const std::string& extension : extensionsUsed) {
-        if (!isSupportedExtension(extension)) appendOnce(ignored, extension);
+        if (!isSupportedExtension(extension) && !isMetadataExtension(extension))
+            appendOnce(ignored, extension);
     }
     return ignored;
 }

@@ -14,6 +14,7 @@
 
 #include "../support/captured_load.h"
 #include "prepare/gpu_materials.h"
+#include "scene/gltf_extensions.h"
 #include "scene/gltf_loader.h"
 #include "scene/gltf_textures.h"
 #include "scene/scene_features.h"
@@ -337,6 +338,18 @@ TEST(GltfLights, PlacesPointSpotAndDirectionalLightsByTheirNodes) {
     expectNear(sun.direction, {-1, 0, 0}); // -Z turned 90 degrees about +Y; scale 5 removed
     EXPECT_NEAR(glm::length(sun.direction), 1.0f, 1e-6f);
     expectNear(sun.intensity, glm::vec3(2));
+}
+
+// --- Metadata ---------------------------------------------------------------------------------
+
+// XMP metadata (KHR_xmp_json_ld, and KHR_xmp as TransmissionTest.glb names it) describes the asset,
+// not the image: a load that does not read it leaves nothing out, so no note names it; an
+// extension that does change the image still does.
+TEST(GltfExtensionList, MetadataIsNotReportedAsIgnored) {
+    EXPECT_EQ(gltf::ignoredExtensions({"KHR_xmp_json_ld", "KHR_xmp", "KHR_materials_ior"}),
+              std::vector<std::string>{});
+    EXPECT_EQ(gltf::ignoredExtensions({"KHR_xmp", "KHR_physics_rigid_bodies"}),
+              std::vector<std::string>{"KHR_physics_rigid_bodies"});
 }
 
 // --- KHR_implicit_shapes spheres -----------------------------------------------------------
