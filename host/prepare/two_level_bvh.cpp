@@ -10,7 +10,7 @@
 #include "common/errors.h"
 #include "common/phase_log.h"
 #include "prepare/bvh_cache.h"
-#include "prepare/gpu_primitives.h"
+#include "prepare/level_cache.h"
 
 namespace vkpt {
 
@@ -23,26 +23,36 @@ struct BottomLevel {
     std::vector<gpu::WideBvhNode> nodes;
 };
 
-template <typename T> void append(std::vector<T>& to, std::vector<T>&& from) {
-    to.insert(to.end(), std::make_move_iterator(from.begin()), std::make_move_iterator(from.end()));
+template <typename T> void append(std::vector<T>& to, const std::vector<T>& from) {
+    to.insert(to.end(), from.begin(), from.end());
 }
 
 BottomLevel buildBottomLevel(const TriangleSoup& soup, std::span<const SceneSphere> spheres,
                              const Scene& scene, const PrepareOptions& options, bool withUvs,
                              bool withTangents, PreparedScene& prepared) {
+    const LevelGeometry geometry{soup, spheres, scene.materials};
+    const LevelLayout layout{options.bvh, withUvs, withTangents};
     BottomLevel level;
-    FlattenedBvh bvh = buildFlattenedBvh(primitiveBounds(soup, spheres), options.bvh,
-                                         options.bvhCache, BuildPhases::Silent);
-    level.mesh.tree = std::move(bvh.tree);
-    level.nodes = std::move(bvh.nodes);
-    GpuPrimitives primitives =
-        makeGpuPrimitives(soup, spheres, scene.materials, level.mesh.tree, withUvs, withTangents);
+    PreparedLevel built;
+    const PreparedLevel* source = &built;
+    if (options.levelCache != nullptr) {
+        // Copied: the cache keeps the level for the frames after.
+        source = &options.levelCache->get(geometry, layout, options.bvhCache, BuildPhases::Silent);
+        level.mesh.tree = source->bvh.tree;
+        level.nodes = source->bvh.nodes;
+    } else {
+        built = prepareLevel(geometry, layout, options.bvhCache, BuildPhases::Silent);
+        level.mesh.tree = std::move(built.bvh.tree);
+        level.nodes = std::move(built.bvh.nodes);
+    }
+    const GpuPrimitives& primitives = source->primitives;
     level.mesh.firstPrimitive = static_cast<std::uint32_t>(prepared.triangles.size());
     level.mesh.primitiveCount = static_cast<std::uint32_t>(primitives.records.size());
-    append(prepared.triangles, std::move(primitives.records));
-    append(prepared.normals, std::move(primitives.normals));
-    append(prepared.uvs, std::move(primitives.uvs));
-    append(prepared.tangents, std::move(primitives.tangents));
+    append(prepared.triangles, primitives.records);
+    append(prepared.normals, primitives.normals);
+    append(prepared.uvs, primitives.uvs);
+    append(prepared.tangents, primitives.tangents);
+    prepared.levelHashes.push_back(source->hashes);
     return level;
 }
 
