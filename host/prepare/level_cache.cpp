@@ -73,6 +73,7 @@ PreparedLevel prepareLevel(const LevelGeometry& geometry, const LevelLayout& lay
     PreparedLevel level;
     level.bvh = buildFlattenedBvh(primitiveBounds(geometry.soup, geometry.spheres), layout.bvh,
                                   bvhs, phases);
+    level.stats = computeBvhStats(level.bvh.tree, layout.bvh);
     level.primitives = makeGpuPrimitives(geometry.soup, geometry.spheres, geometry.materials,
                                          level.bvh.tree, layout.withUvs, layout.withTangents);
     level.hashes = hashLevel(level.primitives);

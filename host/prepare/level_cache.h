@@ -43,11 +43,13 @@ struct LevelLayout {
 
 struct PreparedLevel {
     FlattenedBvh bvh;
+    BvhStats stats; // of bvh.tree, under the layout's build options
     GpuPrimitives primitives;
     LevelHashes hashes;
 };
 
-// Builds the level's tree (through `bvhs` when given) and its records, and hashes them.
+// Builds the level's tree (through `bvhs` when given) and its records, and measures and hashes
+// them.
 PreparedLevel prepareLevel(const LevelGeometry& geometry, const LevelLayout& layout, BvhCache* bvhs,
                            BuildPhases phases);
 

@@ -61,7 +61,7 @@ void prepareSingleLevel(const Scene& scene, const PrepareOptions& options, bool 
     std::chrono::duration<double> buildTime = std::chrono::steady_clock::now() - start;
     prepared.tree = std::move(built.bvh.tree);
     prepared.nodes = std::move(built.bvh.nodes);
-    prepared.bvhStats = computeBvhStats(prepared.tree, options.bvh);
+    prepared.bvhStats = built.stats;
     prepared.bvhStats.buildSeconds = buildTime.count();
     prepared.triangles = std::move(built.primitives.records);
     prepared.normals = std::move(built.primitives.normals);

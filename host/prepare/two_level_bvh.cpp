@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <span>
 
 #include "bvh/bvh_wide.h"
 #include "common/errors.h"
@@ -20,7 +21,11 @@ namespace {
 // from 0 like its primitives.
 struct BottomLevel {
     PreparedMesh mesh;
-    std::vector<gpu::WideBvhNode> nodes;
+    // Its nodes: a level kept by the level cache reads them there (not copied twice), another
+    // holds its own.
+    std::span<const gpu::WideBvhNode> nodes;
+    std::vector<gpu::WideBvhNode> ownNodes;
+    BvhStats stats;
 };
 
 template <typename T> void append(std::vector<T>& to, const std::vector<T>& from) {
@@ -43,8 +48,10 @@ BottomLevel buildBottomLevel(const TriangleSoup& soup, std::span<const SceneSphe
     } else {
         built = prepareLevel(geometry, layout, options.bvhCache, BuildPhases::Silent);
         level.mesh.tree = std::move(built.bvh.tree);
-        level.nodes = std::move(built.bvh.nodes);
+        level.ownNodes = std::move(built.bvh.nodes);
+        level.nodes = level.ownNodes; // the buffer stays where it is when the level moves
     }
+    level.stats = source->stats;
     const GpuPrimitives& primitives = source->primitives;
     level.mesh.firstPrimitive = static_cast<std::uint32_t>(prepared.triangles.size());
     level.mesh.primitiveCount = static_cast<std::uint32_t>(primitives.records.size());
@@ -68,6 +75,7 @@ void appendNodes(BottomLevel& level, std::vector<gpu::WideBvhNode>& nodes) {
         nodes.push_back(node);
     }
     level.nodes = {};
+    level.ownNodes = {};
 }
 
 glm::vec4 row(const glm::dmat4& m, int r) {
@@ -93,8 +101,7 @@ struct Placement {
 };
 
 // Adds a bottom level's counts to the whole's; returns its depth.
-std::uint32_t addStats(const BvhTree& tree, const BvhBuildOptions& options, BvhStats& total) {
-    const BvhStats stats = computeBvhStats(tree, options);
+std::uint32_t addStats(const BvhStats& stats, BvhStats& total) {
     total.nodeCount += stats.nodeCount;
     total.leafCount += stats.leafCount;
     total.maxLeafSize = std::max(total.maxLeafSize, stats.maxLeafSize);
@@ -173,6 +180,10 @@ void prepareTwoLevel(const Scene& scene, const PrepareOptions& options, bool wit
     top.maxLeafSize = 1; // entering an instance costs a transform: one per leaf, culled alone
     prepared.instanceTree = buildBvh(bounds, top);
     prepared.nodes = flattenWideBvh(prepared.instanceTree);
+    std::size_t nodeCount = prepared.nodes.size();
+    for (const BottomLevel& level : levels)
+        nodeCount += level.nodes.size();
+    prepared.nodes.reserve(nodeCount);
     for (BottomLevel& level : levels)
         appendNodes(level, prepared.nodes);
     for (std::uint32_t placement : prepared.instanceTree.primitiveOrder) {
@@ -185,8 +196,7 @@ void prepareTwoLevel(const Scene& scene, const PrepareOptions& options, bool wit
     prepared.bvhStats = computeBvhStats(prepared.instanceTree, top);
     std::uint32_t deepestBottom = 0;
     for (BottomLevel& level : levels) {
-        deepestBottom =
-            std::max(deepestBottom, addStats(level.mesh.tree, options.bvh, prepared.bvhStats));
+        deepestBottom = std::max(deepestBottom, addStats(level.stats, prepared.bvhStats));
         prepared.meshes.push_back(std::move(level.mesh));
     }
     prepared.bvhStats.maxDepth += deepestBottom + 1; // a top-level leaf leads to a bottom root

@@ -575,20 +575,33 @@ const gltf::RestLayout& restLayout(GltfSceneSource::Parsed& parsed, Instancing i
     return rest;
 }
 
-// The still part for `scene` (the base with its variant chosen, at its origin): the one kept, or
-// walked now and kept. Built from this pose, but a still node is where it is at any time.
-const gltf::StillPart& stillPart(GltfSceneSource::Parsed& parsed, const Scene& scene,
+// The scene before any walk: the file's materials and textures with the variant chosen, at the
+// origin the rest extent chooses, and framed by that extent when posed (Scene::framingBounds).
+Scene startingScene(const GltfSceneSource::Parsed& parsed, int variant,
+                    const std::optional<gltf::WorldExtent>& extent, bool posed) {
+    Scene scene = parsed.base;
+    scene.materialVariant = variant;
+    scene.worldOrigin = extent ? gltf::chooseWorldOrigin(*extent) : glm::dvec3(0.0);
+    if (posed && extent)
+        scene.framingBounds = Bounds{glm::vec3(extent->min - scene.worldOrigin),
+                                     glm::vec3(extent->max - scene.worldOrigin)};
+    return scene;
+}
+
+// The still part of the poses of `variant` and `playing`: the one kept, or walked now (from this
+// pose: a still node is where it is at any time) and kept.
+const gltf::StillPart& stillPart(GltfSceneSource::Parsed& parsed, int variant,
                                  const std::vector<std::size_t>& playing,
-                                 const gltf::InstancingPlan& plan, const gltf::ScenePose* pose,
+                                 const gltf::RestLayout& rest, const gltf::ScenePose* pose,
                                  const gltf::NodeWorlds& worlds, const glm::dmat4& root,
                                  const std::vector<char>& moving) {
-    if (parsed.still && parsed.still->materialVariant == scene.materialVariant &&
+    if (parsed.still && parsed.still->materialVariant == variant &&
         parsed.still->playing == playing)
         return *parsed.still;
     parsed.still.reset();
-    gltf::StillPart still{scene.materialVariant, playing, scene, {}};
-    SceneBuilder builder(parsed.model, still.scene, parsed.texcoords, plan, pose, worlds, moving,
-                         WalkPart::Still);
+    gltf::StillPart still{variant, playing, startingScene(parsed, variant, rest.extent, true), {}};
+    SceneBuilder builder(parsed.model, still.scene, parsed.texcoords, rest.plan, pose, worlds,
+                         moving, WalkPart::Still);
     gltf::walkSceneNodes(
         parsed.model, parsed.sceneIndex,
         [&](int node, const glm::dmat4& world) { builder.visitNode(node, world); }, root, pose);
@@ -599,8 +612,7 @@ const gltf::StillPart& stillPart(GltfSceneSource::Parsed& parsed, const Scene& s
 Scene buildScene(GltfSceneSource::Parsed& parsed, const LoadOptions& options) {
     const tinygltf::Model& model = parsed.model;
     const int sceneIndex = parsed.sceneIndex;
-    Scene scene = parsed.base;
-    scene.materialVariant = gltf::chooseMaterialVariant(scene.materialVariants, options.variant);
+    const int variant = gltf::chooseMaterialVariant(parsed.base.materialVariants, options.variant);
     const std::vector<std::size_t> playing =
         gltf::selectAnimations(parsed.animations, options.animation);
     std::optional<gltf::ScenePose> pose;
@@ -610,28 +622,26 @@ Scene buildScene(GltfSceneSource::Parsed& parsed, const LoadOptions& options) {
     // positions are rounded to float; measured at rest, so that every frame of an animation has
     // the same origin (gltf_origin.h).
     const gltf::RestLayout& rest = restLayout(parsed, options.instancing);
-    const gltf::InstancingPlan& plan = rest.plan;
     const std::optional<gltf::WorldExtent>& extent = rest.extent;
-    scene.worldOrigin = extent ? gltf::chooseWorldOrigin(*extent) : glm::dvec3(0.0);
-    if (pose && extent)
-        scene.framingBounds = Bounds{glm::vec3(extent->min - scene.worldOrigin),
-                                     glm::vec3(extent->max - scene.worldOrigin)};
-    const glm::dmat4 root = glm::translate(glm::dmat4(1.0), -scene.worldOrigin);
+    const glm::dvec3 origin = extent ? gltf::chooseWorldOrigin(*extent) : glm::dvec3(0.0);
+    const glm::dmat4 root = glm::translate(glm::dmat4(1.0), -origin);
     const gltf::NodeWorlds worlds = nodeWorlds(model, sceneIndex, root, posed);
+    Scene scene;
     if (options.keepMovingApart && pose) {
         // The still part read once for every frame; this frame walks what moves.
         std::vector<char> moving = movingNodes(model, sceneIndex, parsed.animations, playing);
         const gltf::StillPart& still =
-            stillPart(parsed, scene, playing, plan, posed, worlds, root, moving);
+            stillPart(parsed, variant, playing, rest, posed, worlds, root, moving);
         scene = still.scene;
-        SceneBuilder builder(model, scene, parsed.texcoords, plan, posed, worlds, std::move(moving),
-                             WalkPart::Moving, still.slots);
+        SceneBuilder builder(model, scene, parsed.texcoords, rest.plan, posed, worlds,
+                             std::move(moving), WalkPart::Moving, still.slots);
         gltf::walkSceneNodes(
             model, sceneIndex,
             [&](int node, const glm::dmat4& world) { builder.visitNode(node, world); }, root,
             posed);
     } else {
-        SceneBuilder builder(model, scene, parsed.texcoords, plan, posed, worlds, {});
+        scene = startingScene(parsed, variant, extent, pose.has_value());
+        SceneBuilder builder(model, scene, parsed.texcoords, rest.plan, posed, worlds, {});
         gltf::walkSceneNodes(
             model, sceneIndex,
             [&](int node, const glm::dmat4& world) { builder.visitNode(node, world); }, root,
