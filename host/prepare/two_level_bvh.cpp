@@ -63,6 +63,20 @@ BottomLevel buildBottomLevel(const TriangleSoup& soup, std::span<const SceneSphe
     return level;
 }
 
+// Room for every level's primitives at once: appended level by level into arrays without room,
+// the world's records (a large set's tens of MiB) would be copied again, to fresh pages, for each
+// mesh that follows them.
+void reservePrimitiveArrays(const Scene& scene, bool withUvs, bool withTangents,
+                            PreparedScene& prepared) {
+    std::size_t count = scene.triangleCount() + scene.spheres.size();
+    for (const SceneMesh& mesh : scene.meshes)
+        count += mesh.triangleCount();
+    prepared.triangles.reserve(count);
+    prepared.normals.reserve(count);
+    if (withUvs) prepared.uvs.reserve(3 * count);
+    if (withTangents) prepared.tangents.reserve(count);
+}
+
 // Appends a bottom level's nodes, renumbered to their place in the one node array and to its
 // primitives' place in the one primitive array.
 void appendNodes(BottomLevel& level, std::vector<gpu::WideBvhNode>& nodes) {
@@ -151,6 +165,7 @@ void prepareTwoLevel(const Scene& scene, const PrepareOptions& options, bool wit
     ScopedPhase bottomPhase("bottom-level BVHs"); // built, or taken from the frame before
     std::vector<BottomLevel> levels;
     std::vector<Placement> placements;
+    reservePrimitiveArrays(scene, withUvs, withTangents, prepared);
     // The world's own geometry, placed unmoved by an instance of its own.
     if (scene.triangleCount() + scene.spheres.size() > 0) {
         levels.push_back(buildBottomLevel(scene, scene.spheres, scene, options, withUvs,
