@@ -128,6 +128,7 @@ SceneSetup setUpScene(const RenderSettings& settings, const std::string& program
     ScopedPhase preparePhase("prepare");
     PrepareOptions prepareOptions{{}, settings.general, settings.lightSampler};
     prepareOptions.bvhCache = frames != nullptr ? &frames->bvhs : nullptr;
+    prepareOptions.levelCache = frames != nullptr ? &frames->levels : nullptr;
     setup.prepared = prepareScene(scene, prepareOptions);
     preparePhase.end();
     setup.placedTriangles = scene.placedTriangleCount();
@@ -143,13 +144,17 @@ SceneSetup setUpScene(const RenderSettings& settings, const std::string& program
                  setup.prepared.emitters.size(), bvh.nodeCount, bvh.maxDepth, double(bvh.sahCost),
                  bvh.buildSeconds);
     if (frames != nullptr) {
+        const LevelCacheStats& levels = frames->levels.stats();
         const BvhCacheStats& kept = frames->bvhs.stats();
         if (settings.verbose)
             std::fprintf(stderr,
-                         "%s: frame BVHs: %u taken from the frame before (%llu primitives), %u "
-                         "built\n",
-                         program.c_str(), kept.reused,
-                         static_cast<unsigned long long>(kept.reusedPrimitives), kept.built);
+                         "%s: frame bottom levels: %u taken from the frame before (%llu "
+                         "primitives), %u prepared; of their BVHs %u taken from the frame before "
+                         "(same boxes), %u built\n",
+                         program.c_str(), levels.reused,
+                         static_cast<unsigned long long>(levels.reusedPrimitives), levels.prepared,
+                         kept.reused, kept.built);
+        frames->levels.endFrame();
         frames->bvhs.endFrame();
     }
     if (settings.verbose)

@@ -8,6 +8,7 @@
 
 #include "common/render_settings.h"
 #include "prepare/bvh_cache.h"
+#include "prepare/level_cache.h"
 #include "prepare/prepared_scene.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene.h"
@@ -24,12 +25,14 @@ struct SceneSetup {
 };
 
 // What an animation's frames keep from one to the next (docs/scene-model.md, "Frames"): the
-// file, read by the first frame and posed by every one; the --env image, read once; and the
-// bottom-level BVHs of the geometry that did not move.
+// file, read by the first frame and posed by every one (which keeps the still geometry it walked
+// once: GltfSceneSource); the --env image, read once; and the bottom levels of the geometry that
+// did not move: their records and hashes, and the BVHs of geometry whose boxes did not change.
 struct FrameCache {
     std::optional<GltfSceneSource> source;
     std::optional<SceneEnvironment> environment;
     BvhCache bvhs;
+    LevelCache levels;
 };
 
 // `afterLoad`, when given, sees the loaded scene before it is prepared (vkpt starts creating its

@@ -12,6 +12,7 @@
 #include "prepare/environment_map.h"
 #include "prepare/gpu_materials.h"
 #include "prepare/gpu_primitives.h"
+#include "prepare/level_cache.h"
 #include "prepare/light_tree.h"
 #include "prepare/two_level_bvh.h"
 #include "shared/albedo_lookup.h"
@@ -48,18 +49,25 @@ void prepareSingleLevel(const Scene& scene, const PrepareOptions& options, bool 
     const std::size_t primitiveCount = scene.triangleCount() + scene.spheres.size();
     VKPT_ASSERT(primitiveCount < BVH_MAX_TRIANGLES, "primitive count fits a leaf word");
     auto start = std::chrono::steady_clock::now();
-    FlattenedBvh bvh = buildFlattenedBvh(primitiveBounds(scene), options.bvh, options.bvhCache);
+    const LevelGeometry geometry{scene, scene.spheres, scene.materials};
+    const LevelLayout layout{options.bvh, withUvs, withTangents};
+    PreparedLevel built;
+    if (options.levelCache != nullptr) {
+        // Copied: the kept level stays for the frames after.
+        built = options.levelCache->get(geometry, layout, options.bvhCache, BuildPhases::Logged);
+    } else {
+        built = prepareLevel(geometry, layout, options.bvhCache, BuildPhases::Logged);
+    }
     std::chrono::duration<double> buildTime = std::chrono::steady_clock::now() - start;
-    prepared.tree = std::move(bvh.tree);
-    prepared.nodes = std::move(bvh.nodes);
-    prepared.bvhStats = computeBvhStats(prepared.tree, options.bvh);
+    prepared.tree = std::move(built.bvh.tree);
+    prepared.nodes = std::move(built.bvh.nodes);
+    prepared.bvhStats = built.stats;
     prepared.bvhStats.buildSeconds = buildTime.count();
-
-    GpuPrimitives primitives = makeGpuPrimitives(scene, prepared.tree, withUvs, withTangents);
-    prepared.triangles = std::move(primitives.records);
-    prepared.normals = std::move(primitives.normals);
-    prepared.uvs = std::move(primitives.uvs);
-    prepared.tangents = std::move(primitives.tangents);
+    prepared.triangles = std::move(built.primitives.records);
+    prepared.normals = std::move(built.primitives.normals);
+    prepared.uvs = std::move(built.primitives.uvs);
+    prepared.tangents = std::move(built.primitives.tangents);
+    prepared.levelHashes = {built.hashes};
 }
 
 bool usesLightTree(LightSampler sampler, std::size_t emitters) {

@@ -10,14 +10,13 @@
 
 #include "bvh/bvh_build.h"
 #include "common/render_settings.h"
+#include "prepare/level_cache.h"
 #include "scene/scene.h"
 #include "scene/scene_features.h"
 #include "shared/host_device.h"
 #include "shared/scene_array_table.h"
 
 namespace vkpt {
-
-class BvhCache;
 
 // A bottom-level BVH of a two-level scene: the world's own geometry or a stored mesh, in its own
 // space. Its nodes and primitives are ranges of PreparedScene::nodes and ::triangles.
@@ -44,6 +43,9 @@ struct PreparedScene : gpu::SceneArrayMembers<HostArray> {
     // empty.
     std::vector<PreparedMesh> meshes;
     BvhTree instanceTree;
+    // Per bottom level, in the order of the primitive arrays (the one level of a single-level
+    // scene): what its records hash to, for the scene's fingerprint (scene_hash.h).
+    std::vector<LevelHashes> levelHashes;
     SceneFeatures features;     // what the scene uses (all of it for a general layout)
     SceneFeatures usedFeatures; // what the scene uses, whatever the layout
     double totalEmittedPower = 0.0;
@@ -66,6 +68,10 @@ struct PrepareOptions {
     // An animation's frames: bottom-level trees kept from the frames before, taken again for
     // geometry whose primitives' boxes did not change (bvh_cache.h); nullptr: every tree built.
     BvhCache* bvhCache = nullptr;
+    // An animation's frames: bottom levels (trees, records and their hashes) kept from the frames
+    // before, taken again for geometry that is the very same (level_cache.h); on a miss the tree
+    // still comes through bvhCache. nullptr: every level prepared.
+    LevelCache* levelCache = nullptr;
 };
 
 PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options = {});

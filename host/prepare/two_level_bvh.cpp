@@ -5,12 +5,13 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <span>
 
 #include "bvh/bvh_wide.h"
 #include "common/errors.h"
 #include "common/phase_log.h"
 #include "prepare/bvh_cache.h"
-#include "prepare/gpu_primitives.h"
+#include "prepare/level_cache.h"
 
 namespace vkpt {
 
@@ -20,30 +21,60 @@ namespace {
 // from 0 like its primitives.
 struct BottomLevel {
     PreparedMesh mesh;
-    std::vector<gpu::WideBvhNode> nodes;
+    // Its nodes: a level kept by the level cache reads them there (not copied twice), another
+    // holds its own.
+    std::span<const gpu::WideBvhNode> nodes;
+    std::vector<gpu::WideBvhNode> ownNodes;
+    BvhStats stats;
 };
 
-template <typename T> void append(std::vector<T>& to, std::vector<T>&& from) {
-    to.insert(to.end(), std::make_move_iterator(from.begin()), std::make_move_iterator(from.end()));
+template <typename T> void append(std::vector<T>& to, const std::vector<T>& from) {
+    to.insert(to.end(), from.begin(), from.end());
 }
 
 BottomLevel buildBottomLevel(const TriangleSoup& soup, std::span<const SceneSphere> spheres,
                              const Scene& scene, const PrepareOptions& options, bool withUvs,
                              bool withTangents, PreparedScene& prepared) {
+    const LevelGeometry geometry{soup, spheres, scene.materials};
+    const LevelLayout layout{options.bvh, withUvs, withTangents};
     BottomLevel level;
-    FlattenedBvh bvh = buildFlattenedBvh(primitiveBounds(soup, spheres), options.bvh,
-                                         options.bvhCache, BuildPhases::Silent);
-    level.mesh.tree = std::move(bvh.tree);
-    level.nodes = std::move(bvh.nodes);
-    GpuPrimitives primitives =
-        makeGpuPrimitives(soup, spheres, scene.materials, level.mesh.tree, withUvs, withTangents);
+    PreparedLevel built;
+    const PreparedLevel* source = &built;
+    if (options.levelCache != nullptr) {
+        // Copied: the cache keeps the level for the frames after.
+        source = &options.levelCache->get(geometry, layout, options.bvhCache, BuildPhases::Silent);
+        level.mesh.tree = source->bvh.tree;
+        level.nodes = source->bvh.nodes;
+    } else {
+        built = prepareLevel(geometry, layout, options.bvhCache, BuildPhases::Silent);
+        level.mesh.tree = std::move(built.bvh.tree);
+        level.ownNodes = std::move(built.bvh.nodes);
+        level.nodes = level.ownNodes; // the buffer stays where it is when the level moves
+    }
+    level.stats = source->stats;
+    const GpuPrimitives& primitives = source->primitives;
     level.mesh.firstPrimitive = static_cast<std::uint32_t>(prepared.triangles.size());
     level.mesh.primitiveCount = static_cast<std::uint32_t>(primitives.records.size());
-    append(prepared.triangles, std::move(primitives.records));
-    append(prepared.normals, std::move(primitives.normals));
-    append(prepared.uvs, std::move(primitives.uvs));
-    append(prepared.tangents, std::move(primitives.tangents));
+    append(prepared.triangles, primitives.records);
+    append(prepared.normals, primitives.normals);
+    append(prepared.uvs, primitives.uvs);
+    append(prepared.tangents, primitives.tangents);
+    prepared.levelHashes.push_back(source->hashes);
     return level;
+}
+
+// Room for every level's primitives at once: appended level by level into arrays without room,
+// the world's records (a large set's tens of MiB) would be copied again, to fresh pages, for each
+// mesh that follows them.
+void reservePrimitiveArrays(const Scene& scene, bool withUvs, bool withTangents,
+                            PreparedScene& prepared) {
+    std::size_t count = scene.triangleCount() + scene.spheres.size();
+    for (const SceneMesh& mesh : scene.meshes)
+        count += mesh.triangleCount();
+    prepared.triangles.reserve(count);
+    prepared.normals.reserve(count);
+    if (withUvs) prepared.uvs.reserve(3 * count);
+    if (withTangents) prepared.tangents.reserve(count);
 }
 
 // Appends a bottom level's nodes, renumbered to their place in the one node array and to its
@@ -58,6 +89,7 @@ void appendNodes(BottomLevel& level, std::vector<gpu::WideBvhNode>& nodes) {
         nodes.push_back(node);
     }
     level.nodes = {};
+    level.ownNodes = {};
 }
 
 glm::vec4 row(const glm::dmat4& m, int r) {
@@ -83,8 +115,7 @@ struct Placement {
 };
 
 // Adds a bottom level's counts to the whole's; returns its depth.
-std::uint32_t addStats(const BvhTree& tree, const BvhBuildOptions& options, BvhStats& total) {
-    const BvhStats stats = computeBvhStats(tree, options);
+std::uint32_t addStats(const BvhStats& stats, BvhStats& total) {
     total.nodeCount += stats.nodeCount;
     total.leafCount += stats.leafCount;
     total.maxLeafSize = std::max(total.maxLeafSize, stats.maxLeafSize);
@@ -134,6 +165,7 @@ void prepareTwoLevel(const Scene& scene, const PrepareOptions& options, bool wit
     ScopedPhase bottomPhase("bottom-level BVHs"); // built, or taken from the frame before
     std::vector<BottomLevel> levels;
     std::vector<Placement> placements;
+    reservePrimitiveArrays(scene, withUvs, withTangents, prepared);
     // The world's own geometry, placed unmoved by an instance of its own.
     if (scene.triangleCount() + scene.spheres.size() > 0) {
         levels.push_back(buildBottomLevel(scene, scene.spheres, scene, options, withUvs,
@@ -163,6 +195,10 @@ void prepareTwoLevel(const Scene& scene, const PrepareOptions& options, bool wit
     top.maxLeafSize = 1; // entering an instance costs a transform: one per leaf, culled alone
     prepared.instanceTree = buildBvh(bounds, top);
     prepared.nodes = flattenWideBvh(prepared.instanceTree);
+    std::size_t nodeCount = prepared.nodes.size();
+    for (const BottomLevel& level : levels)
+        nodeCount += level.nodes.size();
+    prepared.nodes.reserve(nodeCount);
     for (BottomLevel& level : levels)
         appendNodes(level, prepared.nodes);
     for (std::uint32_t placement : prepared.instanceTree.primitiveOrder) {
@@ -175,8 +211,7 @@ void prepareTwoLevel(const Scene& scene, const PrepareOptions& options, bool wit
     prepared.bvhStats = computeBvhStats(prepared.instanceTree, top);
     std::uint32_t deepestBottom = 0;
     for (BottomLevel& level : levels) {
-        deepestBottom =
-            std::max(deepestBottom, addStats(level.mesh.tree, options.bvh, prepared.bvhStats));
+        deepestBottom = std::max(deepestBottom, addStats(level.stats, prepared.bvhStats));
         prepared.meshes.push_back(std::move(level.mesh));
     }
     prepared.bvhStats.maxDepth += deepestBottom + 1; // a top-level leaf leads to a bottom root

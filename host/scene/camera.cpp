@@ -27,7 +27,9 @@ SceneCamera selectCamera(const Scene& scene, std::optional<int> index, float asp
     if (index) return requestedCamera(scene, *index);
     if (!scene.cameras.empty()) return scene.cameras.front();
     std::cerr << scene.sourcePath << ": no camera in the scene; framing its bounds from +Z\n";
-    return makeFramingCamera(scene.framingBounds.value_or(computeBounds(scene)), aspect);
+    // Not value_or: its argument, a walk over every vertex, would be computed either way.
+    return makeFramingCamera(scene.framingBounds ? *scene.framingBounds : computeBounds(scene),
+                             aspect);
 }
 
 SceneCamera makeFramingCamera(const Bounds& bounds, float aspect) {

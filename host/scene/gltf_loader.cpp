@@ -33,9 +33,22 @@
 #include "scene/gltf_variants.h"
 
 namespace vkpt {
+namespace gltf {
+
+// Where a builder's walk left the meshes it keeps once: per glTF mesh, not read yet, or its slot
+// in Scene::meshes (nullopt: nothing to keep); and the default material, once appended. The
+// moving walk starts where the still walk ended.
+struct MeshSlots {
+    std::vector<std::optional<std::optional<std::uint32_t>>> slots;
+    std::optional<std::uint32_t> defaultMaterial;
+};
+
+} // namespace gltf
+
 namespace {
 
 using gltf::GltfProblem;
+using gltf::MeshSlots;
 
 std::string joinNames(const std::vector<std::string>& names) {
     std::string joined;
@@ -60,25 +73,40 @@ bool canInstance(const glm::dmat4& transform) {
     return std::isfinite(det) && scale > 0.0 && std::abs(det) > 1e-6 * scale;
 }
 
+// Which of the nodes' contributions a walk collects. A scene that keeps what moves apart
+// (LoadOptions::keepMovingApart) is built in two walks: the still part, the meshes of the nodes
+// that no animation moves, skins or morphs, which every frame shares and which is read once; then
+// per frame the moving part, the other meshes, and the cameras, lights and spheres of every node
+// (few, and in walk order as a whole walk gives them). Everything else is one whole walk.
+enum class WalkPart { Whole, Still, Moving };
+
 // Collects the triangles, spheres, lights and cameras of the nodes the walk visits; a mesh the
 // instancing plan keeps once is read into Scene::meshes at its first placement and placed by
 // Scene::instances.
 class SceneBuilder {
 public:
     // `movingNodes` (per node, empty for none): the nodes an animation moves, whose meshes are
-    // kept apart from the still geometry (LoadOptions::keepMovingApart).
+    // kept apart from the still geometry (LoadOptions::keepMovingApart). `slots`: where a walk
+    // before this one left the kept meshes (empty: none yet).
     SceneBuilder(const tinygltf::Model& model, Scene& scene, gltf::Texcoords texcoords,
                  const gltf::InstancingPlan& plan, const gltf::ScenePose* pose,
-                 const gltf::NodeWorlds& worlds, std::vector<char> movingNodes)
+                 const gltf::NodeWorlds& worlds, std::vector<char> movingNodes,
+                 WalkPart part = WalkPart::Whole, MeshSlots slots = {})
         : model_(model), scene_(scene), texcoords_(texcoords), plan_(plan), pose_(pose),
-          worlds_(worlds), movingNodes_(std::move(movingNodes)), skinJoints_(model.skins.size()),
+          worlds_(worlds), movingNodes_(std::move(movingNodes)), part_(part),
+          skinJoints_(model.skins.size()),
           withTangents_(std::any_of(scene.materials.begin(), scene.materials.end(),
                                     [](const SceneMaterial& m) { return m.needsTangents(); })),
-          meshSlots_(model.meshes.size()) {}
+          defaultMaterial_(slots.defaultMaterial), meshSlots_(std::move(slots.slots)) {
+        meshSlots_.resize(model.meshes.size());
+    }
+
+    MeshSlots meshSlots() const { return {meshSlots_, defaultMaterial_}; }
 
     void visitNode(int nodeIndex, const glm::dmat4& world) {
         const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(nodeIndex)];
-        if (node.mesh != -1) appendMesh(nodeIndex, node.mesh, world);
+        if (node.mesh != -1 && collectsMeshOf(nodeIndex)) appendMesh(nodeIndex, node.mesh, world);
+        if (part_ == WalkPart::Still) return;
         if (node.camera != -1) appendCamera(nodeIndex, world);
         if (std::optional<SceneLight> light = gltf::placeLight(model_, nodeIndex, world)) {
             scene_.lights.push_back(std::move(*light));
@@ -90,6 +118,26 @@ public:
     }
 
 private:
+    bool collectsMeshOf(int nodeIndex) const {
+        if (part_ == WalkPart::Whole) return true;
+        return (part_ == WalkPart::Moving) == changesWithTheFrame(nodeIndex);
+    }
+
+    // Whether a frame's pose decides where the node's mesh is: an animation moves the node, a
+    // skin places the mesh, or morph weights shape it (a frame keeps a morphed mesh as a posed
+    // mesh of its own whatever its weights: placeMesh). A mesh that does not exist is the still
+    // walk's, which reports it.
+    bool changesWithTheFrame(int nodeIndex) const {
+        const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(nodeIndex)];
+        if (node.mesh < 0 || static_cast<std::size_t>(node.mesh) >= model_.meshes.size())
+            return false;
+        if (movingNodes_[static_cast<std::size_t>(nodeIndex)] != 0 || node.skin != -1) return true;
+        const tinygltf::Mesh& mesh = model_.meshes[static_cast<std::size_t>(node.mesh)];
+        const bool morphs = std::any_of(mesh.primitives.begin(), mesh.primitives.end(),
+                                        [](const auto& p) { return !p.targets.empty(); });
+        return morphs && !gltf::morphWeights(model_, nodeIndex, pose_).empty();
+    }
+
     // The node's mesh at each of its placements: the node itself, or each EXT_mesh_gpu_instancing
     // instance.
     void appendMesh(int nodeIndex, int meshIndex, const glm::dmat4& world) {
@@ -329,6 +377,7 @@ private:
     const gltf::ScenePose* pose_; // nullptr: at rest
     const gltf::NodeWorlds& worlds_;
     std::vector<char> movingNodes_; // per node; empty: nothing kept apart
+    WalkPart part_;
     std::vector<std::optional<std::vector<glm::dmat4>>> skinJoints_; // per skin, when first used
     bool withTangents_; // some material has a normal texture or anisotropy
     std::optional<std::uint32_t> defaultMaterial_;
@@ -430,8 +479,30 @@ gltf::NodeWorlds nodeWorlds(const tinygltf::Model& model, int sceneIndex, const 
 
 } // namespace
 
+namespace gltf {
+
+// The layout at rest, the same for every pose under one instancing mode: which meshes are kept
+// once, and the extent that chooses the origin and frames the scene.
+struct RestLayout {
+    Instancing instancing = Instancing::Auto;
+    gltf::InstancingPlan plan;
+    std::optional<gltf::WorldExtent> extent;
+};
+
+// A frame's still part (WalkPart::Still): the scene as the still walk left it, for the poses of
+// the same variant and animations to start from (the instancing mode is the rest layout's).
+struct StillPart {
+    int materialVariant = -1;
+    std::vector<std::size_t> playing;
+    Scene scene;
+    MeshSlots slots;
+};
+
+} // namespace gltf
+
 // What every pose of the file shares: the parsed document, its decoded textures and converted
-// materials, and its checked animations.
+// materials, and its checked animations; and, kept by the first pose for those after (poses are
+// not taken concurrently), the rest layout and a frame's still part.
 struct GltfSceneSource::Parsed {
     std::string path;
     tinygltf::Model model;
@@ -439,6 +510,8 @@ struct GltfSceneSource::Parsed {
     gltf::Texcoords texcoords = gltf::Texcoords::Skip;
     int sceneIndex = 0;
     std::vector<gltf::Animation> animations;
+    std::optional<gltf::RestLayout> rest;
+    std::optional<gltf::StillPart> still;
 };
 
 namespace {
@@ -491,35 +564,89 @@ std::vector<char> movingNodes(const tinygltf::Model& model, int sceneIndex,
     return moving;
 }
 
-Scene buildScene(const GltfSceneSource::Parsed& parsed, const LoadOptions& options) {
+const gltf::RestLayout& restLayout(GltfSceneSource::Parsed& parsed, Instancing instancing) {
+    if (parsed.rest && parsed.rest->instancing == instancing) return *parsed.rest;
+    parsed.still.reset(); // walked under the plan it replaces
+    gltf::RestLayout& rest = parsed.rest.emplace();
+    rest.instancing = instancing;
+    rest.plan =
+        gltf::planInstancing(parsed.model, parsed.sceneIndex, instancing, parsed.base.materials);
+    rest.extent = gltf::worldExtent(parsed.model, parsed.sceneIndex, rest.plan, parsed.animations);
+    return rest;
+}
+
+// The scene before any walk: the file's materials and textures with the variant chosen, at the
+// origin the rest extent chooses, and framed by that extent when posed (Scene::framingBounds).
+Scene startingScene(const GltfSceneSource::Parsed& parsed, int variant,
+                    const std::optional<gltf::WorldExtent>& extent, bool posed) {
+    Scene scene = parsed.base;
+    scene.materialVariant = variant;
+    scene.worldOrigin = extent ? gltf::chooseWorldOrigin(*extent) : glm::dvec3(0.0);
+    if (posed && extent)
+        scene.framingBounds = Bounds{glm::vec3(extent->min - scene.worldOrigin),
+                                     glm::vec3(extent->max - scene.worldOrigin)};
+    return scene;
+}
+
+// The still part of the poses of `variant` and `playing`: the one kept, or walked now (from this
+// pose: a still node is where it is at any time) and kept.
+const gltf::StillPart& stillPart(GltfSceneSource::Parsed& parsed, int variant,
+                                 const std::vector<std::size_t>& playing,
+                                 const gltf::RestLayout& rest, const gltf::ScenePose* pose,
+                                 const gltf::NodeWorlds& worlds, const glm::dmat4& root,
+                                 const std::vector<char>& moving) {
+    if (parsed.still && parsed.still->materialVariant == variant &&
+        parsed.still->playing == playing)
+        return *parsed.still;
+    parsed.still.reset();
+    gltf::StillPart still{variant, playing, startingScene(parsed, variant, rest.extent, true), {}};
+    SceneBuilder builder(parsed.model, still.scene, parsed.texcoords, rest.plan, pose, worlds,
+                         moving, WalkPart::Still);
+    gltf::walkSceneNodes(
+        parsed.model, parsed.sceneIndex,
+        [&](int node, const glm::dmat4& world) { builder.visitNode(node, world); }, root, pose);
+    still.slots = builder.meshSlots();
+    return parsed.still.emplace(std::move(still));
+}
+
+Scene buildScene(GltfSceneSource::Parsed& parsed, const LoadOptions& options) {
     const tinygltf::Model& model = parsed.model;
     const int sceneIndex = parsed.sceneIndex;
-    Scene scene = parsed.base;
-    scene.materialVariant = gltf::chooseMaterialVariant(scene.materialVariants, options.variant);
+    const int variant = gltf::chooseMaterialVariant(parsed.base.materialVariants, options.variant);
     const std::vector<std::size_t> playing =
         gltf::selectAnimations(parsed.animations, options.animation);
     std::optional<gltf::ScenePose> pose;
     if (options.time) pose = gltf::poseAt(model, parsed.animations, playing, *options.time);
     const gltf::ScenePose* posed = pose ? &*pose : nullptr;
-    const gltf::InstancingPlan plan =
-        gltf::planInstancing(model, sceneIndex, options.instancing, scene.materials);
     // First the scene's extent in double, so that a far-away scene is recentred before its
     // positions are rounded to float; measured at rest, so that every frame of an animation has
     // the same origin (gltf_origin.h).
-    const std::optional<gltf::WorldExtent> extent = gltf::worldExtent(model, sceneIndex, plan);
-    scene.worldOrigin = extent ? gltf::chooseWorldOrigin(*extent) : glm::dvec3(0.0);
-    if (pose && extent)
-        scene.framingBounds = Bounds{glm::vec3(extent->min - scene.worldOrigin),
-                                     glm::vec3(extent->max - scene.worldOrigin)};
-    const glm::dmat4 root = glm::translate(glm::dmat4(1.0), -scene.worldOrigin);
+    const gltf::RestLayout& rest = restLayout(parsed, options.instancing);
+    const std::optional<gltf::WorldExtent>& extent = rest.extent;
+    const glm::dvec3 origin = extent ? gltf::chooseWorldOrigin(*extent) : glm::dvec3(0.0);
+    const glm::dmat4 root = glm::translate(glm::dmat4(1.0), -origin);
     const gltf::NodeWorlds worlds = nodeWorlds(model, sceneIndex, root, posed);
-    std::vector<char> moving;
-    if (options.keepMovingApart && pose)
-        moving = movingNodes(model, sceneIndex, parsed.animations, playing);
-    SceneBuilder builder(model, scene, parsed.texcoords, plan, posed, worlds, std::move(moving));
-    gltf::walkSceneNodes(
-        model, sceneIndex,
-        [&](int node, const glm::dmat4& world) { builder.visitNode(node, world); }, root, posed);
+    Scene scene;
+    if (options.keepMovingApart && pose) {
+        // The still part read once for every frame; this frame walks what moves.
+        std::vector<char> moving = movingNodes(model, sceneIndex, parsed.animations, playing);
+        const gltf::StillPart& still =
+            stillPart(parsed, variant, playing, rest, posed, worlds, root, moving);
+        scene = still.scene;
+        SceneBuilder builder(model, scene, parsed.texcoords, rest.plan, posed, worlds,
+                             std::move(moving), WalkPart::Moving, still.slots);
+        gltf::walkSceneNodes(
+            model, sceneIndex,
+            [&](int node, const glm::dmat4& world) { builder.visitNode(node, world); }, root,
+            posed);
+    } else {
+        scene = startingScene(parsed, variant, extent, pose.has_value());
+        SceneBuilder builder(model, scene, parsed.texcoords, rest.plan, posed, worlds, {});
+        gltf::walkSceneNodes(
+            model, sceneIndex,
+            [&](int node, const glm::dmat4& world) { builder.visitNode(node, world); }, root,
+            posed);
+    }
     if (scene.triangleCount() == 0 && scene.instances.empty() && scene.spheres.empty()) {
         throw GltfProblem(noTrianglesMessage(scene));
     }

@@ -25,9 +25,11 @@ struct LoadOptions {
     std::string variant;
     // An animation's frames (docs/scene-model.md, "Frames"), with a time: the meshes an animation
     // moves are kept apart from the still geometry, so that the next frame keeps the still
-    // geometry's BVH: a mesh on a node that a translation, rotation or scale channel moves (or
-    // under one) is placed by an instance, a skinned or morphed mesh is a posed mesh of its own
-    // (Scene::meshes, placed unmoved). Off: they are flattened as Instancing decides.
+    // geometry (walked once: GltfSceneSource) and its bottom level: a mesh on a node that a
+    // translation, rotation or scale channel moves (or under one) is placed by an instance, a
+    // skinned or morphed mesh is a posed mesh of its own (Scene::meshes, placed unmoved); the
+    // still part comes first in the scene's arrays. Off: they are flattened as Instancing
+    // decides.
     bool keepMovingApart = false;
 };
 
@@ -49,8 +51,11 @@ struct LoadOptions {
 Scene loadGltfScene(const std::string& path, const LoadOptions& options = {});
 
 // A file read once and posed many times: an animation's frames share the parsed document, the
-// decoded textures, the materials and the checked animations, and each pose walks, morphs and
-// skins the nodes anew. loadGltfScene(path, options) is GltfSceneSource(path).pose(options).
+// decoded textures, the materials, the checked animations and the layout at rest (instancing
+// plan, extent); a pose that keeps what moves apart also shares the still part, walked by the
+// first such pose and kept for the later ones (docs/scene-model.md, "Frames"), and walks, morphs
+// and skins only what moves. Poses are not taken concurrently (they fill those memos).
+// loadGltfScene(path, options) is GltfSceneSource(path).pose(options).
 class GltfSceneSource {
 public:
     // Parses and checks the file, decodes its textures; throws InputError like loadGltfScene.

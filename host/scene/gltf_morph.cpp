@@ -3,6 +3,7 @@
 // 2.0 specification (section 3.7.2.2) prescribes; tangents keep their w.
 #include "scene/gltf_morph.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "scene/gltf_accessors.h"
@@ -59,6 +60,52 @@ std::vector<double> morphWeights(const tinygltf::Model& model, int nodeIndex,
     if (!node.weights.empty()) return node.weights;
     if (node.mesh < 0 || static_cast<std::size_t>(node.mesh) >= model.meshes.size()) return {};
     return model.meshes[static_cast<std::size_t>(node.mesh)].weights;
+}
+
+std::vector<WeightRange> morphWeightRanges(const tinygltf::Model& model, int nodeIndex,
+                                           const std::vector<Animation>& animations) {
+    const tinygltf::Node& node = model.nodes[static_cast<std::size_t>(nodeIndex)];
+    if (node.mesh < 0 || static_cast<std::size_t>(node.mesh) >= model.meshes.size()) return {};
+    std::size_t targets = 0;
+    for (const tinygltf::Primitive& primitive :
+         model.meshes[static_cast<std::size_t>(node.mesh)].primitives)
+        targets = std::max(targets, primitive.targets.size());
+    std::vector<WeightRange> ranges(targets);
+    const std::vector<double> rest = morphWeights(model, nodeIndex, nullptr);
+    for (std::size_t t = 0; t < targets && t < rest.size(); ++t)
+        if (std::isfinite(rest[t])) ranges[t] = {rest[t], rest[t]};
+    auto include = [&](std::size_t t, double weight) {
+        if (t >= targets || !std::isfinite(weight)) return;
+        ranges[t].low = std::min(ranges[t].low, weight);
+        ranges[t].high = std::max(ranges[t].high, weight);
+    };
+    for (const Animation& animation : animations) {
+        for (const AnimationChannel& channel : animation.channels) {
+            if (channel.node != nodeIndex || channel.path != AnimatedPath::Weights) continue;
+            const KeyframeTrack& track = channel.track;
+            const std::size_t width = track.width;
+            if (width == 0) continue;
+            if (track.interpolation != Interpolation::CubicSpline) {
+                for (std::size_t i = 0; i < track.values.size(); ++i)
+                    include(i % width, track.values[i]);
+                continue;
+            }
+            // Per keyframe: in-tangents, values, out-tangents, `width` each.
+            const auto at = [&](std::size_t k, std::size_t part, std::size_t t) {
+                return track.values[(3 * k + part) * width + t];
+            };
+            for (std::size_t k = 0; k < track.times.size(); ++k) {
+                for (std::size_t t = 0; t < width; ++t) {
+                    include(t, at(k, 1, t));
+                    if (k + 1 == track.times.size()) continue;
+                    const double dt = track.times[k + 1] - track.times[k];
+                    include(t, at(k, 1, t) + dt * at(k, 2, t) / 3.0);
+                    include(t, at(k + 1, 1, t) - dt * at(k + 1, 0, t) / 3.0);
+                }
+            }
+        }
+    }
+    return ranges;
 }
 
 void applyMorphTargets(const tinygltf::Model& model, const tinygltf::Primitive& primitive,

@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 #include <tiny_gltf.h>
 
+#include "scene/gltf_animation.h"
 #include "scene/gltf_nodes.h"
 
 namespace vkpt::gltf {
@@ -16,6 +17,21 @@ namespace vkpt::gltf {
 // mesh.weights; empty when none is given (every weight is then 0: the mesh as stored).
 std::vector<double> morphWeights(const tinygltf::Model& model, int nodeIndex,
                                  const ScenePose* pose);
+
+// The interval a morph target's weight can take.
+struct WeightRange {
+    double low = 0.0;
+    double high = 0.0;
+};
+
+// Per morph target of node `nodeIndex`'s mesh, the interval its weight takes: its weight at rest
+// (morphWeights without a pose; 0 where none is given) and every value a weights channel of
+// `animations` on the node can give it: the keyframes' values (STEP and LINEAR stay between
+// them) and, for CUBICSPLINE, each segment's Bézier control points v₀ + Δt·b₀/3 and v₁ − Δt·a₁/3
+// (a cubic Hermite segment is the Bézier curve of those four points and lies in their hull;
+// glTF 2.0, Appendix C). Empty when the mesh has no morph targets.
+std::vector<WeightRange> morphWeightRanges(const tinygltf::Model& model, int nodeIndex,
+                                           const std::vector<Animation>& animations);
 
 // A primitive's vertices before any transform; normals and tangents may be null (not read).
 struct MorphableVertices {

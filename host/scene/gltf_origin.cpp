@@ -14,6 +14,7 @@
 #include "scene/gltf_draco.h"
 #include "scene/gltf_lights.h"
 #include "scene/gltf_mesh_instancing.h"
+#include "scene/gltf_morph.h"
 #include "scene/gltf_nodes.h"
 #include "scene/gltf_shapes.h"
 #include "scene/gltf_skins.h"
@@ -54,8 +55,9 @@ private:
 
 class ExtentBuilder {
 public:
-    ExtentBuilder(const tinygltf::Model& model, const InstancingPlan& plan)
-        : model_(model), plan_(plan), meshBoxes_(model.meshes.size()) {
+    ExtentBuilder(const tinygltf::Model& model, const InstancingPlan& plan,
+                  const std::vector<Animation>& animations)
+        : model_(model), plan_(plan), animations_(animations), meshBoxes_(model.meshes.size()) {
         worlds_.transforms.assign(model.nodes.size(), glm::dmat4(1.0));
         worlds_.placed.assign(model.nodes.size(), 0);
     }
@@ -80,14 +82,15 @@ public:
             skinned_.push_back(nodeIndex);
             return;
         }
+        const std::vector<WeightRange> weights = morphWeightRanges(model_, nodeIndex, animations_);
         const std::optional<std::vector<glm::dmat4>> local =
             meshInstanceTransforms(model_, nodeIndex);
         if (!local) {
-            addMeshPlacement(mesh, world);
+            addMeshPlacement(mesh, world, weights);
             return;
         }
         for (const glm::dmat4& transform : *local)
-            addMeshPlacement(mesh, world * transform);
+            addMeshPlacement(mesh, world * transform, weights);
     }
 
     // A skinned vertex is Σ wᵢ·Jᵢ·p with weights that sum to one (renormalised where they do
@@ -103,7 +106,8 @@ public:
                 continue; // the loading pass names the problem
             }
             ExtentAccumulator own;
-            addMeshVertices(node.mesh, glm::dmat4(1.0), own);
+            addMeshVertices(node.mesh, glm::dmat4(1.0), own,
+                            morphWeightRanges(model_, nodeIndex, animations_));
             if (const std::optional<WorldExtent> box = own.extent())
                 for (const glm::dmat4& joint : joints)
                     extent_.addBox(*box, joint);
@@ -114,10 +118,13 @@ public:
 
 private:
     // A flattened placement adds its vertices, as the loader will place them; an instanced one
-    // the corners of its mesh's own box (read once), which is as good for choosing an origin.
-    void addMeshPlacement(int mesh, const glm::dmat4& transform) {
-        if (!plan_.isInstanced(mesh)) {
-            addMeshVertices(mesh, transform, extent_);
+    // the corners of its mesh's own box (read once), which is as good for choosing an origin. A
+    // morphed mesh adds its vertices with every shape `weights` allow, at each placement (the
+    // weights are the node's).
+    void addMeshPlacement(int mesh, const glm::dmat4& transform,
+                          const std::vector<WeightRange>& weights) {
+        if (!plan_.isInstanced(mesh) || !weights.empty()) {
+            addMeshVertices(mesh, transform, extent_, weights);
             return;
         }
         std::optional<std::optional<WorldExtent>>& box = meshBoxes_[static_cast<std::size_t>(mesh)];
@@ -129,17 +136,46 @@ private:
         if (*box) extent_.addBox(**box, transform);
     }
 
-    void addMeshVertices(int mesh, const glm::dmat4& transform, ExtentAccumulator& target) const {
+    void addMeshVertices(int mesh, const glm::dmat4& transform, ExtentAccumulator& target,
+                         const std::vector<WeightRange>& weights = {}) const {
         for (const tinygltf::Primitive& primitive :
              model_.meshes[static_cast<std::size_t>(mesh)].primitives) {
             const auto position = primitive.attributes.find("POSITION");
             if (position == primitive.attributes.end()) continue;
             if (isDracoPrimitive(primitive)) {
                 addAccessorBounds(position->second, transform, target);
+            } else if (!weights.empty() && !primitive.targets.empty()) {
+                addMorphedVertices(primitive, position->second, transform, weights, target);
             } else {
                 addVertices(position->second, transform, target);
             }
         }
+    }
+
+    // Each vertex p as the box of p + Σ wₜ·dₜ over the weights' ranges: per axis, each target
+    // adds the least and the most of wₜ·dₜ, at an end of its range (linear in wₜ).
+    void addMorphedVertices(const tinygltf::Primitive& primitive, int accessor,
+                            const glm::dmat4& transform, const std::vector<WeightRange>& weights,
+                            ExtentAccumulator& target) const {
+        const std::vector<glm::vec3> positions = readPositions(model_, accessor, "POSITION");
+        std::vector<WorldExtent> boxes(positions.size());
+        for (std::size_t i = 0; i < positions.size(); ++i)
+            boxes[i] = {glm::dvec3(positions[i]), glm::dvec3(positions[i])};
+        for (std::size_t t = 0; t < primitive.targets.size() && t < weights.size(); ++t) {
+            const auto moved = primitive.targets[t].find("POSITION");
+            if (moved == primitive.targets[t].end()) continue;
+            const std::vector<glm::vec3> displacements =
+                readPositions(model_, moved->second, "morph target POSITION");
+            if (displacements.size() != positions.size()) continue; // the loading pass says so
+            for (std::size_t i = 0; i < positions.size(); ++i) {
+                const glm::dvec3 low = weights[t].low * glm::dvec3(displacements[i]);
+                const glm::dvec3 high = weights[t].high * glm::dvec3(displacements[i]);
+                boxes[i].min += glm::min(low, high);
+                boxes[i].max += glm::max(low, high);
+            }
+        }
+        for (const WorldExtent& box : boxes)
+            target.addBox(box, transform);
     }
 
     // A Draco primitive's POSITION accessor has no data of its own, but the min and max that
@@ -163,6 +199,7 @@ private:
 
     const tinygltf::Model& model_;
     const InstancingPlan& plan_;
+    const std::vector<Animation>& animations_; // for the weights a morphed mesh can take
     ExtentAccumulator extent_;
     NodeWorlds worlds_;        // per node: its world transform at rest, once visited
     std::vector<int> skinned_; // nodes with a skinned mesh, measured after the walk
@@ -178,8 +215,9 @@ double WorldExtent::size() const {
 }
 
 std::optional<WorldExtent> worldExtent(const tinygltf::Model& model, int sceneIndex,
-                                       const InstancingPlan& plan) {
-    ExtentBuilder builder(model, plan);
+                                       const InstancingPlan& plan,
+                                       const std::vector<Animation>& animations) {
+    ExtentBuilder builder(model, plan, animations);
     try {
         walkSceneNodes(model, sceneIndex,
                        [&](int node, const glm::dmat4& world) { builder.visitNode(node, world); });

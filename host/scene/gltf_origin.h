@@ -4,10 +4,12 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include <glm/glm.hpp>
 #include <tiny_gltf.h>
 
+#include "scene/gltf_animation.h"
 #include "scene/gltf_instancing_plan.h"
 #include "scene/gltf_nodes.h"
 
@@ -33,9 +35,14 @@ struct WorldExtent {
 // origin it chooses is then the same for every frame of an animation and for a still at any
 // --time, so that nothing jumps from one frame to the next when the origin would have moved.
 // A skinned mesh counts where its skin places it at rest: its own box placed by each joint's
-// matrix (a box that holds every skinned vertex); morph targets are not applied.
+// matrix (a box that holds every skinned vertex). A morphed mesh counts with every shape its
+// weights can give it (an animation of its weights can move vertices out of the rest extent):
+// each target's weight ranges over its weight at rest and every value `animations` give it
+// (gltf_morph.h, morphWeightRanges), and each vertex adds the box of p + Σ wₜ·dₜ over those
+// ranges.
 std::optional<WorldExtent> worldExtent(const tinygltf::Model& model, int sceneIndex,
-                                       const InstancingPlan& plan);
+                                       const InstancingPlan& plan,
+                                       const std::vector<Animation>& animations = {});
 
 // The centre of `extent` when it lies beyond kRecentreRatio times the scene's size from the
 // origin, else the origin.

@@ -1,8 +1,9 @@
 // animation_frames_render_test.cpp — an animation's frames on the device (docs/scene-model.md,
-// "Frames"). Rendered one after another through what they keep (the still geometry's BVHs, the
-// device arrays of the frame before with only changed blocks uploaded), frames equal the same
-// frames rendered from scratch, bit for bit at one seed: the BVHs are the same trees and the
-// device arrays the same bytes. And a posed skinned scene agrees with vkpt-ref.
+// "Frames"). Rendered one after another through what they keep (the still part walked once by the
+// source, the still geometry's bottom levels and BVHs, the device arrays of the frame before with
+// only changed blocks uploaded), frames equal the same frames rendered from scratch, bit for bit
+// at one seed: the BVHs are the same trees and the device arrays the same bytes. And a posed
+// skinned scene agrees with vkpt-ref.
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
@@ -10,6 +11,7 @@
 #include <initializer_list>
 
 #include "prepare/bvh_cache.h"
+#include "prepare/level_cache.h"
 #include "render/kept_scene.h"
 #include "wavefront_test_support.h"
 
@@ -40,9 +42,10 @@ bool sameImage(const Image& a, const Image& b) {
 
 class AnimationFrames : public GpuTest {
 protected:
-    // Renders moving-box.gltf at `times` in turn through a BVH cache and a kept device scene, and
-    // each frame again from scratch; the images must be equal bit for bit, and differ from the
-    // first frame's (the box moved). `split`: some array must be in several chunks.
+    // Renders moving-box.gltf at `times` in turn through a level cache, a BVH cache and a kept
+    // device scene, and each frame again from scratch; the images must be equal bit for bit, and
+    // differ from the first frame's (the box moved). `split`: some array must be in several
+    // chunks.
     void expectKeptFramesEqualFramesFromScratch(std::initializer_list<double> times,
                                                 bool split = false) {
         const std::string path = scenePath("test/moving-box.gltf");
@@ -50,6 +53,7 @@ protected:
         settings.seed = 5;
         const GltfSceneSource source(path);
         BvhCache bvhs;
+        LevelCache levels;
         KeptDeviceScene kept;
         Image first;
         for (const double time : times) {
@@ -57,8 +61,10 @@ protected:
             const Scene scene = poseFrame(source, time);
             PrepareOptions options;
             options.bvhCache = &bvhs;
+            options.levelCache = &levels;
             PreparedScene prepared = prepareScene(scene, options);
             bvhs.endFrame();
+            levels.endFrame();
             const WavefrontResult frame = renderWavefrontKeeping(
                 context(), prepared, cameraOf(scene, settings), settings, {}, kept);
             const bool chunked =
