@@ -485,10 +485,15 @@ VKPT_FN vec3 evaluateMetal(ShadingMaterial m, float ggx, float cosVH, float fres
     return ggx * baseFresnel(m, m.baseColor, cosVH, fresnelWeight);
 }
 
-VKPT_FN vec3 metalAlbedo(ShadingMaterial m, vec3 w) {
-    vec3 albedo = schlickSpecularAlbedo(m, m.baseColor, w);
-    if (hasIridescence(m)) albedo = mix(albedo, iridescentAlbedo(m, m.baseColor, w), m.iridescence);
-    return albedo;
+// What the base's GGX lobe with its Fresnel term over f0 reflects towards w, as the lobe
+// sampler weighs it (lobeProbabilities): exact for Schlick's term; under a film, the film's term
+// at the view on the Schlick albedo, one evaluation of the film where iridescentAlbedo takes 16.
+// The sampler needs weights, not albedos: any positive estimate keeps the mixture unbiased.
+VKPT_FN vec3 specularAlbedoEstimate(ShadingMaterial m, vec3 f0, vec3 w) {
+    vec3 albedo = schlickSpecularAlbedo(m, f0, w);
+    if (!hasIridescence(m)) return albedo;
+    vec3 film = iridescenceFresnel(m.iridescenceIor, m.iridescenceThickness, w.z, f0);
+    return mix(albedo, schlickSpecularAlbedo(m, film, w), m.iridescence);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -623,12 +628,13 @@ struct LobeProbabilities {
     float diffuseTransmission; // KHR_materials_diffuse_transmission's mirrored cosine hemisphere
 };
 
-// Each lobe's weight is its albedo at wo from the tables, by luminance, times what the layers
-// above leave it; the glass reflects and transmits all it receives, so its weight is its share.
-// A lobe that cannot contribute (no diffuse: metallic 1, full transmission or a black base; no
-// specular: metallic 0 and F0·s = 0; no clearcoat, sheen or glass) is never sampled; each of
-// the k lobes that can gets VKPT_MIN_LOBE_PROBABILITY plus its share of the rest. A material
-// that reflects nothing samples the diffuse lobe, with weight 0.
+// Each lobe's weight is its albedo at wo from the tables (a film's estimated,
+// specularAlbedoEstimate), by luminance, times what the layers above leave it; the glass reflects
+// and transmits all it receives, so its weight is its share. A lobe that cannot contribute (no
+// diffuse: metallic 1, full transmission or a black base; no specular: metallic 0 and F0·s = 0;
+// no clearcoat, sheen or glass) is never sampled; each of the k lobes that can gets
+// VKPT_MIN_LOBE_PROBABILITY plus its share of the rest. A material that reflects nothing samples
+// the diffuse lobe, with weight 0.
 VKPT_FN LobeProbabilities lobeProbabilities(ShadingMaterial m, vec3 wo) {
     float cosThetaO = wo.z;
     float clearcoatWeight = 0.0f;
@@ -643,10 +649,10 @@ VKPT_FN LobeProbabilities lobeProbabilities(ShadingMaterial m, vec3 wo) {
         below *= 1.0f - sheenAlbedoBound(m, cosThetaO);
     }
     float opaque = 1.0f - m.transmission; // the opaque dielectric's share of the non-metal part
-    vec3 dielectricSpecular = dielectricSpecularAlbedo(m, wo);
-    // (A film's albedo takes 16 evaluations of its term: the metal's only where it weighs.)
-    float metal = m.metallic > 0.0f ? luminance(metalAlbedo(m, wo)) : 0.0f;
-    float specularWeight = below * mix(opaque * luminance(dielectricSpecular), metal, m.metallic);
+    vec3 dielectricSpecular = m.specular * specularAlbedoEstimate(m, dielectricF0(m), wo);
+    float specularWeight =
+        below * mix(opaque * luminance(dielectricSpecular),
+                    luminance(specularAlbedoEstimate(m, m.baseColor, wo)), m.metallic);
     if (!(m.metallic > 0.0f || opaque * m.specular * maxComponent(dielectricF0(m)) > 0.0f))
         specularWeight = 0.0f;
     vec3 underSpecular = max(vec3(1.0f) - dielectricSpecular, vec3(0.0f));
