@@ -129,6 +129,13 @@ void continuePath(Vertex vertex, inout PathState state, inout Shading shading) {
     shading.next = RayRecord(origin, vertex.record.slot, direction, 0u);
 }
 
+// The number a path takes its wavelength from: DIM_CAMERA's z at bounce 0 (docs/integrator.md).
+float wavelengthNumber(PathState state) {
+    vec4 camera = sampleFloats(frame.samplerSetup, frame.camera.width, frame.seed, state.pixel,
+                               state.sampleIndex, 0u, DIM_CAMERA);
+    return camera.z;
+}
+
 // Sets shading.lit when light-sample records were written for this vertex.
 void shadePathVertex(Vertex vertex, inout PathState state, inout Shading shading) {
     uint bounce = passParams.bounce;
@@ -142,13 +149,9 @@ void shadePathVertex(Vertex vertex, inout PathState state, inout Shading shading
         state.radiance += state.throughput * emitted * weight;
     }
     if (bounce >= frame.maxDepth) return;
-    if (featureDispersion) {
-        // The path's wavelength number: DIM_CAMERA's z at bounce 0 (docs/integrator.md).
-        vec4 camera = sampleFloats(frame.samplerSetup, frame.camera.width, frame.seed, state.pixel,
-                                   state.sampleIndex, 0u, DIM_CAMERA);
-        state.wavelength =
-            bindWavelength(vertex.surface.shading, state.throughput, state.wavelength, camera.z);
-    }
+    if (featureDispersion)
+        state.wavelength = bindWavelength(vertex.surface.shading, state.throughput,
+                                          state.wavelength, wavelengthNumber(state));
     shading.lit = pathFilterKeeps(frame.pathFilter, bounce + 1u);
     if (shading.lit) {
         writePathLightSamples(vertex, state);
@@ -202,11 +205,8 @@ bool shadeDirect(Vertex vertex, inout PathState state) {
     // Dispersive glass is lit at the path's wavelength, as the path integrator lights it
     // (docs/integrator.md, "Dispersion"): the same λ and weight as vkpt-ref's integrateDirect.
     vec3 scale = vec3(1.0);
-    if (featureDispersion) {
-        vec4 camera = sampleFloats(frame.samplerSetup, frame.camera.width, frame.seed, state.pixel,
-                                   state.sampleIndex, 0u, DIM_CAMERA);
-        bindWavelength(vertex.surface.shading, scale, VKPT_NO_WAVELENGTH, camera.z);
-    }
+    if (featureDispersion)
+        bindWavelength(vertex.surface.shading, scale, VKPT_NO_WAVELENGTH, wavelengthNumber(state));
     if (frame.integrator == INTEGRATOR_DIRECT_HEMISPHERE) {
         writeHemisphereProbes(vertex, state, scale);
     } else {
