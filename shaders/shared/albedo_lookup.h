@@ -50,8 +50,10 @@ static_assert(std::size(ggxAlbedoTable) == VKPT_ALBEDO_2D_ENTRIES &&
               VKPT_ALBEDO_ENTRIES ==
                   VKPT_GGX_FILM_NODE_AVERAGE_ALBEDO + VKPT_FILM_NODES * VKPT_ALBEDO_TABLE_SIZE);
 
-// The tables end to end, as the device's buffer holds them.
-inline constexpr std::array<float, VKPT_ALBEDO_ENTRIES> albedoTableEntries = [] {
+// The tables end to end, as the device's buffer holds them. Copied when the program starts, not
+// at compile time: as a constant expression the copy of 78 976 floats cost every translation
+// unit that includes this header 3 s of compilation.
+inline std::array<float, VKPT_ALBEDO_ENTRIES> concatenatedAlbedoTables() {
     std::array<float, VKPT_ALBEDO_ENTRIES> all{};
     std::size_t n = 0;
     for (float v : ggxAlbedoTable)
@@ -69,17 +71,9 @@ inline constexpr std::array<float, VKPT_ALBEDO_ENTRIES> albedoTableEntries = [] 
     for (float v : ggxFilmNodeAverageAlbedoTable)
         all[n++] = v;
     return all;
-}();
-static_assert(albedoTableEntries[VKPT_GGX_FRESNEL_ALBEDO] == ggxFresnelAlbedoTable[0] &&
-              albedoTableEntries[VKPT_GGX_AVERAGE_ALBEDO] == ggxAverageAlbedoTable[0] &&
-              albedoTableEntries[VKPT_GGX_FRESNEL_AVERAGE_ALBEDO] ==
-                  ggxFresnelAverageAlbedoTable[0] &&
-              albedoTableEntries[VKPT_SHEEN_ALBEDO] == sheenAlbedoTable[0] &&
-              albedoTableEntries[VKPT_GGX_FILM_NODE_ALBEDO] == ggxFilmNodeAlbedoTable[0] &&
-              albedoTableEntries[VKPT_GGX_FILM_NODE_AVERAGE_ALBEDO] ==
-                  ggxFilmNodeAverageAlbedoTable[0] &&
-              albedoTableEntries[VKPT_ALBEDO_ENTRIES - 1] ==
-                  ggxFilmNodeAverageAlbedoTable[VKPT_FILM_NODES * VKPT_ALBEDO_TABLE_SIZE - 1]);
+}
+
+inline const std::array<float, VKPT_ALBEDO_ENTRIES> albedoTableEntries = concatenatedAlbedoTables();
 
 inline float albedoEntry(uint i) {
     return albedoTableEntries[i];
