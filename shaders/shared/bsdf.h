@@ -277,19 +277,25 @@ VKPT_FN float baseAlbedoAlpha(ShadingMaterial m, vec3 w) {
                sqrt((m.alphaT * m.alphaT * a.x * a.x + m.alpha * m.alpha * a.y * a.y) / planar));
 }
 
+// baseAlbedoAlpha at the k-th of 8 azimuths of the quarter circle (k + 1/2 eighths of it), for
+// the azimuthal means below (α(φ) is even about both axes).
+VKPT_FN float azimuthAlbedoAlpha(ShadingMaterial m, int k) {
+    float phi = (float(k) + 0.5f) * (0.5f * VKPT_PI / 8.0f);
+    float c = cos(phi);
+    float s = sin(phi);
+    return min(sqrt(m.alphaT * m.alpha),
+               sqrt(m.alphaT * m.alphaT * c * c + m.alpha * m.alpha * s * s));
+}
+
 // The azimuthal mean over a hemisphere of directions of the table's cosine-weighted average
-// albedo, E_avg(α(φ)), by the midpoint rule on 8 azimuths of the quarter circle (α(φ) is even
-// about both axes): what the reciprocal form's normalisation 1 − E_avg needs so that the
-// diffuse base under an anisotropic highlight still integrates to (1 − E(wo))·ρ. xy: F = 1 and
-// Schlick weight tables (ggxAverageAlbedo, ggxFresnelAverageAlbedo).
+// albedo, E_avg(α(φ)), by the midpoint rule on 8 azimuths of the quarter circle: what the
+// reciprocal form's normalisation 1 − E_avg needs so that the diffuse base under an anisotropic
+// highlight still integrates to (1 − E(wo))·ρ. xy: F = 1 and Schlick weight tables
+// (ggxAverageAlbedo, ggxFresnelAverageAlbedo).
 VKPT_FN vec2 anisotropicAverageAlbedos(ShadingMaterial m) {
     vec2 sum = vec2(0.0f);
     for (int k = 0; k < 8; ++k) {
-        float phi = (float(k) + 0.5f) * (0.5f * VKPT_PI / 8.0f);
-        float c = cos(phi);
-        float s = sin(phi);
-        float alpha = min(sqrt(m.alphaT * m.alpha),
-                          sqrt(m.alphaT * m.alphaT * c * c + m.alpha * m.alpha * s * s));
+        float alpha = azimuthAlbedoAlpha(m, k);
         sum += vec2(ggxAverageAlbedo(alpha), ggxFresnelAverageAlbedo(alpha));
     }
     return sum * 0.125f;
@@ -355,14 +361,8 @@ VKPT_FN vec3 filmNodeFresnel(ShadingMaterial m, vec3 f0, int k) {
 VKPT_FN float filmNodeAverage(ShadingMaterial m, int k) {
     if (!hasAnisotropy(m)) return filmNodeAverageAlbedo(k, m.alpha);
     float sum = 0.0f;
-    for (int j = 0; j < 8; ++j) {
-        float phi = (float(j) + 0.5f) * (0.5f * VKPT_PI / 8.0f);
-        float c = cos(phi);
-        float s = sin(phi);
-        float alpha = min(sqrt(m.alphaT * m.alpha),
-                          sqrt(m.alphaT * m.alphaT * c * c + m.alpha * m.alpha * s * s));
-        sum += filmNodeAverageAlbedo(k, alpha);
-    }
+    for (int j = 0; j < 8; ++j)
+        sum += filmNodeAverageAlbedo(k, azimuthAlbedoAlpha(m, j));
     return sum * 0.125f;
 }
 
