@@ -103,9 +103,12 @@ PreparedScene prepareScene(const Scene& scene, const PrepareOptions& options) {
     if (features.specularLobes()) prepared.specularLobes = makeGpuSpecularLobes(scene.materials);
     if (features.diffuseTransmission || features.dispersion)
         prepared.materialLobes = makeGpuMaterialLobes(scene.materials);
+    // The film nodes' tables (KHR_materials_iridescence) come last and only with a film.
     if (features.metallicRoughnessMaterials)
         prepared.albedoTables.assign(gpu::albedoTableEntries.begin(),
-                                     gpu::albedoTableEntries.end());
+                                     features.iridescence ? gpu::albedoTableEntries.end()
+                                                          : gpu::albedoTableEntries.begin() +
+                                                                VKPT_ALBEDO_ENTRIES_WITHOUT_FILM);
     if (features.textures()) {
         GpuTextures textures = makeGpuTextures(scene);
         prepared.textures = std::move(textures.textures);

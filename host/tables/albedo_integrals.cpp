@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "shared/ggx.h"
+#include "shared/iridescence.h"
 #include "shared/sheen.h"
 
 namespace vkpt::tables {
@@ -35,6 +36,32 @@ double ggxAlbedo(double cosThetaO, double alpha, bool fresnelWeighted, int resol
             sum += weight;
         }
     return sum / (double(resolution) * double(resolution));
+}
+
+std::vector<double> ggxFilmNodeAlbedos(double cosThetaO, double alpha, int resolution) {
+    const glm::vec3 wo = viewAt(cosThetaO);
+    const float a = float(alpha);
+    std::vector<double> sums(VKPT_FILM_NODES, 0.0);
+    for (int i = 0; i < resolution; ++i)
+        for (int j = 0; j < resolution; ++j) {
+            const glm::vec2 u((float(i) + 0.5f) / float(resolution),
+                              (float(j) + 0.5f) / float(resolution));
+            const glm::vec3 h = gpu::sampleGgxVisibleNormal(wo, a, u);
+            const glm::vec3 wi = glm::normalize(2.0f * glm::dot(wo, h) * h - wo);
+            if (!(wi.z > 0.0f)) continue;
+            const double pdf = gpu::ggxReflectionPdf(wo, h, a);
+            if (!(pdf > 0.0)) continue;
+            const double weight = double(gpu::ggxReflection(wo, wi, h, a)) * double(wi.z) / pdf;
+            // V·H as the lobe takes it (ggx.h, halfVectorFresnelWeight), shared between the
+            // two nodes around it as the lobe's interpolated film term shares it.
+            const gpu::FilmInterval at =
+                gpu::filmIntervalOf(0.5f * (glm::dot(wo, h) + glm::dot(wi, h)));
+            sums[std::size_t(at.node)] += weight * (1.0 - double(at.t));
+            sums[std::size_t(at.node + 1)] += weight * double(at.t);
+        }
+    for (double& sum : sums)
+        sum /= double(resolution) * double(resolution);
+    return sums;
 }
 
 double sheenAlbedo(double cosThetaO, double alpha, int resolution) {

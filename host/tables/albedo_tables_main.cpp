@@ -6,6 +6,7 @@
 //   vkpt-albedo-tables --interpolation-error   (bilinear lookup against fresh quadrature)
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
@@ -13,6 +14,7 @@
 
 #include "albedo_integrals.h"
 #include "shared/ggx.h"
+#include "shared/iridescence.h"
 #include "shared/sheen.h"
 #include "table_writer.h"
 
@@ -55,6 +57,22 @@ std::vector<double> table2d(Lobe lobe) {
     return values;
 }
 
+// The film nodes' tables (ggxFilmNodeAlbedos), node k's 2D table after node k − 1's: one
+// quadrature per cell fills all the nodes.
+std::vector<double> filmNodeTables() {
+    const std::size_t cells = std::size_t(kSize * kSize);
+    std::vector<double> values(cells * VKPT_FILM_NODES);
+    for (int j = 0; j < kSize; ++j)
+        for (int i = 0; i < kSize; ++i) {
+            const double roughness = double(j) / (kSize - 1);
+            const std::vector<double> nodes = ggxFilmNodeAlbedos(
+                cosineAt(double(i) / (kSize - 1)), gpu::ggxAlphaOf(float(roughness)), kResolution);
+            for (std::size_t k = 0; k < nodes.size(); ++k)
+                values[k * cells + std::size_t(j * kSize + i)] = nodes[k];
+        }
+    return values;
+}
+
 // 2 ∫₀¹ E(μ) μ dμ of the E the lookup interpolates between the nodes of row j, linear in
 // x = √μ: with μ = x², 2 ∫₀¹ E(x) x² 2x dx, in closed form per segment, so that the average is
 // exactly that of what the lookup returns.
@@ -73,6 +91,19 @@ std::vector<double> averages(const std::vector<double>& table) {
                 2.0 * ((ea - slope * a) * (b4 - a4) / 4.0 + slope * (b4 * b - a4 * a) / 5.0);
         }
         result[std::size_t(j)] = 2.0 * integral;
+    }
+    return result;
+}
+
+// averages() of each film node's table, node k's row after node k − 1's.
+std::vector<double> filmNodeAverages(const std::vector<double>& tables) {
+    const std::size_t cells = std::size_t(kSize * kSize);
+    std::vector<double> result;
+    for (std::size_t k = 0; k < VKPT_FILM_NODES; ++k) {
+        const std::vector<double> node(tables.begin() + std::ptrdiff_t(k * cells),
+                                       tables.begin() + std::ptrdiff_t((k + 1) * cells));
+        const std::vector<double> average = averages(node);
+        result.insert(result.end(), average.begin(), average.end());
     }
     return result;
 }
@@ -116,6 +147,7 @@ int main(int argc, char** argv) {
     const std::vector<double> plain = table2d(ggxPlain);
     const std::vector<double> fresnel = table2d(ggxFresnel);
     const std::vector<double> sheenTable = table2d(sheen);
+    const std::vector<double> filmNodes = filmNodeTables();
     if (checkOnly) {
         reportInterpolationError("GGX, F = 1", plain, ggxPlain);
         reportInterpolationError("GGX, F = (1 − V·H)^5", fresnel, ggxFresnel);
@@ -139,6 +171,14 @@ int main(int argc, char** argv) {
          "∫ D V cos θi dωi of the white Charlie sheen lobe (sheen.h), row j at sheen roughness\n"
          "0.1 + 0.9 j/(N − 1) (α = roughness², at least VKPT_MIN_SHEEN_ALPHA = 0.1²).",
          sheenTable},
+        {"ggxFilmNodeAlbedoTable",
+         "KHR_materials_iridescence: the GGX lobe with F = the hat function of film node k\n"
+         "(iridescence.h, filmIntervalOf), node k's 2D table after node k − 1's. A film term\n"
+         "interpolated between its values F_k at the nodes has the albedo Σ F_k · table k.",
+         filmNodes},
+        {"ggxFilmNodeAverageAlbedoTable",
+         "2 ∫ E(μ) μ dμ of each film node's interpolated rows, node k's after node k − 1's.",
+         filmNodeAverages(filmNodes)},
     };
     writeTablesHeader(std::cout, kSize, tables);
     return 0;

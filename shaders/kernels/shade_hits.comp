@@ -129,6 +129,13 @@ void continuePath(Vertex vertex, inout PathState state, inout Shading shading) {
     shading.next = RayRecord(origin, vertex.record.slot, direction, 0u);
 }
 
+// The number a path takes its wavelength from: DIM_CAMERA's z at bounce 0 (docs/integrator.md).
+float wavelengthNumber(PathState state) {
+    vec4 camera = sampleFloats(frame.samplerSetup, frame.camera.width, frame.seed, state.pixel,
+                               state.sampleIndex, 0u, DIM_CAMERA);
+    return camera.z;
+}
+
 // Sets shading.lit when light-sample records were written for this vertex.
 void shadePathVertex(Vertex vertex, inout PathState state, inout Shading shading) {
     uint bounce = passParams.bounce;
@@ -142,13 +149,9 @@ void shadePathVertex(Vertex vertex, inout PathState state, inout Shading shading
         state.radiance += state.throughput * emitted * weight;
     }
     if (bounce >= frame.maxDepth) return;
-    if (featureDispersion) {
-        // The path's wavelength number: DIM_CAMERA's z at bounce 0 (docs/integrator.md).
-        vec4 camera = sampleFloats(frame.samplerSetup, frame.camera.width, frame.seed,
-                                   state.pixel, state.sampleIndex, 0u, DIM_CAMERA);
-        state.wavelength =
-            bindWavelength(vertex.surface.shading, state.throughput, state.wavelength, camera.z);
-    }
+    if (featureDispersion)
+        state.wavelength = bindWavelength(vertex.surface.shading, state.throughput,
+                                          state.wavelength, wavelengthNumber(state));
     shading.lit = pathFilterKeeps(frame.pathFilter, bounce + 1u);
     if (shading.lit) {
         writePathLightSamples(vertex, state);
@@ -160,7 +163,8 @@ void shadePathVertex(Vertex vertex, inout PathState state, inout Shading shading
 // CS184's hemisphere estimator: N uniform directions, each a probe that counts the emission it
 // reaches, or the environment when it leaves the scene (trace_shadow multiplies it in).
 // Punctual lights cannot be hit, so this estimator does not see them.
-void writeHemisphereProbes(Vertex vertex, PathState state) {
+// `scale` is the path's wavelength weight (1 without one).
+void writeHemisphereProbes(Vertex vertex, PathState state, vec3 scale) {
     SurfacePoint s = vertex.surface;
     Basis basis = makeBasis(s.shadingNormal);
     vec3 origin = offsetFromSurface(s.position, s.geometricNormal, s.coordinateScale);
@@ -171,7 +175,7 @@ void writeHemisphereProbes(Vertex vertex, PathState state) {
         vec3 direction = basisToWorld(basis, local);
         ShadowRay probe = ShadowRay(vec3(0.0), SHADOW_NONE, vec3(0.0), VKPT_FAR, vec3(0.0), 0.0);
         if (dot(direction, s.geometricNormal) > 0.0) {
-            vec3 f = evaluateSurfaceBsdf(s, direction).f;
+            vec3 f = evaluateSurfaceBsdf(s, direction).f * scale;
             probe = ShadowRay(origin, SHADOW_PROBE, direction, VKPT_FAR, f,
                               local.z / uniformHemispherePdf());
         }
@@ -179,15 +183,16 @@ void writeHemisphereProbes(Vertex vertex, PathState state) {
     }
 }
 
-// CS184's light-sampling estimator: Σ f·Le·cos / p_light, no MIS.
-void writeDirectLightSamples(Vertex vertex, PathState state) {
+// CS184's light-sampling estimator: Σ f·Le·cos / p_light, no MIS; `scale` as above.
+void writeDirectLightSamples(Vertex vertex, PathState state, vec3 scale) {
     uint n = frame.lightSamples;
     for (uint k = 0u; k < n; ++k) {
         float pdfLight, pdfBsdf;
         ShadowRay shadow = makeLightSampleRay(vertex.surface,
                                               lightSampleOrder(random4(state, DIM_LIGHT_FIRST + k)),
                                               pdfLight, pdfBsdf);
-        if (shadow.flags != SHADOW_NONE) shadow.contribution = shadow.contribution / pdfLight;
+        if (shadow.flags != SHADOW_NONE)
+            shadow.contribution = (shadow.contribution / pdfLight) * scale;
         storeLightSample(vertex.ray * n + k, shadow);
     }
 }
@@ -197,10 +202,15 @@ bool shadeDirect(Vertex vertex, inout PathState state) {
     if (pathFilterKeeps(frame.pathFilter, 0u)) state.radiance += emittedRadiance(vertex.surface);
     if (frame.maxDepth == 0u || frame.lightSamples == 0u || !pathFilterKeeps(frame.pathFilter, 1u))
         return false;
+    // Dispersive glass is lit at the path's wavelength, as the path integrator lights it
+    // (docs/integrator.md, "Dispersion"): the same λ and weight as vkpt-ref's integrateDirect.
+    vec3 scale = vec3(1.0);
+    if (featureDispersion)
+        bindWavelength(vertex.surface.shading, scale, VKPT_NO_WAVELENGTH, wavelengthNumber(state));
     if (frame.integrator == INTEGRATOR_DIRECT_HEMISPHERE) {
-        writeHemisphereProbes(vertex, state);
+        writeHemisphereProbes(vertex, state, scale);
     } else {
-        writeDirectLightSamples(vertex, state);
+        writeDirectLightSamples(vertex, state, scale);
     }
     return true;
 }

@@ -2,7 +2,7 @@
 // (√cos θo, √α), the axes along which the tables were computed (host/tables), and linear in √α
 // for the averages, which are exactly the cosine-weighted means of what the 2D lookup returns.
 //
-// The five tables lie end to end in one array of VKPT_ALBEDO_ENTRIES floats. The reference
+// The seven tables lie end to end in one array of VKPT_ALBEDO_ENTRIES floats. The reference
 // reads albedoTableEntries below; the kernels read the same numbers from the storage buffer
 // albedoTables (BINDING_ALBEDO_TABLES, uploaded from albedoTableEntries), which
 // lib/scene_arrays.glsl declares from its row of shared/scene_array_table.h before this
@@ -12,6 +12,7 @@
 #define VKPT_ALBEDO_LOOKUP_H
 
 #include "host_device.h"
+#include "iridescence.h"
 
 #define VKPT_ALBEDO_TABLE_SIZE 64 // nodes per axis
 #define VKPT_ALBEDO_2D_ENTRIES (VKPT_ALBEDO_TABLE_SIZE * VKPT_ALBEDO_TABLE_SIZE)
@@ -21,7 +22,12 @@
 #define VKPT_GGX_AVERAGE_ALBEDO 8192u
 #define VKPT_GGX_FRESNEL_AVERAGE_ALBEDO 8256u
 #define VKPT_SHEEN_ALBEDO 8320u
-#define VKPT_ALBEDO_ENTRIES 12416u
+// KHR_materials_iridescence's film nodes last, so that a scene without a film uploads only what
+// comes before them.
+#define VKPT_GGX_FILM_NODE_ALBEDO 12416u
+#define VKPT_ALBEDO_ENTRIES_WITHOUT_FILM 12416u
+#define VKPT_GGX_FILM_NODE_AVERAGE_ALBEDO 77952u // + VKPT_FILM_NODES 2D tables
+#define VKPT_ALBEDO_ENTRIES 78976u               // + VKPT_FILM_NODES 1D tables
 
 #ifdef __cplusplus
 #include <array>
@@ -35,10 +41,19 @@ static_assert(std::size(ggxAlbedoTable) == VKPT_ALBEDO_2D_ENTRIES &&
               std::size(ggxFresnelAlbedoTable) == VKPT_ALBEDO_2D_ENTRIES &&
               std::size(ggxAverageAlbedoTable) == VKPT_ALBEDO_TABLE_SIZE &&
               std::size(ggxFresnelAverageAlbedoTable) == VKPT_ALBEDO_TABLE_SIZE &&
-              std::size(sheenAlbedoTable) == VKPT_ALBEDO_2D_ENTRIES);
+              std::size(sheenAlbedoTable) == VKPT_ALBEDO_2D_ENTRIES &&
+              std::size(ggxFilmNodeAlbedoTable) == VKPT_FILM_NODES * VKPT_ALBEDO_2D_ENTRIES &&
+              std::size(ggxFilmNodeAverageAlbedoTable) ==
+                  VKPT_FILM_NODES * VKPT_ALBEDO_TABLE_SIZE &&
+              VKPT_GGX_FILM_NODE_AVERAGE_ALBEDO ==
+                  VKPT_GGX_FILM_NODE_ALBEDO + VKPT_FILM_NODES * VKPT_ALBEDO_2D_ENTRIES &&
+              VKPT_ALBEDO_ENTRIES ==
+                  VKPT_GGX_FILM_NODE_AVERAGE_ALBEDO + VKPT_FILM_NODES * VKPT_ALBEDO_TABLE_SIZE);
 
-// The tables end to end, as the device's buffer holds them.
-inline constexpr std::array<float, VKPT_ALBEDO_ENTRIES> albedoTableEntries = [] {
+// The tables end to end, as the device's buffer holds them. Copied when the program starts, not
+// at compile time: as a constant expression the copy of 78 976 floats cost every translation
+// unit that includes this header 3 s of compilation.
+inline std::array<float, VKPT_ALBEDO_ENTRIES> concatenatedAlbedoTables() {
     std::array<float, VKPT_ALBEDO_ENTRIES> all{};
     std::size_t n = 0;
     for (float v : ggxAlbedoTable)
@@ -51,15 +66,14 @@ inline constexpr std::array<float, VKPT_ALBEDO_ENTRIES> albedoTableEntries = [] 
         all[n++] = v;
     for (float v : sheenAlbedoTable)
         all[n++] = v;
+    for (float v : ggxFilmNodeAlbedoTable)
+        all[n++] = v;
+    for (float v : ggxFilmNodeAverageAlbedoTable)
+        all[n++] = v;
     return all;
-}();
-static_assert(albedoTableEntries[VKPT_GGX_FRESNEL_ALBEDO] == ggxFresnelAlbedoTable[0] &&
-              albedoTableEntries[VKPT_GGX_AVERAGE_ALBEDO] == ggxAverageAlbedoTable[0] &&
-              albedoTableEntries[VKPT_GGX_FRESNEL_AVERAGE_ALBEDO] ==
-                  ggxFresnelAverageAlbedoTable[0] &&
-              albedoTableEntries[VKPT_SHEEN_ALBEDO] == sheenAlbedoTable[0] &&
-              albedoTableEntries[VKPT_ALBEDO_ENTRIES - 1] ==
-                  sheenAlbedoTable[VKPT_ALBEDO_2D_ENTRIES - 1]);
+}
+
+inline const std::array<float, VKPT_ALBEDO_ENTRIES> albedoTableEntries = concatenatedAlbedoTables();
 
 inline float albedoEntry(uint i) {
     return albedoTableEntries[i];
@@ -136,6 +150,17 @@ VKPT_FN float ggxAverageAlbedo(float alpha) {
 
 VKPT_FN float ggxFresnelAverageAlbedo(float alpha) {
     return albedoLinear(VKPT_GGX_FRESNEL_AVERAGE_ALBEDO, sqrt(alpha));
+}
+
+// The albedo of the GGX lobe with F = the hat function of film node k (iridescence.h), in cell
+// c of α's table, and its cosine-weighted average for α.
+VKPT_FN float filmNodeAlbedo(int k, AlbedoCell c) {
+    return albedoBilinear(VKPT_GGX_FILM_NODE_ALBEDO + uint(k) * uint(VKPT_ALBEDO_2D_ENTRIES), c);
+}
+
+VKPT_FN float filmNodeAverageAlbedo(int k, float alpha) {
+    return albedoLinear(VKPT_GGX_FILM_NODE_AVERAGE_ALBEDO + uint(k) * uint(VKPT_ALBEDO_TABLE_SIZE),
+                        sqrt(alpha));
 }
 
 #ifdef __cplusplus

@@ -35,7 +35,11 @@
 //    Light the glass transmits below the surface passes the layers once, on wo's side.
 //
 // KHR_materials_iridescence mixes a thin film's Fresnel term (iridescence.h) into the dielectric
-// highlight's and the metal's; the layering then takes the film's albedo as iridescentAlbedo.
+// highlight's and the metal's. The film's term is taken at VKPT_FILM_NODES cosines and
+// interpolated between them, so that the highlight's albedo is exactly Σ F_k E_k (tables of the
+// lobe weighted by each node's hat function): the diffuse base under the film then receives what
+// the film's highlight really leaves, and its normalisation 1 − E_avg is the average of that
+// same albedo, so the white dielectric under a film is lossless like the bare one.
 //
 // KHR_materials_diffuse_transmission splits the diffuse base between reflection and a Lambertian
 // transmission to the other side (the extension's mix(diffuse_brdf(baseColor),
@@ -203,11 +207,12 @@ VKPT_FN bool hasIridescence(ShadingMaterial m) {
 
 // The base's Fresnel term for normal-incidence reflectance f0 at cosTheta = V·H, whose
 // Schlick weight is schlickWeight: Schlick's, mixed with the film's by the iridescence factor
-// (the extension's mix(F, F_iridescence, factor)).
+// (the extension's mix(F, F_iridescence, factor)), the film's term between its nodes.
 VKPT_FN vec3 baseFresnel(ShadingMaterial m, vec3 f0, float cosTheta, float schlickWeight) {
     vec3 fresnel = f0 + (vec3(1.0f) - f0) * schlickWeight;
     if (!hasIridescence(m)) return fresnel;
-    vec3 film = iridescenceFresnel(m.iridescenceIor, m.iridescenceThickness, cosTheta, f0);
+    vec3 film =
+        interpolatedIridescenceFresnel(m.iridescenceIor, m.iridescenceThickness, cosTheta, f0);
     return mix(fresnel, film, m.iridescence);
 }
 
@@ -272,19 +277,25 @@ VKPT_FN float baseAlbedoAlpha(ShadingMaterial m, vec3 w) {
                sqrt((m.alphaT * m.alphaT * a.x * a.x + m.alpha * m.alpha * a.y * a.y) / planar));
 }
 
+// baseAlbedoAlpha at the k-th of 8 azimuths of the quarter circle (k + 1/2 eighths of it), for
+// the azimuthal means below (α(φ) is even about both axes).
+VKPT_FN float azimuthAlbedoAlpha(ShadingMaterial m, int k) {
+    float phi = (float(k) + 0.5f) * (0.5f * VKPT_PI / 8.0f);
+    float c = cos(phi);
+    float s = sin(phi);
+    return min(sqrt(m.alphaT * m.alpha),
+               sqrt(m.alphaT * m.alphaT * c * c + m.alpha * m.alpha * s * s));
+}
+
 // The azimuthal mean over a hemisphere of directions of the table's cosine-weighted average
-// albedo, E_avg(α(φ)), by the midpoint rule on 8 azimuths of the quarter circle (α(φ) is even
-// about both axes): what the reciprocal form's normalisation 1 − E_avg needs so that the
-// diffuse base under an anisotropic highlight still integrates to (1 − E(wo))·ρ. xy: F = 1 and
-// Schlick weight tables (ggxAverageAlbedo, ggxFresnelAverageAlbedo).
+// albedo, E_avg(α(φ)), by the midpoint rule on 8 azimuths of the quarter circle: what the
+// reciprocal form's normalisation 1 − E_avg needs so that the diffuse base under an anisotropic
+// highlight still integrates to (1 − E(wo))·ρ. xy: F = 1 and Schlick weight tables
+// (ggxAverageAlbedo, ggxFresnelAverageAlbedo).
 VKPT_FN vec2 anisotropicAverageAlbedos(ShadingMaterial m) {
     vec2 sum = vec2(0.0f);
     for (int k = 0; k < 8; ++k) {
-        float phi = (float(k) + 0.5f) * (0.5f * VKPT_PI / 8.0f);
-        float c = cos(phi);
-        float s = sin(phi);
-        float alpha = min(sqrt(m.alphaT * m.alpha),
-                          sqrt(m.alphaT * m.alphaT * c * c + m.alpha * m.alpha * s * s));
+        float alpha = azimuthAlbedoAlpha(m, k);
         sum += vec2(ggxAverageAlbedo(alpha), ggxFresnelAverageAlbedo(alpha));
     }
     return sum * 0.125f;
@@ -340,63 +351,101 @@ VKPT_FN vec3 dielectricF0(ShadingMaterial m) {
     return min(m.iorF0 * m.specularColor, vec3(1.0f));
 }
 
-// What a film over reflectance f0 reflects towards w, for the layering: the Schlick albedo of
-// the tables, F0 E + (1 − F0) E_w, with F0 = F_film(μ), the film's term at w's own angle. The
-// film's term is not linear in F0, so the tables cannot hold ∫ F_film(V·H) f cos; this takes
-// the film's colour at the view and Schlick's rise towards grazing half vectors on top, which
-// keeps it at or above the true albedo (no gain: tests/unit/bsdf_test.cpp measures it).
+// The film's term over reflectance f0 at node k (iridescence.h).
+VKPT_FN vec3 filmNodeFresnel(ShadingMaterial m, vec3 f0, int k) {
+    return iridescenceFresnel(m.iridescenceIor, m.iridescenceThickness, filmNodeCosine(k), f0);
+}
+
+// The cosine-weighted average of node k's albedo over a hemisphere of directions: the table's
+// for α, or for an anisotropic lobe its azimuthal mean as anisotropicAverageAlbedos takes it.
+VKPT_FN float filmNodeAverage(ShadingMaterial m, int k) {
+    if (!hasAnisotropy(m)) return filmNodeAverageAlbedo(k, m.alpha);
+    float sum = 0.0f;
+    for (int j = 0; j < 8; ++j)
+        sum += filmNodeAverageAlbedo(k, azimuthAlbedoAlpha(m, j));
+    return sum * 0.125f;
+}
+
+// The albedo towards w of the base's GGX lobe with the film's term over f0: Σ F_k E_k(w), exact
+// for the interpolated term the lobe uses (iridescence.h, albedo_tables.h).
 VKPT_FN vec3 iridescentAlbedo(ShadingMaterial m, vec3 f0, vec3 w) {
-    vec3 film = iridescenceFresnel(m.iridescenceIor, m.iridescenceThickness, w.z, f0);
-    float alpha = baseAlbedoAlpha(m, w);
-    return film * ggxAlbedo(w.z, alpha) + (vec3(1.0f) - film) * ggxFresnelAlbedo(w.z, alpha);
-}
-
-// Its cosine-weighted average over the hemisphere, 2∫ F_film(μ)E(μ) μ dμ, by the midpoint rule
-// on 8 cosines (the film's colours vary slowly with the angle below its first fringe).
-VKPT_FN vec3 iridescentAverageAlbedo(ShadingMaterial m, vec3 f0) {
+    AlbedoCell cell = albedoCell(w.z, sqrt(baseAlbedoAlpha(m, w)));
     vec3 sum = vec3(0.0f);
-    for (int k = 0; k < 8; ++k) {
-        float mu = (float(k) + 0.5f) / 8.0f;
-        vec3 w = vec3(sqrt(1.0f - mu * mu), 0.0f, mu);
-        sum += iridescentAlbedo(m, f0, w) * mu;
-    }
-    return sum * (2.0f / 8.0f);
+    for (int k = 0; k < VKPT_FILM_NODES; ++k)
+        sum += filmNodeFresnel(m, f0, k) * filmNodeAlbedo(k, cell);
+    return sum;
 }
 
-// What the specular layer reflects at cos θ, per channel: s (F0 E + (1 − F0) E_w), exact for
-// Schlick's Fresnel, which is linear in F0 (albedo_tables.h); a film's share by
-// iridescentAlbedo.
+// The Schlick part of the specular layer's albedo (without s): F0 E + (1 − F0) E_w, exact for
+// Schlick's Fresnel, which is linear in F0 (albedo_tables.h).
+VKPT_FN vec3 schlickSpecularAlbedo(ShadingMaterial m, vec3 f0, vec3 w) {
+    float alpha = baseAlbedoAlpha(m, w);
+    return f0 * ggxAlbedo(w.z, alpha) + (vec3(1.0f) - f0) * ggxFresnelAlbedo(w.z, alpha);
+}
+
+VKPT_FN vec3 schlickSpecularAverageAlbedo(ShadingMaterial m, vec3 f0) {
+    if (hasAnisotropy(m)) {
+        vec2 albedos = anisotropicAverageAlbedos(m);
+        return f0 * albedos.x + (vec3(1.0f) - f0) * albedos.y;
+    }
+    return f0 * ggxAverageAlbedo(m.alpha) + (vec3(1.0f) - f0) * ggxFresnelAverageAlbedo(m.alpha);
+}
+
+// What the specular layer reflects at cos θ, per channel: s times the Schlick albedo, mixed with
+// the film's by the iridescence factor.
 VKPT_FN vec3 dielectricSpecularAlbedo(ShadingMaterial m, vec3 w) {
     vec3 f0 = dielectricF0(m);
-    float cosTheta = w.z;
-    float alpha = baseAlbedoAlpha(m, w);
-    vec3 albedo =
-        f0 * ggxAlbedo(cosTheta, alpha) + (vec3(1.0f) - f0) * ggxFresnelAlbedo(cosTheta, alpha);
+    vec3 albedo = schlickSpecularAlbedo(m, f0, w);
     if (hasIridescence(m)) albedo = mix(albedo, iridescentAlbedo(m, f0, w), m.iridescence);
     return m.specular * albedo;
 }
 
-VKPT_FN vec3 dielectricSpecularAverageAlbedo(ShadingMaterial m) {
-    vec3 f0 = dielectricF0(m);
+// The specular layer's albedo towards wo and wi and its cosine-weighted average, which the
+// diffuse base's reciprocal form needs together. Under a film the three share the film's node
+// values, computed once.
+struct SpecularAlbedos {
+    vec3 outgoing;
+    vec3 incoming;
     vec3 average;
-    if (hasAnisotropy(m)) {
-        vec2 albedos = anisotropicAverageAlbedos(m);
-        average = f0 * albedos.x + (vec3(1.0f) - f0) * albedos.y;
-    } else {
-        average =
-            f0 * ggxAverageAlbedo(m.alpha) + (vec3(1.0f) - f0) * ggxFresnelAverageAlbedo(m.alpha);
+};
+
+VKPT_FN SpecularAlbedos dielectricSpecularAlbedos(ShadingMaterial m, vec3 wo, vec3 wi) {
+    vec3 f0 = dielectricF0(m);
+    SpecularAlbedos a;
+    a.outgoing = schlickSpecularAlbedo(m, f0, wo);
+    a.incoming = schlickSpecularAlbedo(m, f0, wi);
+    a.average = schlickSpecularAverageAlbedo(m, f0);
+    if (hasIridescence(m)) {
+        AlbedoCell cellO = albedoCell(wo.z, sqrt(baseAlbedoAlpha(m, wo)));
+        AlbedoCell cellI = albedoCell(wi.z, sqrt(baseAlbedoAlpha(m, wi)));
+        SpecularAlbedos film;
+        film.outgoing = vec3(0.0f);
+        film.incoming = vec3(0.0f);
+        film.average = vec3(0.0f);
+        for (int k = 0; k < VKPT_FILM_NODES; ++k) {
+            vec3 fresnel = filmNodeFresnel(m, f0, k);
+            film.outgoing += fresnel * filmNodeAlbedo(k, cellO);
+            film.incoming += fresnel * filmNodeAlbedo(k, cellI);
+            film.average += fresnel * filmNodeAverage(m, k);
+        }
+        a.outgoing = mix(a.outgoing, film.outgoing, m.iridescence);
+        a.incoming = mix(a.incoming, film.incoming, m.iridescence);
+        a.average = mix(a.average, film.average, m.iridescence);
     }
-    if (hasIridescence(m)) average = mix(average, iridescentAverageAlbedo(m, f0), m.iridescence);
-    return m.specular * average;
+    a.outgoing *= m.specular;
+    a.incoming *= m.specular;
+    a.average *= m.specular;
+    return a;
 }
 
 // The share of light the specular layer leaves to the diffuse base, reciprocally:
 // (1 − E(μo))(1 − E(μi)) / (1 − E_avg). Where the layer reflects (almost) everything on
 // average, the base receives nothing.
 VKPT_FN vec3 diffuseTransmittance(ShadingMaterial m, vec3 wo, vec3 wi) {
-    vec3 outgoing = max(vec3(1.0f) - dielectricSpecularAlbedo(m, wo), vec3(0.0f));
-    vec3 incoming = max(vec3(1.0f) - dielectricSpecularAlbedo(m, wi), vec3(0.0f));
-    vec3 average = vec3(1.0f) - dielectricSpecularAverageAlbedo(m);
+    SpecularAlbedos albedos = dielectricSpecularAlbedos(m, wo, wi);
+    vec3 outgoing = max(vec3(1.0f) - albedos.outgoing, vec3(0.0f));
+    vec3 incoming = max(vec3(1.0f) - albedos.incoming, vec3(0.0f));
+    vec3 average = vec3(1.0f) - albedos.average;
     vec3 result;
     result.x = average.x > 1e-6f ? outgoing.x * incoming.x / average.x : 0.0f;
     result.y = average.y > 1e-6f ? outgoing.y * incoming.y / average.y : 0.0f;
@@ -436,13 +485,15 @@ VKPT_FN vec3 evaluateMetal(ShadingMaterial m, float ggx, float cosVH, float fres
     return ggx * baseFresnel(m, m.baseColor, cosVH, fresnelWeight);
 }
 
-VKPT_FN vec3 metalAlbedo(ShadingMaterial m, vec3 w) {
-    float cosTheta = w.z;
-    float alpha = baseAlbedoAlpha(m, w);
-    vec3 albedo = m.baseColor * ggxAlbedo(cosTheta, alpha) +
-                  (vec3(1.0f) - m.baseColor) * ggxFresnelAlbedo(cosTheta, alpha);
-    if (hasIridescence(m)) albedo = mix(albedo, iridescentAlbedo(m, m.baseColor, w), m.iridescence);
-    return albedo;
+// What the base's GGX lobe with its Fresnel term over f0 reflects towards w, as the lobe
+// sampler weighs it (lobeProbabilities): exact for Schlick's term; under a film, the film's term
+// at the view on the Schlick albedo, one evaluation of the film where iridescentAlbedo takes 16.
+// The sampler needs weights, not albedos: any positive estimate keeps the mixture unbiased.
+VKPT_FN vec3 specularAlbedoEstimate(ShadingMaterial m, vec3 f0, vec3 w) {
+    vec3 albedo = schlickSpecularAlbedo(m, f0, w);
+    if (!hasIridescence(m)) return albedo;
+    vec3 film = iridescenceFresnel(m.iridescenceIor, m.iridescenceThickness, w.z, f0);
+    return mix(albedo, schlickSpecularAlbedo(m, film, w), m.iridescence);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -577,12 +628,13 @@ struct LobeProbabilities {
     float diffuseTransmission; // KHR_materials_diffuse_transmission's mirrored cosine hemisphere
 };
 
-// Each lobe's weight is its albedo at wo from the tables, by luminance, times what the layers
-// above leave it; the glass reflects and transmits all it receives, so its weight is its share.
-// A lobe that cannot contribute (no diffuse: metallic 1, full transmission or a black base; no
-// specular: metallic 0 and F0·s = 0; no clearcoat, sheen or glass) is never sampled; each of
-// the k lobes that can gets VKPT_MIN_LOBE_PROBABILITY plus its share of the rest. A material
-// that reflects nothing samples the diffuse lobe, with weight 0.
+// Each lobe's weight is its albedo at wo from the tables (a film's estimated,
+// specularAlbedoEstimate), by luminance, times what the layers above leave it; the glass reflects
+// and transmits all it receives, so its weight is its share. A lobe that cannot contribute (no
+// diffuse: metallic 1, full transmission or a black base; no specular: metallic 0 and F0·s = 0;
+// no clearcoat, sheen or glass) is never sampled; each of the k lobes that can gets
+// VKPT_MIN_LOBE_PROBABILITY plus its share of the rest. A material that reflects nothing samples
+// the diffuse lobe, with weight 0.
 VKPT_FN LobeProbabilities lobeProbabilities(ShadingMaterial m, vec3 wo) {
     float cosThetaO = wo.z;
     float clearcoatWeight = 0.0f;
@@ -597,9 +649,10 @@ VKPT_FN LobeProbabilities lobeProbabilities(ShadingMaterial m, vec3 wo) {
         below *= 1.0f - sheenAlbedoBound(m, cosThetaO);
     }
     float opaque = 1.0f - m.transmission; // the opaque dielectric's share of the non-metal part
-    vec3 dielectricSpecular = dielectricSpecularAlbedo(m, wo);
-    float specularWeight = below * mix(opaque * luminance(dielectricSpecular),
-                                       luminance(metalAlbedo(m, wo)), m.metallic);
+    vec3 dielectricSpecular = m.specular * specularAlbedoEstimate(m, dielectricF0(m), wo);
+    float specularWeight =
+        below * mix(opaque * luminance(dielectricSpecular),
+                    luminance(specularAlbedoEstimate(m, m.baseColor, wo)), m.metallic);
     if (!(m.metallic > 0.0f || opaque * m.specular * maxComponent(dielectricF0(m)) > 0.0f))
         specularWeight = 0.0f;
     vec3 underSpecular = max(vec3(1.0f) - dielectricSpecular, vec3(0.0f));

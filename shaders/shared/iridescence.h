@@ -108,6 +108,45 @@ VKPT_FN vec3 iridescenceFresnel(float filmIor, float thickness, float cosTheta, 
     return clamp(reflectance, vec3(0.0f), vec3(1.0f));
 }
 
+// The film term the BSDF uses is the one above at VKPT_FILM_NODES values of cos θ, linear in
+// cos θ between them: its albedo is then exactly a sum over the nodes of the film's value times
+// a table (albedo_tables.h, ggxFilmNodeAlbedoTable), so that the layering under the film takes
+// what the film's highlight really reflects. Node k lies at cos θ = (k/(N − 1))², denser towards
+// grazing angles, where the outer interface's reflectance rises fastest. With 16 nodes the
+// interpolant stays within 0.04 of the formula for films up to 400 nm (the extension's default
+// maximum) and 0.065 up to 1200 nm, for film indices 1.2 to 2.2 over bases of F0 0.04 to 0.9
+// (tests/unit/bsdf_test.cpp, InterpolatedFilmFollowsTheFormula).
+#define VKPT_FILM_NODES 16
+
+VKPT_FN float filmNodeCosine(int k) {
+    float x = float(k) / float(VKPT_FILM_NODES - 1);
+    return x * x;
+}
+
+// The node at or below cos θ and the weight of the next one.
+struct FilmInterval {
+    int node;
+    float t;
+};
+
+VKPT_FN FilmInterval filmIntervalOf(float cosTheta) {
+    float c = clamp(cosTheta, 0.0f, 1.0f);
+    FilmInterval at;
+    at.node = min(int(sqrt(c) * float(VKPT_FILM_NODES - 1)), VKPT_FILM_NODES - 2);
+    float below = filmNodeCosine(at.node);
+    at.t = clamp((c - below) / (filmNodeCosine(at.node + 1) - below), 0.0f, 1.0f);
+    return at;
+}
+
+// The film term between the nodes around cos θ.
+VKPT_FN vec3 interpolatedIridescenceFresnel(float filmIor, float thickness, float cosTheta,
+                                            vec3 baseF0) {
+    FilmInterval at = filmIntervalOf(cosTheta);
+    vec3 below = iridescenceFresnel(filmIor, thickness, filmNodeCosine(at.node), baseF0);
+    vec3 above = iridescenceFresnel(filmIor, thickness, filmNodeCosine(at.node + 1), baseF0);
+    return mix(below, above, at.t);
+}
+
 #ifdef __cplusplus
 } // namespace vkpt::gpu
 #endif

@@ -390,19 +390,48 @@ TEST(Bsdf, AnisotropicBrdfIsReciprocal) {
     }
 }
 
-// KHR_materials_iridescence: the film's reflectance is at most 1, so the white metal under it
-// never gains. Over the white dielectric the diffuse base takes what iridescentAlbedo leaves it
-// (the tables' Schlick albedo with F0 the film's term at the view). Measured over film
-// thicknesses across the visible fringes, roughness 0.05 to 0.8, normal to grazing views: a
-// gain of up to 0.9 % at roughness 0.8 (the film's fringes move with V·H, which one angle
-// cannot bound: a known shortfall), a loss of at most 5 % for cos θo ≥ 0.6 and up to 46 % at
-// cos θo = 0.2 (the bounds below hold what was measured, not what is wanted).
-constexpr double kIridescentGain = 0.01;
-constexpr double kIridescentLossAwayFromGrazing = 0.05;
-constexpr double kIridescentLossAtGrazing = 0.5;
+// KHR_materials_iridescence. The film loses no light (its reflectance plus transmittance is 1),
+// so the white dielectric under it is lossless like the bare one: the diffuse base receives
+// exactly what the film's highlight does not reflect, because the layering takes the highlight's
+// albedo from the same Fresnel term the highlight uses (bsdf.h, dielectricSpecularAlbedos). The
+// white metal under the film reflects at most 1: the film's term is a reflectance. Over roughness 0
+// to 1, films from none to two fringes (0 to 700 nm, the extension's range and beyond) and views
+// from normal to grazing, all three channels from one set of samples.
+//
+// Bound: |mean − 1| ≤ 4σ + 0.0015 for the dielectric, mean ≤ 1 + 4σ for the metal. 4σ keeps the
+// family of 360 comparisons below a 2 % chance of a false alarm (Šidák); 0.0015 is the bilinear
+// interpolation of the albedo tables (0.0012 of E for cos θo ≥ 0.05, as the white dielectric's
+// furnace says) plus float rounding. Before the layering took the film's own albedo, this test
+// failed 95 of its comparisons: a gain of 0.58 % (roughness 0.5, 250 nm, cos θo 0.2, blue), where
+// quadrature had found up to 0.85 % at roughness 0.8, and losses of up to 46 % at cos θo 0.2.
+constexpr double kIridescentFurnaceSigmas = 4.0;
+constexpr double kIridescentFurnaceTolerance = 0.0015;
+constexpr int kIridescentFurnaceSamples = 20000;
+
+struct RgbAlbedoEstimate {
+    vec3 mean;
+    vec3 sigma;
+};
+
+// The albedo per channel at cos θo from `samples` draws of sampleBsdf (stream `seed`).
+RgbAlbedoEstimate estimateRgbAlbedo(const gpu::ShadingMaterial& m, float cosThetaO, int samples,
+                                    uint32_t seed) {
+    const vec3 wo = viewAt(cosThetaO);
+    glm::dvec3 sum(0.0), sumSquares(0.0);
+    for (uint32_t i = 0; i < uint32_t(samples); ++i) {
+        const vec4 u = gpu::randomFloats(seed, i, 0, 0, DIM_BSDF);
+        const gpu::BsdfSample s = gpu::sampleBsdf(m, wo, vec2(u.x, u.y), u.w);
+        const glm::dvec3 w = s.valid ? glm::dvec3(s.weight) : glm::dvec3(0.0);
+        sum += w;
+        sumSquares += w * w;
+    }
+    const glm::dvec3 mean = sum / double(samples);
+    const glm::dvec3 variance = glm::max(sumSquares / double(samples) - mean * mean, 0.0);
+    return {vec3(mean), vec3(glm::sqrt(variance / double(samples)))};
+}
 
 TEST(Bsdf, IridescentFurnace) {
-    for (float roughness : {0.05f, 0.3f, 0.8f})
+    for (float roughness : {0.0f, 0.3f, 0.5f, 0.8f, 1.0f})
         for (float thickness : {0.0f, 250.0f, 400.0f, 700.0f})
             for (float cosThetaO : {1.0f, 0.6f, 0.2f})
                 for (float metallic : {0.0f, 1.0f}) {
@@ -414,15 +443,15 @@ TEST(Bsdf, IridescentFurnace) {
                                               " roughness " + std::to_string(roughness) +
                                               " thickness " + std::to_string(thickness) + " cos " +
                                               std::to_string(cosThetaO);
+                    const RgbAlbedoEstimate e =
+                        estimateRgbAlbedo(m, cosThetaO, kIridescentFurnaceSamples, 30);
                     for (int channel = 0; channel < 3; ++channel) {
-                        AlbedoEstimate e =
-                            estimateAlbedo(m, cosThetaO, kFurnaceSamples / 2, 30, channel);
-                        const double gain = metallic == 1.0f ? 0.0 : kIridescentGain;
-                        EXPECT_LE(e.mean, 1.0 + 3.0 * e.sigma + gain) << where << " ch " << channel;
-                        const double loss = cosThetaO >= 0.6f ? kIridescentLossAwayFromGrazing
-                                                              : kIridescentLossAtGrazing;
-                        if (metallic == 0.0f) {
-                            EXPECT_GE(e.mean, 1.0 - loss) << where << " ch " << channel;
+                        const double bound = kIridescentFurnaceSigmas * e.sigma[channel];
+                        if (metallic == 1.0f) {
+                            EXPECT_LE(e.mean[channel], 1.0 + bound) << where << " ch " << channel;
+                        } else {
+                            EXPECT_NEAR(e.mean[channel], 1.0, bound + kIridescentFurnaceTolerance)
+                                << where << " ch " << channel;
                         }
                     }
                 }
@@ -448,6 +477,34 @@ TEST(Bsdf, IridescenceFresnelIsAReflectance) {
     const vec3 thin = gpu::iridescenceFresnel(1.33f, 250.0f, 1.0f, vec3(0.04f));
     const vec3 thick = gpu::iridescenceFresnel(1.33f, 400.0f, 1.0f, vec3(0.04f));
     EXPECT_GT(glm::length(thin - thick), 0.02f) << "a fringe apart, the colours differ";
+}
+
+// The film's term as the BSDF takes it, interpolated between VKPT_FILM_NODES cosines
+// (iridescence.h): equal to the formula at the nodes, and within 0.04 of it between them for films
+// up to 400 nm, 0.065 up to 1200 nm (measured on a finer grid: 0.0385 and 0.0641), for film
+// indices 1.2 to 2.2 over bases of F0 0.04 to 0.9. 1000 cosines per film.
+TEST(Bsdf, InterpolatedFilmFollowsTheFormula) {
+    for (float ior : {1.2f, 1.5f, 2.2f})
+        for (float f0 : {0.04f, 0.5f, 0.9f})
+            for (float thickness = 0.0f; thickness <= 1200.0f; thickness += 50.0f) {
+                const float bound = thickness <= 400.0f ? 0.04f : 0.065f;
+                for (int k = 0; k < VKPT_FILM_NODES; ++k) {
+                    const float c = gpu::filmNodeCosine(k);
+                    const vec3 exact = gpu::iridescenceFresnel(ior, thickness, c, vec3(f0));
+                    const vec3 node =
+                        gpu::interpolatedIridescenceFresnel(ior, thickness, c, vec3(f0));
+                    ASSERT_LE(glm::length(node - exact), 1e-6f) << "node " << k;
+                }
+                for (int i = 0; i <= 1000; ++i) {
+                    const float c = float(i) / 1000.0f;
+                    const vec3 d =
+                        gpu::interpolatedIridescenceFresnel(ior, thickness, c, vec3(f0)) -
+                        gpu::iridescenceFresnel(ior, thickness, c, vec3(f0));
+                    ASSERT_LE(std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)}), bound)
+                        << "ior " << ior << " f0 " << f0 << " thickness " << thickness << " cos "
+                        << c;
+                }
+            }
 }
 
 // The film keeps the BRDF reciprocal: its term is taken at V·H, the same both ways.
