@@ -28,18 +28,18 @@ struct DenoiseSource {
 #endif
 
 // The variances the centre's tests use, for the whole estimate and each half (x, y, z): its own,
-// or, where larger, its own blended with the mean over its 3×3 neighbourhood leaving out the
-// largest, the neighbourhood counting as DENOISE_PRIOR_SAMPLES samples against the pixel's n. A
-// pixel whose few samples happened to agree (variance 0 at 4 spp) thus still sees its
-// surroundings' noise, while 64 samples of exactly 0 (a black emitter's back among lit floor) are
-// believed; and one firefly beside the pixel (a variance far above the rest) does not lift its
-// bound and so is not spread into it.
+// or, where larger, its own blended with the mean over its 5×5 neighbourhood (DENOISE_PRIOR_RADIUS)
+// leaving out the largest, the neighbourhood counting as DENOISE_PRIOR_SAMPLES samples against the
+// pixel's n. A pixel whose few samples happened to agree (variance 0 at 4 spp, or a heavy tail's
+// rare bright path missed) thus still sees its surroundings' noise, while 64 samples of exactly 0
+// (a black emitter's back among lit floor) are believed; and one firefly near the pixel (a
+// variance far above the rest) does not lift its bound and so is not spread into it.
 VKPT_FN vec3 centreTestVariances(DENOISE_SOURCE_PARAM uint x, uint y, DenoiseParams params) {
     vec3 total = vec3(0.0f);
     vec3 largest = vec3(0.0f);
     float count = 0.0f;
-    for (int dy = -1; dy <= 1; ++dy) {
-        for (int dx = -1; dx <= 1; ++dx) {
+    for (int dy = -DENOISE_PRIOR_RADIUS; dy <= DENOISE_PRIOR_RADIUS; ++dy) {
+        for (int dx = -DENOISE_PRIOR_RADIUS; dx <= DENOISE_PRIOR_RADIUS; ++dx) {
             int qx = int(x) + dx;
             int qy = int(y) + dy;
             if (qx < 0 || qy < 0 || qx >= int(params.width) || qy >= int(params.height)) continue;
