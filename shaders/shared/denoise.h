@@ -66,9 +66,9 @@ struct DenoiseParams {
 };
 
 // The defaults, measured in docs/trade/denoise.md.
-// Three steps (reach 14 pixels) with the 5×5 variance prior below measured as good as or better
-// than four with a 3×3 prior on every scene and sample count of docs/trade/denoise.md, for a
-// quarter less filtering (the fourth step gained 6 % at Cornell 16 spp only with the 3×3 prior).
+// Three steps (reach 14 pixels) with the 5×5 variance prior below against four with a 3×3 prior
+// (docs/trade/denoise.md): less error in the Cornell box and the many-light scene, more at 16 spp
+// in the 64² glTF samples (TransmissionTest's glass +17 %), for a quarter less filtering.
 #define DENOISE_ITERATIONS 3u
 #define DENOISE_GATE_T 3.0f
 #define DENOISE_NORMAL_POWER 32.0f
