@@ -7,13 +7,14 @@
 //     int cells() const;                                   the number of cells
 //     int cellOf(glm::vec3 direction) const;               the cell a direction falls in
 //     template <typename G> double integrateCell(int cell, const G& g) const;   ∫ g dω over it
-// (bsdf_test.cpp: cells about the mirror direction; bsdf_dielectric_test.cpp: the whole sphere).
+// (bsdf_test.cpp: cells about the mirror direction; SphereGrid below: the whole sphere).
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,37 @@
 #include "shared/rng.h"
 
 namespace vkpt::test {
+
+// Cells over the whole sphere, uniform in cos θ ∈ [−1, 1] (so both hemispheres) and in φ, each
+// integrated by the midpoint rule on Sub × Sub sub-cells (dω = d cos θ dφ, so the rule is exact
+// for a g constant on sub-cells).
+template <int CosBins, int PhiBins, int Sub> class SphereGrid {
+public:
+    int cells() const { return CosBins * PhiBins; }
+
+    int cellOf(glm::vec3 w) const {
+        int ci = std::clamp(int((double(w.z) + 1.0) * 0.5 * CosBins), 0, CosBins - 1);
+        double phi = std::atan2(double(w.y), double(w.x));
+        if (phi < 0.0) phi += 2.0 * std::numbers::pi;
+        int pi = std::clamp(int(phi / (2.0 * std::numbers::pi) * PhiBins), 0, PhiBins - 1);
+        return ci * PhiBins + pi;
+    }
+
+    template <typename G> double integrateCell(int cell, const G& g) const {
+        const double dCos = 2.0 / CosBins / Sub;
+        const double dPhi = 2.0 * std::numbers::pi / PhiBins / Sub;
+        int ci = cell / PhiBins, pi = cell % PhiBins;
+        double sum = 0.0;
+        for (int a = 0; a < Sub; ++a)
+            for (int b = 0; b < Sub; ++b) {
+                double z = -1.0 + (ci * Sub + a + 0.5) * dCos;
+                double phi = (pi * Sub + b + 0.5) * dPhi;
+                double s = std::sqrt(std::max(0.0, 1.0 - z * z));
+                sum += g(glm::vec3(float(s * std::cos(phi)), float(s * std::sin(phi)), float(z)));
+            }
+        return sum * dCos * dPhi;
+    }
+};
 
 // One material at one view, drawn n times, and its pdf integrated over every cell.
 struct SamplingAnalysis {

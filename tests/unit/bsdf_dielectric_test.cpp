@@ -68,41 +68,10 @@ const GlassCase kCases[] = {
 };
 constexpr int kCaseCount = int(sizeof(kCases) / sizeof(kCases[0]));
 
-// Cells over the whole sphere: uniform in cos θ ∈ [−1, 1] (so both hemispheres) and in φ.
-class SphereGrid {
-public:
-    static constexpr int kCosBins = 40;
-    static constexpr int kPhiBins = 32;
-
-    int cells() const { return kCosBins * kPhiBins; }
-
-    int cellOf(vec3 w) const {
-        int ci = std::clamp(int((double(w.z) + 1.0) * 0.5 * kCosBins), 0, kCosBins - 1);
-        double phi = std::atan2(double(w.y), double(w.x));
-        if (phi < 0.0) phi += 2.0 * std::numbers::pi;
-        int pi = std::clamp(int(phi / (2.0 * std::numbers::pi) * kPhiBins), 0, kPhiBins - 1);
-        return ci * kPhiBins + pi;
-    }
-
-    // ∫ g over the cell by the midpoint rule on 24 × 24 sub-cells (dω = d cos θ dφ, so the rule
-    // is exact for a g constant on sub-cells). The integral of the pdf over all cells, plus the
-    // share of invalid samples, is 1 within 1e-3 (PdfIntegratesToOneLessTheInvalidSamples),
-    // which bounds the quadrature.
-    template <typename G> double integrateCell(int cell, const G& g) const {
-        constexpr int kSub = 24;
-        const double dCos = 2.0 / kCosBins / kSub, dPhi = 2.0 * std::numbers::pi / kPhiBins / kSub;
-        int ci = cell / kPhiBins, pi = cell % kPhiBins;
-        double sum = 0.0;
-        for (int a = 0; a < kSub; ++a)
-            for (int b = 0; b < kSub; ++b) {
-                double z = -1.0 + (ci * kSub + a + 0.5) * dCos;
-                double phi = (pi * kSub + b + 0.5) * dPhi;
-                double s = std::sqrt(std::max(0.0, 1.0 - z * z));
-                sum += g(vec3(float(s * std::cos(phi)), float(s * std::sin(phi)), float(z)));
-            }
-        return sum * dCos * dPhi;
-    }
-};
+// Cells over the whole sphere, 40 in cos θ by 32 in φ, each integrated on 24 × 24 sub-cells. The
+// integral of the pdf over all cells, plus the share of invalid samples, is 1 within 1e-3
+// (PdfIntegratesToOneLessTheInvalidSamples), which bounds the quadrature.
+using SphereGrid = test::SphereGrid<40, 32, 24>;
 
 // Each case drawn 2·10^5 times (streams 300, 301, ...) into the sphere's cells.
 test::SamplingAnalyses analyses =

@@ -61,40 +61,9 @@ const TransmittingCase kCases[] = {
     {"dt0.5 with rough thin glass", 0.5f, 0.0f, vec3(0.6f), 0.5f, vec3(0.9f), 0.8f, 0.5f},
 };
 
-// Cells over the whole sphere, uniform in cos θ ∈ [−1, 1] and in φ; the lobes here are broad
-// (roughness ≥ 0.3), which 24 × 24 cells resolve.
-class WholeSphereGrid {
-public:
-    static constexpr int kCosBins = 24;
-    static constexpr int kPhiBins = 24;
-
-    int cells() const { return kCosBins * kPhiBins; }
-
-    int cellOf(vec3 w) const {
-        int ci = std::clamp(int((double(w.z) + 1.0) * 0.5 * kCosBins), 0, kCosBins - 1);
-        double phi = std::atan2(double(w.y), double(w.x));
-        if (phi < 0.0) phi += 2.0 * std::numbers::pi;
-        int pi = std::clamp(int(phi / (2.0 * std::numbers::pi) * kPhiBins), 0, kPhiBins - 1);
-        return ci * kPhiBins + pi;
-    }
-
-    // ∫ g over the cell by the midpoint rule on 16 × 16 sub-cells (dω = d cos θ dφ).
-    template <typename G> double integrateCell(int cell, const G& g) const {
-        constexpr int kSub = 16;
-        const double dCos = 2.0 / kCosBins / kSub;
-        const double dPhi = 2.0 * std::numbers::pi / kPhiBins / kSub;
-        int ci = cell / kPhiBins, pi = cell % kPhiBins;
-        double sum = 0.0;
-        for (int a = 0; a < kSub; ++a)
-            for (int b = 0; b < kSub; ++b) {
-                double z = -1.0 + (ci * kSub + a + 0.5) * dCos;
-                double phi = (pi * kSub + b + 0.5) * dPhi;
-                double s = std::sqrt(std::max(0.0, 1.0 - z * z));
-                sum += g(vec3(float(s * std::cos(phi)), float(s * std::sin(phi)), float(z)));
-            }
-        return sum * dCos * dPhi;
-    }
-};
+// Cells over the whole sphere: the lobes here are broad (roughness ≥ 0.3), which 24 × 24 cells
+// of 16 × 16 sub-cells each resolve.
+using WholeSphereGrid = test::SphereGrid<24, 24, 16>;
 
 // Each case drawn 2·10^5 times (streams 700, 701, ...).
 test::SamplingAnalyses analyses = test::samplingAnalysesOf(
