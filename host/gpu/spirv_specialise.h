@@ -1,0 +1,28 @@
+// spirv_specialise.h — a kernel's SPIR-V with its specialisation constants made constants and the
+// code they switch off removed, before the driver sees it.
+//
+// A driver translates the whole module it is given and only then applies the specialisation
+// constants; lavapipe, for one, turns every function of shade_hits into NIR and inlines it before
+// the constant branches fall away, so a scene that uses two material features pays for all of
+// them at every pipeline creation (docs/gpu.md, "Pipelines"). Folding the constants here with
+// SPIRV-Tools' optimiser (the passes the build runs for its pruned builds) hands the driver only
+// the code the scene runs.
+#pragma once
+
+#include "gpu/kernel.h"
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace vkpt {
+
+// `spirv` with every constant of `constants` set to its value and frozen (so are the module's
+// other specialisation constants, at their defaults), constant branches folded and dead functions
+// dropped. Throws VulkanError, naming `kernelName`, when SPIRV-Tools rejects the module.
+std::vector<std::uint32_t> specialiseSpirv(std::span<const std::uint32_t> spirv,
+                                           const std::vector<SpecializationConstant>& constants,
+                                           const std::string& kernelName);
+
+} // namespace vkpt
