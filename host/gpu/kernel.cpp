@@ -19,6 +19,32 @@ struct ShaderModule {
     ~ShaderModule() { vkDestroyShaderModule(device, handle, nullptr); }
 };
 
+// The VkSpecializationInfo of `constants` with the arrays it points into: one 32-bit value
+// per constant, packed in order.
+class Specialization {
+public:
+    explicit Specialization(const std::vector<SpecializationConstant>& constants) {
+        for (const SpecializationConstant& constant : constants) {
+            const auto offset = static_cast<std::uint32_t>(values_.size() * sizeof(std::uint32_t));
+            entries_.push_back({constant.id, offset, sizeof(std::uint32_t)});
+            values_.push_back(constant.value);
+        }
+        info_.mapEntryCount = static_cast<std::uint32_t>(entries_.size());
+        info_.pMapEntries = entries_.data();
+        info_.dataSize = values_.size() * sizeof(std::uint32_t);
+        info_.pData = values_.data();
+    }
+    Specialization(const Specialization&) = delete;
+    Specialization& operator=(const Specialization&) = delete;
+
+    const VkSpecializationInfo* info() const { return entries_.empty() ? nullptr : &info_; }
+
+private:
+    std::vector<std::uint32_t> values_;
+    std::vector<VkSpecializationMapEntry> entries_;
+    VkSpecializationInfo info_{};
+};
+
 } // namespace
 
 VkDescriptorType descriptorTypeOf(DescriptorKind kind) {
@@ -106,13 +132,15 @@ void Kernel::createLayouts() {
 
 void Kernel::createPipeline() {
     const auto start = std::chrono::steady_clock::now();
-    // The driver gets the module with the constants folded in and the code they switch off
-    // removed (spirv_specialise.h), so it needs no specialisation info.
-    std::vector<std::uint32_t> specialised;
+    // Folded on the host, the driver gets the module without the code the constants switch
+    // off and no specialisation info (spirv_specialise.h); else the module as built, and the
+    // constants with it.
+    const bool fold = desc_.foldConstantsOnHost && !desc_.specializationConstants.empty();
+    std::vector<std::uint32_t> folded;
     std::span<const std::uint32_t> spirv = desc_.spirv;
-    if (!desc_.specializationConstants.empty()) {
-        specialised = specialiseSpirv(desc_.spirv, desc_.specializationConstants, desc_.name);
-        spirv = specialised;
+    if (fold) {
+        folded = specialiseSpirv(desc_.spirv, desc_.specializationConstants, desc_.name);
+        spirv = folded;
     }
     VkShaderModuleCreateInfo moduleInfo{};
     moduleInfo.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
@@ -122,12 +150,15 @@ void Kernel::createPipeline() {
     VKPT_VK_CHECK(vkCreateShaderModule(context_->device(), &moduleInfo, nullptr, &module.handle));
     context_->setDebugName(module.handle, desc_.name);
 
+    const Specialization specialization(fold ? std::vector<SpecializationConstant>{}
+                                             : desc_.specializationConstants);
     VkComputePipelineCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO;
     info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
     info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
     info.stage.module = module.handle;
     info.stage.pName = "main";
+    info.stage.pSpecializationInfo = specialization.info();
     info.layout = pipelineLayout_;
     VKPT_VK_CHECK(vkCreateComputePipelines(context_->device(), context_->pipelineCache().handle(),
                                            1, &info, nullptr, &pipeline_));

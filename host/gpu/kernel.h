@@ -49,6 +49,10 @@ struct KernelDesc {
     std::vector<KernelBinding> bindings;
     std::uint32_t pushConstantSize = 0; // bytes, a multiple of 4; 0 for none
     std::vector<SpecializationConstant> specializationConstants;
+    // true: the constants are folded into the module on the host and the driver gets none
+    // (spirv_specialise.h); false: the module as built, specialised by the driver (the reference
+    // that folding must render bit for bit).
+    bool foldConstantsOnHost = true;
 };
 
 class Kernel {

@@ -15,11 +15,17 @@ bool sameConstant(const SpecializationConstant& a, const SpecializationConstant&
     return a.id == b.id && a.value == b.value;
 }
 
+// Without constants there is nothing to fold: the module the driver gets is the same.
+bool foldsOnHost(const KernelDesc& desc) {
+    return desc.foldConstantsOnHost && !desc.specializationConstants.empty();
+}
+
 } // namespace
 
 bool sameKernel(const KernelDesc& a, const KernelDesc& b) {
     return a.name == b.name && a.spirv.data() == b.spirv.data() &&
            a.spirv.size() == b.spirv.size() && a.pushConstantSize == b.pushConstantSize &&
+           foldsOnHost(a) == foldsOnHost(b) &&
            std::ranges::equal(a.bindings, b.bindings, sameBinding) &&
            std::ranges::equal(a.specializationConstants, b.specializationConstants, sameConstant);
 }

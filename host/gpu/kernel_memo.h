@@ -14,7 +14,8 @@
 namespace vkpt {
 
 // Whether two descriptions make the same pipeline. The SPIR-V is compared by its storage (the
-// embedded kernel library holds each build once), the rest by value.
+// embedded kernel library holds each build once), the rest (where the constants are folded
+// included) by value.
 bool sameKernel(const KernelDesc& a, const KernelDesc& b);
 
 class KernelMemo {

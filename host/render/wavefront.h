@@ -38,7 +38,8 @@ struct WavefrontOptions : RenderRunOptions {
     // scene uses (PreparedScene::usedFeatures), or renderWavefront throws InternalError.
     std::optional<SceneFeatures> features;
     // Which kernel builds the pipelines take (render/wavefront_kernels.h): the one for the
-    // scene's feature set where there is one, or the full build (images equal bit for bit).
+    // scene's feature set where there is one, folded on the host, or the full build specialised
+    // by the driver (images equal bit for bit).
     KernelBuilds kernelBuilds = KernelBuilds::ForFeatureSet;
     // Pipelines already being created while the scene was prepared (early_pipelines.h); taken
     // when they were made for what this render needs, else the render creates its own.

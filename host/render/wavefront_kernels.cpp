@@ -15,9 +15,7 @@
 #include "lib/wavefront.h"
 #include "render/early_pipelines.h"
 #include "render/scene_arrays.h"
-#include "vkpt_core_kernels.h"
 #include "vkpt_diffuse_kernels.h"
-#include "vkpt_instanced_core_kernels.h"
 #include "vkpt_instanced_diffuse_kernels.h"
 #include "vkpt_instanced_kernels.h"
 #include "vkpt_kernels.h"
@@ -116,14 +114,6 @@ bool needsLayeredBsdf(const SceneFeatures& features) {
            on[FEATURE_SHEEN];
 }
 
-// The material extensions that only the full build of shade_hits carries (the core build has
-// them as constants, pruned: shaders/CMakeLists.txt).
-bool needsMaterialExtensions(const SceneFeatures& features) {
-    const std::array<bool, FEATURE_COUNT> on = features.kernelFeatures();
-    return on[FEATURE_SPECULAR_TEXTURES] || on[FEATURE_ANISOTROPY] || on[FEATURE_IRIDESCENCE] ||
-           on[FEATURE_DIFFUSE_TRANSMISSION] || on[FEATURE_DISPERSION];
-}
-
 // The kernel's build in one embedded library, if that library has one.
 template <typename Library>
 std::optional<std::span<const std::uint32_t>> findIn(const Library& kernels,
@@ -136,8 +126,7 @@ std::optional<std::span<const std::uint32_t>> findIn(const Library& kernels,
 } // namespace
 
 // A two-level scene takes the builds with the instancing code where instancing changes the
-// kernel; a Lambertian scene the diffuse build of shade_hits, a GGX scene without the newer
-// material extensions the core build, each for its layout.
+// kernel; a Lambertian scene the diffuse build of shade_hits, for its layout.
 std::span<const std::uint32_t> kernelSpirv(WavefrontKernel kernel, const SceneFeatures& features,
                                            KernelBuilds builds) {
     const std::string_view name = kernelName(kernel);
@@ -146,12 +135,6 @@ std::span<const std::uint32_t> kernelSpirv(WavefrontKernel kernel, const SceneFe
                                  ? findIn(instanced_diffuse_kernels::embeddedKernels(), name)
                                  : findIn(diffuse_kernels::embeddedKernels(), name);
         if (diffuse) return *diffuse;
-    }
-    if (builds == KernelBuilds::ForFeatureSet && !needsMaterialExtensions(features)) {
-        const auto core = features.instances
-                              ? findIn(instanced_core_kernels::embeddedKernels(), name)
-                              : findIn(core_kernels::embeddedKernels(), name);
-        if (core) return *core;
     }
     if (features.instances)
         if (const auto instanced = findIn(instanced_kernels::embeddedKernels(), name))
@@ -167,6 +150,7 @@ KernelDesc wavefrontKernelDesc(WavefrontKernel kernel, const SceneFeatures& feat
     desc.spirv = kernelSpirv(kernel, features, builds);
     desc.bindings = info(kernel).bindings;
     desc.pushConstantSize = sizeof(gpu::PassParams);
+    desc.foldConstantsOnHost = builds == KernelBuilds::ForFeatureSet;
     if (isSpecialised(kernel)) desc.specializationConstants = featureConstants(features);
     // A constant the kernel does not declare is ignored by the driver (Vulkan spec,
     // VkSpecializationMapEntry), so every kernel gets the same render constants.

@@ -65,7 +65,9 @@ SpecializationConstant aovConstant(bool aovs);
 
 // Which of a kernel's builds a pipeline takes: one made for the scene's feature set where there
 // is one (shade_hits without the layered BSDF for Lambertian scenes; shaders/CMakeLists.txt),
-// or the build with every feature's code, specialised like the other (for comparison).
+// its constants folded into the module on the host (gpu/spirv_specialise.h); or, for
+// comparison, the build with every feature's code as glslang wrote it, specialised by the
+// driver: what the folded forms must render bit for bit.
 enum class KernelBuilds { ForFeatureSet, Full };
 
 // The SPIR-V the kernel's pipeline is made from: the build for the scene's layout (one or two

@@ -6,20 +6,18 @@
 #       SOURCES <file.comp>...         kernel name = file name without .comp (snake_case)
 #       [INCLUDE_DIRS <dir>...]        searched after the including file's folder and shaders/
 #       [DEFINES <NAME[=VALUE]>...]    -D options for every kernel of the library
-#       [OPTIMIZE]                     run spirv-opt -O over each kernel's SPIR-V
-#       [PRUNE])                       only fold constant branches, drop dead functions
+#       [OPTIMIZE])                    run spirv-opt -O over each kernel's SPIR-V
 #
 # Produces the static library <target> and its header "<target>.h", which declares
 # <namespace>::embeddedKernels() and <namespace>::findKernel(name). Every kernel is compiled with
 # glslangValidator -V --target-env vulkan1.2 (plus -g in Debug); a GLSL error fails the build.
 # glslang writes a depfile listing every #include, so editing shared/host_device.h recompiles
 # exactly the kernels that include it. Specialisation constants need nothing here: kernels
-# declare layout(constant_id = N) and the host supplies values when it creates the pipeline.
+# declare layout(constant_id = N) and the host folds their values into the module when it
+# creates the pipeline (host/gpu/spirv_specialise.h).
 # OPTIMIZE is for builds whose DEFINES turn features into constants: glslang leaves the code
 # those constants cut off in the module, and spirv-opt's inlining and dead-branch elimination
-# remove it, so that a driver never translates it (docs/gpu.md, "Pipelines"). PRUNE does only
-# the folding and removal, without -O's inlining, which leaves the rest of the module as glslang
-# wrote it (and as large as the full build's, not -O's twice as large).
+# remove it, so that a driver never translates it (docs/gpu.md, "Pipelines").
 
 find_program(VKPT_GLSLANG_VALIDATOR glslangValidator REQUIRED
              DOC "glslangValidator from glslang-tools, compiles GLSL kernels to SPIR-V")
@@ -45,16 +43,8 @@ function(_vkpt_kernel_symbol name out_var)
 endfunction()
 
 # One custom command per kernel: .comp → .spv (with depfile) → .spv.cpp (the word array).
-# Constant conditions (a build's `const bool` features, through glslang's short-circuit phis)
-# folded, then the branches and the functions only they called removed; twice, for conditions
-# that fold only once the first branches are gone. No --simplify-instructions: it rewrote float
-# arithmetic enough that normal_map.gltf's image left the full build's on 4 pixels.
-set(VKPT_SPIRV_PRUNE_PASSES
-    --eliminate-dead-branches --merge-blocks --ccp --eliminate-dead-branches --merge-blocks --ccp
-    --eliminate-dead-branches --eliminate-dead-functions CACHE INTERNAL "")
-
-function(_vkpt_compile_kernel source out_dir namespace glslang_flags optimize prune out_cpp
-         out_name out_symbol)
+function(_vkpt_compile_kernel source out_dir namespace glslang_flags optimize out_cpp out_name
+         out_symbol)
     cmake_path(ABSOLUTE_PATH source BASE_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}
                OUTPUT_VARIABLE source)
     cmake_path(GET source STEM name)
@@ -69,8 +59,6 @@ function(_vkpt_compile_kernel source out_dir namespace glslang_flags optimize pr
     set(optimize_command)
     if(optimize)
         set(optimize_command COMMAND ${VKPT_SPIRV_OPT} -O ${spv} -o ${spv})
-    elseif(prune)
-        set(optimize_command COMMAND ${VKPT_SPIRV_OPT} ${VKPT_SPIRV_PRUNE_PASSES} ${spv} -o ${spv})
     endif()
     add_custom_command(
         OUTPUT ${spv}
@@ -96,7 +84,7 @@ function(_vkpt_compile_kernel source out_dir namespace glslang_flags optimize pr
 endfunction()
 
 function(vkpt_add_kernels target)
-    cmake_parse_arguments(ARG "OPTIMIZE;PRUNE" "NAMESPACE" "SOURCES;INCLUDE_DIRS;DEFINES" ${ARGN})
+    cmake_parse_arguments(ARG "OPTIMIZE" "NAMESPACE" "SOURCES;INCLUDE_DIRS;DEFINES" ${ARGN})
     if(NOT ARG_NAMESPACE OR NOT ARG_SOURCES)
         message(FATAL_ERROR "vkpt_add_kernels(${target}): NAMESPACE and SOURCES are required")
     endif()
@@ -114,8 +102,8 @@ function(vkpt_add_kernels target)
     set(names)
     set(symbols)
     foreach(source IN LISTS ARG_SOURCES)
-        _vkpt_compile_kernel(${source} ${out_dir} ${ARG_NAMESPACE} "${flags}" ${ARG_OPTIMIZE}
-                             ${ARG_PRUNE} cpp name symbol)
+        _vkpt_compile_kernel(${source} ${out_dir} ${ARG_NAMESPACE} "${flags}" ${ARG_OPTIMIZE} cpp
+                             name symbol)
         if(name IN_LIST names)
             message(FATAL_ERROR "vkpt_add_kernels(${target}): two kernels named '${name}'")
         endif()

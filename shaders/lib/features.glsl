@@ -1,8 +1,8 @@
 // features.glsl — the scene features a kernel is specialised for (FEATURE_* of
 // shared/host_device.h), as boolean specialisation constants. The host sets them from the
-// scene's SceneFeatures when it creates the pipelines (host/render/wavefront_kernels.cpp), so
-// code guarded by a feature the scene lacks is folded away by the driver's compiler and its
-// buffers are never read. The defaults (everything on) are the general kernels.
+// scene's SceneFeatures when it creates the pipelines (host/render/wavefront_kernels.cpp) and
+// folds them into the module (host/gpu/spirv_specialise.h), so code guarded by a feature the
+// scene lacks never reaches the driver and its buffers are never read. The defaults (everything on) are the general kernels.
 #ifndef VKPT_FEATURES_GLSL
 #define VKPT_FEATURES_GLSL
 
@@ -10,9 +10,6 @@
 
 #ifndef VKPT_DIFFUSE_ONLY
 #define VKPT_DIFFUSE_ONLY 0
-#endif
-#ifndef VKPT_CORE_MATERIALS
-#define VKPT_CORE_MATERIALS 0
 #endif
 
 #if VKPT_DIFFUSE_ONLY
@@ -37,16 +34,6 @@ layout(constant_id = FEATURE_TRANSMISSION) const bool featureTransmission = true
 layout(constant_id = FEATURE_CLEARCOAT) const bool featureClearcoat = true;
 // Some material has a KHR_materials_sheen layer.
 layout(constant_id = FEATURE_SHEEN) const bool featureSheen = true;
-#if VKPT_CORE_MATERIALS
-// The build for scenes without the material extensions below (shaders/CMakeLists.txt): they are
-// constants of the build, and the dead branches and functions they leave are pruned from the
-// module, so that a driver never translates them (docs/gpu.md, "Pipelines").
-const bool featureSpecularTextures = false;
-const bool featureAnisotropy = false;
-const bool featureIridescence = false;
-const bool featureDiffuseTransmission = false;
-const bool featureDispersion = false;
-#else
 // Some GGX material has a KHR_materials_specular texture.
 layout(constant_id = FEATURE_SPECULAR_TEXTURES) const bool featureSpecularTextures = true;
 // Some GGX material has KHR_materials_anisotropy: shading reads triangleTangents for its direction.
@@ -59,7 +46,6 @@ layout(constant_id = FEATURE_DIFFUSE_TRANSMISSION) const bool featureDiffuseTran
 // Some glass disperses (KHR_materials_dispersion): a path that meets it carries a wavelength in
 // PathState (shared/dispersion.h).
 layout(constant_id = FEATURE_DISPERSION) const bool featureDispersion = true;
-#endif
 #endif
 // Base colour, metallic-roughness or emissive textures, and the TEXCOORD_0 they are read at.
 layout(constant_id = FEATURE_TEXTURES) const bool featureTextures = true;

@@ -59,7 +59,7 @@ TEST(SpirvSpecialise, AFeatureSwitchedOffTakesItsCodeWithIt) {
     const std::size_t all = specialiseSpirv(shadeHits(), everyFeature(true), "shade_hits").size();
     // What the feature constants guard directly goes: the material extensions, sheen, clearcoat,
     // the environment map, ... (88,134 against 74,394 words when this was written). Code that
-    // runs on a material's own flags stays, which is why the diffuse and core builds exist.
+    // runs on a material's own flags stays, which is why the diffuse build exists.
     EXPECT_LT(none, all * 9 / 10) << none << " words with no feature, " << all << " with all";
     EXPECT_LE(all, shadeHits().size());
 }
