@@ -16,7 +16,7 @@
 #include "lib/wavefront.h"
 #include "wavefront_test_support.h"
 
-namespace vkpt::test {
+namespace vkpt::test::specialised_vs_general_test {
 namespace {
 
 using feature_scenes::featureScenes;
@@ -282,4 +282,4 @@ TEST_F(SceneUpload, KernelsWithoutAFeatureTheSceneUsesAreRefused) {
 }
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::specialised_vs_general_test
