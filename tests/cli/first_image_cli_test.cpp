@@ -22,7 +22,7 @@
 #include "shared/sampling.h"
 #include "state/state_file.h"
 
-namespace vkpt::test {
+namespace vkpt::test::first_image_cli_test {
 namespace {
 
 const std::string kSpheres = VKPT_SCENES_DIR "/test/metal-rough-spheres.gltf";
@@ -269,4 +269,4 @@ INSTANTIATE_TEST_SUITE_P(Programs, FirstImage, ::testing::Values(VKPT, VKPT_REF)
 INSTANTIATE_TEST_SUITE_P(Programs, Preview, ::testing::Values(VKPT, VKPT_REF), programName);
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::first_image_cli_test

@@ -7,7 +7,7 @@
 
 #include "extremes_support.h"
 
-namespace vkpt {
+namespace vkpt::adaptive_edges_test {
 namespace {
 
 // A lit floor in the lower half of the view, nothing (black) in the upper half.
@@ -145,4 +145,4 @@ TEST_F(AdaptiveEdges, MinimumOfOneBatchLetsAZeroBatchStopThePixel) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::adaptive_edges_test

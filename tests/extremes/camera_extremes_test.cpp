@@ -8,7 +8,7 @@
 
 #include "extremes_support.h"
 
-namespace vkpt {
+namespace vkpt::camera_extremes_test {
 namespace {
 
 Scene cornellWithCamera(const SceneCamera& camera) {
@@ -142,4 +142,4 @@ TEST_F(CameraExtremes, SceneWithoutLightsIsBlack) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::camera_extremes_test

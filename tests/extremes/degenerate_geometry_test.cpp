@@ -15,7 +15,7 @@
 #include "extremes_support.h"
 #include "scene/gltf_loader.h"
 
-namespace vkpt {
+namespace vkpt::degenerate_geometry_test {
 namespace {
 
 const float kNaN = std::numeric_limits<float>::quiet_NaN();
@@ -244,4 +244,4 @@ TEST_F(DegenerateRendering, DuplicatedTrianglesChangeNothing) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::degenerate_geometry_test

@@ -14,7 +14,7 @@
 #include "shared/rng.h"
 #include "shared/sampling.h"
 
-namespace vkpt {
+namespace vkpt::grazing_and_slab_test {
 namespace {
 
 // ---------------------------------------------------------------------------------------------
@@ -212,4 +212,4 @@ TEST_F(ThinSlab, SeenFromAboveIsLit) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::grazing_and_slab_test

@@ -7,7 +7,7 @@
 #include "extremes_support.h"
 #include "shared/sampling.h"
 
-namespace vkpt {
+namespace vkpt::long_render_test {
 namespace {
 
 // The camera inside a closed box that emits `emission` from both sides of every face and
@@ -77,4 +77,4 @@ TEST_F(LongRender, WelfordVarianceOfABrightLowNoisePixelIsAccurate) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::long_render_test

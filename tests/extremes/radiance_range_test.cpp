@@ -12,7 +12,7 @@
 #include "shared/sample_guard.h"
 #include "shared/sampling.h"
 
-namespace vkpt {
+namespace vkpt::radiance_range_test {
 namespace {
 
 RenderSettings settingsWithSeed(std::uint32_t seed, std::uint32_t spp = 64) {
@@ -217,4 +217,4 @@ TEST_F(Clamp, IsOffByDefault) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::radiance_range_test

@@ -15,7 +15,7 @@
 #include "extremes_support.h"
 #include "scene/gltf_loader.h"
 
-namespace vkpt {
+namespace vkpt::scale_and_distance_test {
 namespace {
 
 RenderSettings settingsWithSeed(std::uint32_t seed) {
@@ -264,4 +264,4 @@ TEST_F(BreakdownSweep, DISABLED_PrintsWhereEachPlacementStopsMatching) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::scale_and_distance_test

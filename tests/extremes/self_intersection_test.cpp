@@ -15,7 +15,7 @@
 #include "spawn_io.h"
 #include "vkpt_extremes_kernels.h"
 
-namespace vkpt {
+namespace vkpt::self_intersection_test {
 namespace {
 
 float logUniform(float u, float lo, float hi) {
@@ -143,4 +143,4 @@ TEST_F(SelfIntersectionOnTheDevice, SpawnedRaysNeverReHitTheirOwnTriangle) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::self_intersection_test

@@ -13,7 +13,7 @@
 #include "extremes_support.h"
 #include "shared/rng.h"
 
-namespace vkpt {
+namespace vkpt::watertight_test {
 namespace {
 
 struct ClosedMesh {
@@ -167,4 +167,4 @@ TEST_F(WatertightOnTheDevice, NoMeshLeaksAtEdgesAndVertices) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::watertight_test

@@ -16,7 +16,7 @@
 #include "image/image_io.h"
 #include "state/state_file.h"
 
-namespace vkpt::test {
+namespace vkpt::test::denoise_cli_test {
 namespace {
 
 const std::string kScene = VKPT_SCENES_DIR "/cornell-box.gltf";
@@ -129,4 +129,4 @@ TEST_F(DenoiseCli, RefusesWhatItCannotDenoise) {
 }
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::denoise_cli_test

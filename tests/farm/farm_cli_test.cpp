@@ -16,7 +16,7 @@
 #include "../support/test_directory.h"
 #include "state/state_file.h"
 
-namespace vkpt::test {
+namespace vkpt::test::farm_cli_test {
 namespace {
 
 const std::string kScene = VKPT_SCENES_DIR "/cornell-box.gltf";
@@ -270,4 +270,4 @@ TEST_F(FarmCli, OiiotoolReadsTheImageAndItsLayers) {
 }
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::farm_cli_test

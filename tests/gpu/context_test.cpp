@@ -10,7 +10,7 @@
 #include <algorithm>
 #include <cstdio>
 
-namespace vkpt::test {
+namespace vkpt::test::context_test {
 namespace {
 
 bool anyDeviceNamed(const std::vector<DeviceInfo>& devices, const std::string& substring) {
@@ -208,4 +208,4 @@ TEST_F(Context, ReportsLimits) {
 }
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::context_test

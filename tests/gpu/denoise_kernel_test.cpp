@@ -10,7 +10,7 @@
 #include <cmath>
 #include <random>
 
-namespace vkpt::test {
+namespace vkpt::test::denoise_kernel_test {
 namespace {
 
 std::vector<gpu::DenoisePixel> randomPixels(std::uint32_t width, std::uint32_t height) {
@@ -56,4 +56,4 @@ TEST_F(DenoiseKernel, DeviceEqualsCpu) {
 }
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::denoise_kernel_test

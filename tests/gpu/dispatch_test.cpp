@@ -11,7 +11,7 @@
 #include <cstdio>
 #include <numeric>
 
-namespace vkpt::test {
+namespace vkpt::test::dispatch_test {
 namespace {
 
 class Dispatch : public GpuTest {};
@@ -142,4 +142,4 @@ TEST_F(Dispatch, DescriptorSetCanBePointedAtAnotherBuffer) {
 }
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::dispatch_test

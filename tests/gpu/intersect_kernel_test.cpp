@@ -14,7 +14,7 @@
 #include <cstdio>
 #include <random>
 
-namespace vkpt::test {
+namespace vkpt::test::intersect_kernel_test {
 namespace {
 
 using gpu::test::IntersectInput;
@@ -245,4 +245,4 @@ TEST_F(IntersectKernel, BoxDecisionsAgreeOutsideFaceBand) {
 }
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::intersect_kernel_test

@@ -8,7 +8,7 @@
 
 #include <cstring>
 
-namespace vkpt::test {
+namespace vkpt::test::layout_round_trip_test {
 namespace {
 
 using namespace vkpt::gpu;
@@ -285,4 +285,4 @@ TEST_F(LayoutRoundTrip, DeviceWritesEveryFieldAtItsCppOffset) {
 }
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::layout_round_trip_test

@@ -7,7 +7,7 @@
 
 #include <cstdio>
 
-namespace vkpt::test {
+namespace vkpt::test::loop_limit_test {
 namespace {
 
 using gpu::test::LoopCounts;
@@ -111,4 +111,4 @@ TEST_F(LoopLimit, LoopsWithinTheBudgetRunCompletely) {
 }
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::loop_limit_test

@@ -11,7 +11,7 @@
 #include "gpu_test_support.h"
 #include "vkpt_test_kernels.h"
 
-namespace vkpt::test {
+namespace vkpt::test::pipeline_cache_test {
 namespace {
 
 class PipelineCacheFile : public TestDirectory {
@@ -133,4 +133,4 @@ TEST_F(PipelineCacheFile, ABadFileIsIgnoredWithOneLine) {
 }
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::pipeline_cache_test

@@ -8,7 +8,7 @@
 #include <bit>
 #include <random>
 
-namespace vkpt::test {
+namespace vkpt::test::rng_kernel_test {
 namespace {
 
 using gpu::test::RngInput;
@@ -96,4 +96,4 @@ TEST_F(RngKernel, BitsAndFloatsMatchCpuExactly) {
 }
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::rng_kernel_test

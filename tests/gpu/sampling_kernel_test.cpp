@@ -15,7 +15,7 @@
 #include <cstdio>
 #include <random>
 
-namespace vkpt::test {
+namespace vkpt::test::sampling_kernel_test {
 namespace {
 
 using gpu::test::SamplingInput;
@@ -125,4 +125,4 @@ TEST_F(SamplingKernel, WarpsMatchCpuWithinTolerance) {
 }
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::sampling_kernel_test

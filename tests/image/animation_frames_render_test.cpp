@@ -15,7 +15,7 @@
 #include "render/kept_scene.h"
 #include "wavefront_test_support.h"
 
-namespace vkpt::test {
+namespace vkpt::test::animation_frames_render_test {
 namespace {
 
 // An animation's frame as vkpt renders it: what moves kept apart, under a constant white sky (the
@@ -135,4 +135,4 @@ TEST_F(AnimationFrames, APosedSkinnedSceneMatchesTheReference) {
 }
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::animation_frames_render_test

@@ -10,7 +10,7 @@
 
 #include "wavefront_test_support.h"
 
-namespace vkpt::test {
+namespace vkpt::test::aov_render_test {
 namespace {
 
 // A hit's barycentrics and t differ between the two walks by float rounding (traversal_kernel_test
@@ -173,4 +173,4 @@ TEST_F(Aovs, NoneUnlessAsked) {
 }
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::aov_render_test

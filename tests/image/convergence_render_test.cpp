@@ -12,7 +12,7 @@
 #include "image/error_metrics.h"
 #include "wavefront_test_support.h"
 
-namespace vkpt::test {
+namespace vkpt::test::convergence_render_test {
 namespace {
 
 class ConvergenceRender : public GpuTest {
@@ -139,4 +139,4 @@ TEST_F(ConvergenceRender, AReferenceGivesTheErrorAfterEveryPassAtLogSpacedCounts
 }
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::convergence_render_test

@@ -10,7 +10,7 @@
 #include "prepare/scene_lighting.h"
 #include "wavefront_test_support.h"
 
-namespace vkpt::test {
+namespace vkpt::test::default_lighting_render_test {
 namespace {
 
 // The scene as vkpt and vkpt-ref load it without --env, --env-color or --default-light off.
@@ -73,4 +73,4 @@ TEST_F(DefaultLighting, APublishedAssetMatchesTheReference) {
 }
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::default_lighting_render_test

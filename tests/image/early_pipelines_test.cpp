@@ -9,7 +9,7 @@
 #include "render/early_pipelines.h"
 #include "wavefront_test_support.h"
 
-namespace vkpt::test {
+namespace vkpt::test::early_pipelines_test {
 namespace {
 
 class EarlyPipelinesTest : public GpuTest {};
@@ -91,4 +91,4 @@ TEST_F(KernelMemoTest, RendersOnOneDeviceCreateEachPipelineOnce) {
 }
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::early_pipelines_test

@@ -20,7 +20,7 @@
 #include "state/state_merge.h"
 #include "wavefront_test_support.h"
 
-namespace vkpt::test {
+namespace vkpt::test::farm_render_test {
 namespace {
 
 constexpr double kReferenceRelative = 1e-12;
@@ -218,4 +218,4 @@ TEST_F(RenderParts, ResumedRendersEqualTheUninterruptedOne) {
 }
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::farm_render_test

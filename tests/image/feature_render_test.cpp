@@ -8,7 +8,7 @@
 #include "feature_scenes.h"
 #include "wavefront_test_support.h"
 
-namespace vkpt::test {
+namespace vkpt::test::feature_render_test {
 namespace {
 
 using feature_scenes::featureScenes;
@@ -99,4 +99,4 @@ TEST_P(FeatureScenes, EveryIntegratorMatchesTheReference) {
 INSTANTIATE_TEST_SUITE_P(Features, FeatureScenes, ::testing::ValuesIn(featureScenes()), nameOf);
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::feature_render_test

@@ -28,7 +28,7 @@
 #include "instanced_scene.h"
 #include "wavefront_test_support.h"
 
-namespace vkpt::test {
+namespace vkpt::test::instanced_render_test {
 namespace {
 
 // A quarter turn about y, scaled by (2, −0.5, 1) (a mirror) and moved by dyadic steps, written
@@ -237,4 +237,4 @@ TEST_F(HundredMillionTriangles, RenderInstancedByDefault) {
 }
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::instanced_render_test

@@ -10,7 +10,7 @@
 #include "../support/scratch_directory.h"
 #include "image/image_io.h"
 
-namespace vkpt {
+namespace vkpt::interrupt_test {
 namespace {
 
 using test::Child;
@@ -44,4 +44,4 @@ TEST(VkptInterrupt, CtrlCFinishesThePassWritesTheImageAndExits130) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::interrupt_test

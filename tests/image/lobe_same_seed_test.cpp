@@ -10,7 +10,7 @@
 
 #include "wavefront_test_support.h"
 
-namespace vkpt::test {
+namespace vkpt::test::lobe_same_seed_test {
 namespace {
 
 // As render_compare_test.cpp: paths that diverge on a last-bit difference stay rare.
@@ -45,4 +45,4 @@ TEST_F(LobeScenesSameSeed, DispersivePrismMatchesTheReference) {
 }
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::lobe_same_seed_test

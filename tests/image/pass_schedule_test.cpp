@@ -6,7 +6,7 @@
 #include "driver/batch_policy.h"
 #include "render/pass_schedule.h"
 
-namespace vkpt {
+namespace vkpt::pass_schedule_test {
 namespace {
 
 ScheduleInputs uniform(std::uint32_t spp, std::uint32_t done, std::uint32_t active,
@@ -83,4 +83,4 @@ TEST(PassSchedule, ChunksCoverTheActivePixels) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::pass_schedule_test

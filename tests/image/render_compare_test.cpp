@@ -9,7 +9,7 @@
 #include "image/image_compare.h"
 #include "wavefront_test_support.h"
 
-namespace vkpt::test {
+namespace vkpt::test::render_compare_test {
 namespace {
 
 class SameSeed : public GpuTest {
@@ -214,4 +214,4 @@ TEST_F(Determinism, SameSeedGivesTheSameImageBitForBit) {
 }
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::render_compare_test

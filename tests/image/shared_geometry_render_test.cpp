@@ -15,7 +15,7 @@
 #include "feature_scenes.h"
 #include "wavefront_test_support.h"
 
-namespace vkpt::test {
+namespace vkpt::test::shared_geometry_render_test {
 namespace {
 
 // As instanced_render_test.cpp: paths that diverge on a last-bit difference stay rare.
@@ -161,4 +161,4 @@ INSTANTIATE_TEST_SUITE_P(SharedGeometry, SharedGeometryRender,
                          sharedCaseName);
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::shared_geometry_render_test

@@ -17,7 +17,7 @@
 #include "lib/wavefront.h"
 #include "wavefront_test_support.h"
 
-namespace vkpt::test {
+namespace vkpt::test::specialised_vs_general_test {
 namespace {
 
 using feature_scenes::featureScenes;
@@ -294,4 +294,4 @@ TEST_F(SceneUpload, KernelsWithoutAFeatureTheSceneUsesAreRefused) {
 }
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::specialised_vs_general_test

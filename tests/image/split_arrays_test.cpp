@@ -22,7 +22,7 @@
 #include "scene/gltf_loader.h"
 #include "wavefront_test_support.h"
 
-namespace vkpt::test {
+namespace vkpt::test::split_arrays_test {
 namespace {
 
 // Sets VKPT_TEST_BINDING_BYTES for its lifetime.
@@ -177,4 +177,4 @@ TEST(SceneArrayChunks, OneElementPerChunkAtLeast) {
 }
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::split_arrays_test

@@ -24,7 +24,7 @@
 #include "shared/wide_bvh.h"
 #include "wavefront_test_support.h"
 
-namespace vkpt::test {
+namespace vkpt::test::traversal_kernel_test {
 namespace {
 
 using feature_scenes::featureScenes;
@@ -418,4 +418,4 @@ TEST_F(DeviceTraversal, WalksCutShortByALoopLimitAreReported) {
 }
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::traversal_kernel_test

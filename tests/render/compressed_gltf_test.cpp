@@ -19,7 +19,7 @@
 #include "scene/gltf_loader.h"
 #include "scratch_directory.h"
 
-namespace vkpt {
+namespace vkpt::compressed_gltf_test {
 namespace {
 
 using test::GeometryCoding;
@@ -240,4 +240,4 @@ INSTANTIATE_TEST_SUITE_P(Codings, CompressedGltfRender,
                          });
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::compressed_gltf_test

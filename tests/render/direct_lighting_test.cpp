@@ -8,7 +8,7 @@
 #include "../support/render_checks.h"
 #include "image/image_compare.h"
 
-namespace vkpt {
+namespace vkpt::direct_lighting_test {
 namespace {
 
 // A 3 × 3 ceiling light over the floor whose emissive texture is lit on about half of it, in
@@ -60,4 +60,4 @@ TEST(DirectLighting, MoreLightSamplesReduceVariance) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::direct_lighting_test

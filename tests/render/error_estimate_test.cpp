@@ -31,7 +31,7 @@
 #include "image/error_metrics.h"
 #include "shared/sampling.h"
 
-namespace vkpt::test {
+namespace vkpt::test::error_estimate_test {
 namespace {
 
 constexpr std::uint32_t kSize = 24;
@@ -125,4 +125,4 @@ INSTANTIATE_TEST_SUITE_P(Scenes, ErrorEstimateFromHalves,
                          ::testing::Values("cornell-box.gltf", "test/many-lights.gltf"));
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::error_estimate_test

@@ -17,7 +17,7 @@
 #include "shared/adaptive.h"
 #include "shared/sampling.h"
 
-namespace vkpt::test {
+namespace vkpt::test::executor_render_test {
 namespace {
 
 // The inward-facing furnace and the double-sided one (emission from both faces).
@@ -287,4 +287,4 @@ TYPED_TEST(AdaptiveSampling, StoppedPixelsKeepTheirErrorPromise) {
 }
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::executor_render_test

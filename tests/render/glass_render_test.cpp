@@ -13,7 +13,7 @@
 #include "shared/camera.h"
 #include "shared/ray_offset.h"
 
-namespace vkpt::test {
+namespace vkpt::test::glass_render_test {
 namespace {
 
 const glm::vec3 kEnvironment(0.5f, 1.0f, 2.0f);
@@ -101,4 +101,4 @@ TYPED_TEST(Glass, AbsorbingSlabTransmitsTheBeerLambertFraction) {
 }
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::glass_render_test

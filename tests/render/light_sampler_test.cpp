@@ -17,7 +17,7 @@
 #include "../support/reference_render.h"
 #include "image/student_t.h"
 
-namespace vkpt {
+namespace vkpt::light_sampler_test {
 namespace {
 
 constexpr std::uint32_t kSize = 16;
@@ -88,4 +88,4 @@ TEST(LightSampler, LightBvhAndPowerSamplingConvergeToTheSameImageOnManyLights) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::light_sampler_test

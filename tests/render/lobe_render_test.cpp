@@ -13,7 +13,7 @@
 #include "image/image_compare.h"
 #include "shared/sampling.h"
 
-namespace vkpt::test {
+namespace vkpt::test::lobe_render_test {
 namespace {
 
 // vkpt-ref only: the device's images of these scenes equal the reference's at one seed
@@ -135,4 +135,4 @@ TYPED_TEST(LobeRenders, DirectAndPathIntegratorsLightDispersiveGlassAlike) {
 }
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::lobe_render_test

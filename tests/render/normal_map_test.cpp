@@ -15,7 +15,7 @@
 #include "scene/tangents.h"
 #include "shared/sampling.h"
 
-namespace vkpt {
+namespace vkpt::normal_map_test {
 namespace {
 
 // Steep bumps: the tangent-space normal of the height field 0.5·sin(x)·sin(y) with a slope of
@@ -113,4 +113,4 @@ INSTANTIATE_TEST_SUITE_P(DiffuseAndMetal, NormalMappedFurnace, testing::Values(f
                          });
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::normal_map_test

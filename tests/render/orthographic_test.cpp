@@ -9,7 +9,7 @@
 #include "../support/reference_render.h"
 #include "../support/scene_builder.h"
 
-namespace vkpt {
+namespace vkpt::orthographic_test {
 namespace {
 
 // An emitting unit square centred on the axis at depth `z`, facing +Z, seen by an orthographic
@@ -67,4 +67,4 @@ TEST(OrthographicCamera, TheImagesAspectSetsTheHorizontalExtent) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::orthographic_test

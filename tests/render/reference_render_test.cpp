@@ -4,7 +4,7 @@
 
 #include "../support/reference_render.h"
 
-namespace vkpt {
+namespace vkpt::reference_render_test {
 namespace {
 
 TEST(ReferenceRender, SameSeedGivesTheSameImageOnOneAndTwoThreads) {
@@ -24,4 +24,4 @@ TEST(ReferenceRender, SameSeedGivesTheSameImageOnOneAndTwoThreads) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::reference_render_test

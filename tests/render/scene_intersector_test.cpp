@@ -10,7 +10,7 @@
 #include "reference/scene_tracer.h"
 #include "reference/stack_intersector.h"
 
-namespace vkpt {
+namespace vkpt::scene_intersector_test {
 namespace {
 
 // Every primitive tested for every ray (bvh_traverse.h's brute force), with the alpha test.
@@ -146,4 +146,4 @@ TEST(SceneIntersector, SameAnswersGiveTheSameImage) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::scene_intersector_test

@@ -14,7 +14,7 @@
 #include "image/image_compare.h"
 #include "prepare/environment_map.h"
 
-namespace vkpt {
+namespace vkpt::scene_model_test {
 namespace {
 
 // A camera at height h looking straight down at the origin, with a narrow field of view so
@@ -206,4 +206,4 @@ TEST(Unlit, SurfaceShowsItsBaseColourExactly) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::scene_model_test

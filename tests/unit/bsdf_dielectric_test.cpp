@@ -16,7 +16,7 @@
 #include "shared/bsdf.h"
 #include "shared/rng.h"
 
-namespace vkpt {
+namespace vkpt::bsdf_dielectric_test {
 namespace {
 
 using glm::vec2;
@@ -257,4 +257,4 @@ TEST(Dielectric, IorSetsTheOpaqueDielectricsF0) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::bsdf_dielectric_test

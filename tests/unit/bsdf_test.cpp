@@ -16,7 +16,7 @@
 #include "shared/bsdf.h"
 #include "shared/rng.h"
 
-namespace vkpt {
+namespace vkpt::bsdf_test {
 namespace {
 
 using glm::vec2;
@@ -685,4 +685,4 @@ TEST(Bsdf, LobeProbabilityStaysInsideWhenBothLobesContribute) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::bsdf_test

@@ -13,7 +13,7 @@
 #include "bvh/synthetic_scenes.h"
 #include "common/errors.h"
 
-namespace vkpt {
+namespace vkpt::bvh_build_test {
 namespace {
 
 bool contains(const Aabb& outer, const Aabb& inner) {
@@ -394,4 +394,4 @@ TEST(BvhBuild, AnyBinCountGivesAValidTree) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::bvh_build_test

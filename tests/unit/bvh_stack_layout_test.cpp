@@ -12,7 +12,7 @@
 #include "bvh/synthetic_scenes.h"
 #include "common/errors.h"
 
-namespace vkpt {
+namespace vkpt::bvh_stack_layout_test {
 namespace {
 
 struct Built {
@@ -149,4 +149,4 @@ TEST(StackBvhLayout, RefusesLeavesOfMoreThanFifteenPrimitives) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::bvh_stack_layout_test

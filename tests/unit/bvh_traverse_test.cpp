@@ -22,7 +22,7 @@
 #include "scene/gltf_loader.h"
 #include "shared/intersect.h"
 
-namespace vkpt {
+namespace vkpt::bvh_traverse_test {
 namespace {
 
 constexpr int kRaysPerScene = 100000;
@@ -382,4 +382,4 @@ TEST(BvhTraverse, FindsAVertexHitAlongABoxEdge) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::bvh_traverse_test

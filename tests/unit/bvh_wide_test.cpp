@@ -15,7 +15,7 @@
 #include "bvh/synthetic_scenes.h"
 #include "shared/wide_bvh.h"
 
-namespace vkpt {
+namespace vkpt::bvh_wide_test {
 namespace {
 
 using glm::uvec4;
@@ -388,4 +388,4 @@ TEST(WideWalkArithmetic, LeafOffsetsSumTheLowerSlotsCounts) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::bvh_wide_test

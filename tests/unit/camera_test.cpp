@@ -11,7 +11,7 @@
 #include "scene/gltf_loader.h"
 #include "shared/camera.h"
 
-namespace vkpt {
+namespace vkpt::camera_test {
 namespace {
 
 const std::string kLoaderDir = VKPT_SCENES_DIR "/loader/";
@@ -248,4 +248,4 @@ TEST(GltfCameras, LoadsOrthographicCamerasSilently) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::camera_test

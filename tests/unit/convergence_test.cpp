@@ -13,7 +13,7 @@
 #include "common/json_writer.h"
 #include "image/image_io.h"
 
-namespace vkpt {
+namespace vkpt::convergence_test {
 namespace {
 
 // Every pixel: n samples of luminance mean 1 and sample variance `variance`, image value
@@ -176,4 +176,4 @@ TEST(RenderStops, HaveTheNamesTheJsonUses) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::convergence_test

@@ -13,7 +13,7 @@
 
 #include "denoise/cpu_denoiser.h"
 
-namespace vkpt::test {
+namespace vkpt::test::denoise_test {
 namespace {
 
 constexpr std::uint32_t kSide = 48;
@@ -240,4 +240,4 @@ TEST(DenoiseFireflies, NeitherSpreadNorKept) {
 }
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::denoise_test

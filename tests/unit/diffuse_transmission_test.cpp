@@ -15,7 +15,7 @@
 #include "shared/path_rules.h"
 #include "shared/rng.h"
 
-namespace vkpt {
+namespace vkpt::diffuse_transmission_test {
 namespace {
 
 using glm::vec2;
@@ -213,4 +213,4 @@ TEST(DiffuseTransmission, TransmittedSamplesAreLightSampledOnlyThroughThinWalls)
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::diffuse_transmission_test

@@ -11,7 +11,7 @@
 #include "shared/path_rules.h"
 #include "shared/rng.h"
 
-namespace vkpt {
+namespace vkpt::dispersion_test {
 namespace {
 
 using glm::vec3;
@@ -143,4 +143,4 @@ TEST(Dispersion, OnlyDispersiveGlassThatBoundsAVolumeBindsAWavelength) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::dispersion_test

@@ -16,7 +16,7 @@
 #include "shared/rng.h"
 #include "shared/sampling.h"
 
-namespace vkpt {
+namespace vkpt::emitters_test {
 namespace {
 
 void addQuad(Scene& scene, glm::vec3 corner, glm::vec3 edgeA, glm::vec3 edgeB,
@@ -224,4 +224,4 @@ TEST(Emitters, SampledPdfEqualsEvaluatedPdf) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::emitters_test

@@ -28,7 +28,7 @@
 #include "shared/rng.h"
 #include "shared/sampling.h"
 
-namespace vkpt {
+namespace vkpt::environment_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -599,4 +599,4 @@ TEST_F(EnvironmentFile, UnsupportedFormatAndBadScaleAreRejected) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::environment_test

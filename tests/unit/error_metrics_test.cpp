@@ -11,7 +11,7 @@
 
 #include "common/errors.h"
 
-namespace vkpt {
+namespace vkpt::error_metrics_test {
 namespace {
 
 Image filled(std::uint32_t w, std::uint32_t h, glm::vec3 value) {
@@ -144,4 +144,4 @@ TEST(ErrorMetrics, TheVarianceScaleIsClamped) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::error_metrics_test

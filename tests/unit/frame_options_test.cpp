@@ -8,7 +8,7 @@
 #include "app/frame_options.h"
 #include "common/errors.h"
 
-namespace vkpt {
+namespace vkpt::frame_options_test {
 namespace {
 
 TEST(FrameOptions, NumbersTheLastRunOfHashesZeroPadded) {
@@ -73,4 +73,4 @@ TEST(FrameOptions, RejectsWhatCannotNumberOrTimeTheFrames) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::frame_options_test

@@ -23,7 +23,7 @@
 #include "scene/gltf_loader.h"
 #include "scene/gltf_morph.h"
 
-namespace vkpt {
+namespace vkpt::frame_reuse_test {
 namespace {
 
 // A rippled floor of 72 triangles and a box of 12 that an animation turns and lifts over 4 s
@@ -406,4 +406,4 @@ TEST(FrameMorphWeights, HoldACubicSplinesOvershoot) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::frame_reuse_test

@@ -23,7 +23,7 @@
 #include "scene/gltf_document.h"
 #include "scene/gltf_loader.h"
 
-namespace vkpt {
+namespace vkpt::gltf_animation_test {
 namespace {
 
 const std::string kSkinScene = VKPT_SCENES_DIR "/loader/skin.gltf";
@@ -638,4 +638,4 @@ INSTANTIATE_TEST_SUITE_P(Samples, GltfAnimatedSampleLoads,
                          });
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::gltf_animation_test

@@ -19,7 +19,7 @@
 #include "scene/gltf_textures.h"
 #include "scene/scene_features.h"
 
-namespace vkpt {
+namespace vkpt::gltf_extensions_test {
 namespace {
 
 const std::string kLoaderDir = VKPT_SCENES_DIR "/loader/";
@@ -409,4 +409,4 @@ TEST(GltfSpheres, RecentringMovesTrianglesSpheresAndLightsAlike) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::gltf_extensions_test

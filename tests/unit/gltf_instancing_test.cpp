@@ -9,7 +9,7 @@
 #include "scene/gltf_instancing_plan.h"
 #include "scene/gltf_loader.h"
 
-namespace vkpt {
+namespace vkpt::gltf_instancing_test {
 namespace {
 
 const std::string kInstancingScene = VKPT_SCENES_DIR "/loader/instancing.gltf";
@@ -228,4 +228,4 @@ TEST(GltfGeometryGrouping, InstancesCarryTheirMaterial) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::gltf_instancing_test

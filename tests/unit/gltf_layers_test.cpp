@@ -14,7 +14,7 @@
 #include "scene/gltf_loader.h"
 #include "scene/scene_features.h"
 
-namespace vkpt {
+namespace vkpt::gltf_layers_test {
 namespace {
 
 const std::string kFeatureDir = VKPT_SCENES_DIR "/test/features/";
@@ -148,4 +148,4 @@ TEST(GltfLayers, ToyCarLoadsWithClearcoatAndSheen) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::gltf_layers_test

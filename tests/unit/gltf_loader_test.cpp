@@ -12,7 +12,7 @@
 #include "common/errors.h"
 #include "scene/gltf_loader.h"
 
-namespace vkpt {
+namespace vkpt::gltf_loader_test {
 namespace {
 
 const std::string kLoaderDir = VKPT_SCENES_DIR "/loader/";
@@ -559,4 +559,4 @@ TEST(GltfLoaderEmissiveStrength, ScalesEmissionByOneToSixteen) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::gltf_loader_test

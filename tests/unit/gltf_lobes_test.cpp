@@ -11,7 +11,7 @@
 #include "prepare/prepared_scene.h"
 #include "scene/scene_features.h"
 
-namespace vkpt {
+namespace vkpt::gltf_lobes_test {
 namespace {
 
 TEST(GltfLobes, ReadsDiffuseTransmissionFactorColourAndTextures) {
@@ -69,4 +69,4 @@ TEST(GltfLobes, SceneWithoutTheLobesHasNoLobeRecords) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::gltf_lobes_test

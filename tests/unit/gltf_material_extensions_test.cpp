@@ -15,7 +15,7 @@
 #include "scene/gltf_loader.h"
 #include "scene/scene_features.h"
 
-namespace vkpt {
+namespace vkpt::gltf_material_extensions_test {
 namespace {
 
 const std::string kLoaderDir = VKPT_SCENES_DIR "/loader/";
@@ -225,4 +225,4 @@ TEST(GltfAnisotropy, KhronosSamplesLoad) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::gltf_material_extensions_test

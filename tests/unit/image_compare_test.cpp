@@ -14,7 +14,7 @@
 
 #include "common/errors.h"
 
-namespace vkpt {
+namespace vkpt::image_compare_test {
 namespace {
 
 // Standard normal numbers by Box–Muller from mt19937_64, whose output sequence the C++ standard
@@ -260,4 +260,4 @@ TEST(NormalUpperQuantile, HandlesTheEndsOfItsDomain) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::image_compare_test

@@ -23,7 +23,7 @@
 
 #include "common/errors.h"
 
-namespace vkpt {
+namespace vkpt::image_io_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -393,4 +393,4 @@ TEST_F(ImageIo, HeatMapOfAnUnsampledImageIsBlackAndMustBeAPng) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::image_io_test

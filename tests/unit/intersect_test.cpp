@@ -7,7 +7,7 @@
 
 #include "shared/intersect.h"
 
-namespace vkpt {
+namespace vkpt::intersect_test {
 namespace {
 
 using glm::vec3;
@@ -242,4 +242,4 @@ TEST(BoxIntersection, RespectsTheDistanceRange) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::intersect_test

@@ -13,7 +13,7 @@
 
 #include "common/errors.h"
 
-namespace vkpt {
+namespace vkpt::json_writer_test {
 namespace {
 
 std::string compact(void (*write)(JsonWriter&)) {
@@ -150,4 +150,4 @@ TEST(JsonWriter, CompleteOnlyAfterTheTopLevelValueCloses) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::json_writer_test

@@ -13,7 +13,7 @@
 #include "render/scene_arrays.h"
 #include "render/wavefront_kernels.h"
 
-namespace vkpt {
+namespace vkpt::kernel_bindings_test {
 namespace {
 
 std::string nameOf(WavefrontKernel kernel) {
@@ -82,4 +82,4 @@ TEST(KernelBindings, EverySceneArrayIsReadBySomeKernel) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::kernel_bindings_test

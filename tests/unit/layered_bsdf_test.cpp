@@ -20,7 +20,7 @@
 #include "shared/albedo_lookup.h"
 #include "shared/bsdf.h"
 
-namespace vkpt {
+namespace vkpt::layered_bsdf_test {
 namespace {
 
 using glm::vec3;
@@ -252,4 +252,4 @@ TEST(LayeredFurnace, WhiteDielectricWithClearcoatKeepsItsEnergy) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::layered_bsdf_test

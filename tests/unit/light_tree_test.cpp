@@ -14,7 +14,7 @@
 #include "prepare/prepared_scene_view.h"
 #include "shared/lights.h"
 
-namespace vkpt {
+namespace vkpt::light_tree_test {
 namespace {
 
 // Many small emitting triangles of random size, orientation and brightness in a 20 m cube
@@ -210,4 +210,4 @@ TEST(LightTree, BlackTexturedEmittersHaveNoPowerAndAreNeverChosen) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::light_tree_test

@@ -9,7 +9,7 @@
 #include "app/live_preview.h"
 #include "image/image_io.h"
 
-namespace vkpt {
+namespace vkpt::live_preview_test {
 namespace {
 
 PeriodicWrite counting(double seconds, int& count) {
@@ -83,4 +83,4 @@ TEST(PreviewWriter, ShowsTheDenoisedImageUnderDenoise) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::live_preview_test

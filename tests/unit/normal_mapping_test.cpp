@@ -9,7 +9,7 @@
 #include "shared/rng.h"
 #include "shared/sampling.h"
 
-namespace vkpt::gpu {
+namespace vkpt::gpu::normal_mapping_test {
 namespace {
 
 void expectNear(const vec3& actual, const vec3& expected, float tolerance = 1e-6f) {
@@ -85,4 +85,4 @@ TEST(NormalMapBend, KeepsTheViewAndItsMirrorAboveTheSurface) {
 }
 
 } // namespace
-} // namespace vkpt::gpu
+} // namespace vkpt::gpu::normal_mapping_test

@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-namespace vkpt {
+namespace vkpt::progress_test {
 namespace {
 
 std::vector<std::string> linesOf(const std::string& text) {
@@ -161,4 +161,4 @@ TEST(FormatDuration, ChoosesUnitsByMagnitude) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::progress_test

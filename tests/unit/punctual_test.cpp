@@ -6,7 +6,7 @@
 
 #include "shared/punctual.h"
 
-namespace vkpt {
+namespace vkpt::punctual_test {
 namespace {
 
 using glm::vec3;
@@ -121,4 +121,4 @@ TEST(PunctualLight, ReceiverAtTheLightOrOtherKindsAreInvalid) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::punctual_test

@@ -21,7 +21,7 @@
 #include "state/state_file.h"
 #include "state/state_merge.h"
 
-namespace vkpt {
+namespace vkpt::render_state_test {
 namespace {
 
 TEST(TaskShares, AreDisjointAndCoverEverySample) {
@@ -380,4 +380,4 @@ TEST(StateMerge, TheOrderOfThePartsDoesNotMatter) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::render_state_test

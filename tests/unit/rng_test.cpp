@@ -7,7 +7,7 @@
 #include "../support/chi_square.h"
 #include "shared/rng.h"
 
-namespace vkpt {
+namespace vkpt::rng_test {
 namespace {
 
 TEST(Rng, SameKeyGivesSameNumbers) {
@@ -77,4 +77,4 @@ TEST(Rng, NeighbouringPixelsAreUncorrelated) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::rng_test

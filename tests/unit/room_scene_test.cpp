@@ -8,7 +8,7 @@
 #include "bvh/synthetic_scenes.h"
 #include "scene/gltf_loader.h"
 
-namespace vkpt {
+namespace vkpt::room_scene_test {
 namespace {
 
 constexpr std::size_t kRoomTriangles = 14; // six walls and the light, two triangles each
@@ -84,4 +84,4 @@ TEST_F(RoomSceneFile, LoadsAsTheSceneInMemory) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::room_scene_test

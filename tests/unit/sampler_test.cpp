@@ -10,7 +10,7 @@
 #include "../support/nets.h"
 #include "shared/sampler.h"
 
-namespace vkpt {
+namespace vkpt::sampler_test {
 namespace {
 
 constexpr std::uint32_t kWidth = 128, kHeight = 96;
@@ -224,4 +224,4 @@ TEST(Sampler, TheDigitPermutationTableIsTheFisherYatesShuffle) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::sampler_test

@@ -7,7 +7,7 @@
 #include "shared/rng.h"
 #include "shared/sampling.h"
 
-namespace vkpt {
+namespace vkpt::sampling_test {
 namespace {
 
 constexpr double kAlpha = 0.01;
@@ -139,4 +139,4 @@ TEST(Sampling, PowerHeuristicWeightsSumToOne) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::sampling_test

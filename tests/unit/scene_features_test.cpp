@@ -8,7 +8,7 @@
 #include "scene/gltf_loader.h"
 #include "scene/scene_features.h"
 
-namespace vkpt {
+namespace vkpt::scene_features_test {
 namespace {
 
 const std::string kLoaderDir = VKPT_SCENES_DIR "/loader/";
@@ -256,4 +256,4 @@ TEST(SceneFeatures, DescribeInOneLine) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::scene_features_test

@@ -15,7 +15,7 @@
 #include "shared/environment.h"
 #include "shared/sampling.h"
 
-namespace vkpt {
+namespace vkpt::scene_lighting_test {
 namespace {
 
 using test::addMaterial;
@@ -178,4 +178,4 @@ TEST(SceneLighting, SharedScenesAreLitOrNotAsMeasured) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::scene_lighting_test

@@ -7,7 +7,7 @@
 #include "../support/nets.h"
 #include "shared/sobol.h"
 
-namespace vkpt {
+namespace vkpt::sobol_test {
 namespace {
 
 // Dimension 1 from its direction numbers, as Bratley and Fox's recurrence builds them from Joe
@@ -93,4 +93,4 @@ TEST(Sobol, NestedUniformShuffleKeepsAlignedRuns) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::sobol_test

@@ -13,7 +13,7 @@
 #include "shared/rng.h"
 #include "shared/sphere.h"
 
-namespace vkpt {
+namespace vkpt::sphere_test {
 namespace {
 
 using glm::dvec3;
@@ -389,4 +389,4 @@ TEST(SphereLight, DegenerateInputsAreInvalid) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::sphere_test

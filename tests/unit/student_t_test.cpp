@@ -6,7 +6,7 @@
 
 #include "image/student_t.h"
 
-namespace vkpt {
+namespace vkpt::student_t_test {
 namespace {
 
 TEST(StudentT, OneDegreeOfFreedomIsTheCauchyTail) {
@@ -46,4 +46,4 @@ TEST(StudentT, IncompleteBetaIsSymmetricAndBounded) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::student_t_test

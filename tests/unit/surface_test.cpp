@@ -14,7 +14,7 @@
 #include "shared/surface.h"
 #include "shared/volume.h"
 
-namespace vkpt::gpu {
+namespace vkpt::gpu::surface_test {
 namespace {
 
 TextureSlot emptySlot() {
@@ -264,4 +264,4 @@ TEST(SharedSurface, BeerLambertTransmittance) {
 }
 
 } // namespace
-} // namespace vkpt::gpu
+} // namespace vkpt::gpu::surface_test

@@ -10,7 +10,7 @@
 
 #include "scene/tangents.h"
 
-namespace vkpt {
+namespace vkpt::tangents_test {
 namespace {
 
 struct Soup {
@@ -173,4 +173,4 @@ TEST(Tangents, AnyOrthogonalIsUnitAndOrthogonal) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::tangents_test

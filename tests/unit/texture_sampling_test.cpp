@@ -11,7 +11,7 @@
 
 #include "shared/texture_sampling.h"
 
-namespace vkpt {
+namespace vkpt::texture_sampling_test {
 namespace {
 
 using glm::vec2;
@@ -233,4 +233,4 @@ TEST(TextureSampling, TransformAppliesTheTextureTransformRows) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::texture_sampling_test

@@ -7,7 +7,7 @@
 
 #include "image/tone_map.h"
 
-namespace vkpt {
+namespace vkpt::tone_map_test {
 namespace {
 
 void expectNear(glm::vec3 actual, glm::vec3 expected, float tolerance = 1e-5f) {
@@ -65,4 +65,4 @@ TEST(ToneMap, ClampLeavesColoursAndBothMakeNonFiniteAndNegativeBlack) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::tone_map_test

@@ -16,7 +16,7 @@
 #include "study/study_output.h"
 #include "study/study_plan.h"
 
-namespace vkpt {
+namespace vkpt::trade_study_test {
 namespace {
 
 ConvergencePoint point(double seconds, double relMse, std::uint32_t spp = 1) {
@@ -311,4 +311,4 @@ TEST(ReferenceCache, DefaultsToXdgCacheHome) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::trade_study_test

@@ -19,7 +19,7 @@
 #include "reference/stack_intersector.h"
 #include "shared/instance.h"
 
-namespace vkpt {
+namespace vkpt::two_level_traverse_test {
 namespace {
 
 constexpr int kRays = 10000;
@@ -227,4 +227,4 @@ TEST(TwoLevelTraverse, CoincidentPlacementsTieToTheLowerInstance) {
 }
 
 } // namespace
-} // namespace vkpt
+} // namespace vkpt::two_level_traverse_test
