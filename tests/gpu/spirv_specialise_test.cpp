@@ -12,7 +12,7 @@
 #include <span>
 #include <vector>
 
-namespace vkpt::test {
+namespace vkpt::test::spirv_specialise_test {
 namespace {
 
 // SPIR-V opcodes and decorations (SPIR-V 1.6 specification, §3.32 and §3.20).
@@ -76,4 +76,4 @@ TEST(SpirvSpecialise, RefusesWhatIsNotSpirvAndNamesTheKernel) {
 }
 
 } // namespace
-} // namespace vkpt::test
+} // namespace vkpt::test::spirv_specialise_test
