@@ -58,4 +58,8 @@ std::vector<std::uint32_t> specialiseSpirv(std::span<const std::uint32_t> spirv,
     return out;
 }
 
+std::vector<std::uint32_t> specialiseSpirv(const KernelDesc& desc) {
+    return specialiseSpirv(desc.spirv, desc.specializationConstants, desc.name);
+}
+
 } // namespace vkpt

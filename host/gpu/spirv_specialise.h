@@ -5,8 +5,7 @@
 // constants; lavapipe, for one, turns every function of shade_hits into NIR and inlines it before
 // the constant branches fall away, so a scene that uses two material features pays for all of
 // them at every pipeline creation (docs/gpu.md, "Pipelines"). Folding the constants here with
-// SPIRV-Tools' optimiser (the passes the build runs for its pruned builds) hands the driver only
-// the code the scene runs.
+// SPIRV-Tools' optimiser hands the driver only the code the scene runs.
 #pragma once
 
 #include "gpu/kernel.h"
@@ -24,5 +23,7 @@ namespace vkpt {
 std::vector<std::uint32_t> specialiseSpirv(std::span<const std::uint32_t> spirv,
                                            const std::vector<SpecializationConstant>& constants,
                                            const std::string& kernelName);
+// The same for a kernel's description: its SPIR-V, constants and name.
+std::vector<std::uint32_t> specialiseSpirv(const KernelDesc& desc);
 
 } // namespace vkpt

@@ -212,6 +212,25 @@ bool declaresBinding(std::span<const std::uint32_t> spirv, std::uint32_t binding
     return false;
 }
 
+// `scene` rendered 16 x 16 at 4 spp with the pipelines made for its feature set and with the full
+// build specialised by the driver, which must give the same image bit for bit and the same rays.
+struct OwnAndFullBuild {
+    WavefrontResult own;
+    WavefrontResult full;
+};
+OwnAndFullBuild expectTheFullBuildsBits(GpuContext& context, const LoadedTestScene& scene,
+                                        std::uint32_t seed) {
+    RenderSettings settings = testSettings(16, 4);
+    settings.seed = seed;
+    WavefrontOptions fullBuild;
+    fullBuild.kernelBuilds = KernelBuilds::Full;
+    OwnAndFullBuild renders{render(context, scene, settings),
+                            render(context, scene, settings, fullBuild)};
+    EXPECT_EQ(renders.own.output.image.pixels, renders.full.output.image.pixels);
+    EXPECT_EQ(renders.own.stats.rays.total(), renders.full.stats.rays.total());
+    return renders;
+}
+
 // The feature-set builds (shade_hits for Lambertian scenes, shaders/CMakeLists.txt) hold only
 // what such a scene can reach — no layered BSDF, so not even its albedo tables' buffer — and
 // render the full build's image bit for bit.
@@ -232,16 +251,9 @@ TEST_F(SceneUpload, LambertianScenesTakeTheDiffuseBuildAndRenderTheSameBits) {
     EXPECT_TRUE(
         declaresBinding(kernelSpirv(WavefrontKernel::ShadeHits, layered), BINDING_ALBEDO_TABLES));
 
-    RenderSettings settings = testSettings(16, 4);
-    settings.seed = 9;
-    WavefrontOptions fullBuild;
-    fullBuild.kernelBuilds = KernelBuilds::Full;
-    const WavefrontResult lean = render(context(), box, settings);
-    const WavefrontResult whole = render(context(), box, settings, fullBuild);
+    const OwnAndFullBuild renders = expectTheFullBuildsBits(context(), box, 9);
     std::printf("pipelines: %.3f s with the diffuse shade_hits, %.3f s with the full one\n",
-                lean.pipelineCreationSeconds, whole.pipelineCreationSeconds);
-    EXPECT_EQ(lean.output.image.pixels, whole.output.image.pixels);
-    EXPECT_EQ(lean.stats.rays.total(), whole.stats.rays.total());
+                renders.own.pipelineCreationSeconds, renders.full.pipelineCreationSeconds);
 }
 
 // Pipelines get their feature constants folded into the module on the host (the default,
@@ -257,30 +269,22 @@ TEST_F(SceneUpload, FeatureConstantsFoldedOnTheHostRenderTheDriversBits) {
         ASSERT_TRUE(features.metallicRoughnessMaterials);
         const KernelDesc desc = wavefrontKernelDesc(WavefrontKernel::ShadeHits, features);
         ASSERT_TRUE(desc.foldConstantsOnHost);
-        const std::size_t folded =
-            specialiseSpirv(desc.spirv, desc.specializationConstants, desc.name).size();
+        const std::size_t folded = specialiseSpirv(desc).size();
         SceneFeatures withoutAnisotropy = features;
         withoutAnisotropy.anisotropy = false;
-        const KernelDesc plain = wavefrontKernelDesc(WavefrontKernel::ShadeHits, withoutAnisotropy);
         const std::size_t plainFolded =
-            specialiseSpirv(plain.spirv, plain.specializationConstants, plain.name).size();
+            specialiseSpirv(wavefrontKernelDesc(WavefrontKernel::ShadeHits, withoutAnisotropy))
+                .size();
         EXPECT_LT(folded, desc.spirv.size());
         if (features.anisotropy) {
             EXPECT_GT(folded, plainFolded) << "anisotropy's code must stay";
         }
 
-        RenderSettings settings = testSettings(16, 4);
-        settings.seed = 10;
-        WavefrontOptions driver;
-        driver.kernelBuilds = KernelBuilds::Full;
-        const WavefrontResult host = render(context(), scene, settings);
-        const WavefrontResult byDriver = render(context(), scene, settings, driver);
+        const OwnAndFullBuild renders = expectTheFullBuildsBits(context(), scene, 10);
         std::printf("%s: pipelines %.3f s folded on the host (shade_hits %zu of %zu words), "
                     "%.3f s specialised by the driver\n",
-                    path, host.pipelineCreationSeconds, folded, desc.spirv.size(),
-                    byDriver.pipelineCreationSeconds);
-        EXPECT_EQ(host.output.image.pixels, byDriver.output.image.pixels);
-        EXPECT_EQ(host.stats.rays.total(), byDriver.stats.rays.total());
+                    path, renders.own.pipelineCreationSeconds, folded, desc.spirv.size(),
+                    renders.full.pipelineCreationSeconds);
     }
 }
 
