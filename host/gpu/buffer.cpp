@@ -6,6 +6,7 @@
 #include "gpu/vk_check.h"
 
 #include <algorithm>
+#include <bit>
 #include <utility>
 
 namespace vkpt {
@@ -38,12 +39,19 @@ VkDeviceSize heapAvailable(const GpuContext& context, std::uint32_t typeIndex) {
 
 } // namespace
 
+VkDeviceSize keyStableTexelBytes(VkDeviceSize bytes) {
+    VkDeviceSize size = (bytes + kTexelBytes - 1) / kTexelBytes * kTexelBytes;
+    while (std::has_single_bit(size) || ((size >> 8) & 0xff) == 0)
+        size += kTexelBytes;
+    return size;
+}
+
 Buffer::Buffer(GpuContext& context, BufferDesc desc) : context_(&context), desc_(std::move(desc)) {
     VKPT_ASSERT(desc_.size > 0, "buffer '" + desc_.name + "' has size 0");
     checkLimits();
     VkBufferCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
-    info.size = desc_.size;
+    info.size = std::max(desc_.size, texelRange());
     info.usage = desc_.usage;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     VKPT_VK_CHECK(vkCreateBuffer(context.device(), &info, nullptr, &buffer_));
@@ -129,9 +137,24 @@ void Buffer::createTexelView() {
     info.buffer = buffer_;
     info.format = desc_.texelFormat;
     info.offset = 0;
-    info.range = desc_.size / kTexelBytes * kTexelBytes;
+    info.range = texelRange();
     VKPT_VK_CHECK(vkCreateBufferView(context_->device(), &info, nullptr, &texelView_));
     context_->setDebugName(texelView_, desc_.name + ".texels");
+}
+
+// The texel view's range (0 without one): keyStableTexelBytes, less the padding where that
+// would cross a limit desc_.size keeps within (that buffer then costs a compile per size, not
+// a refusal). The buffer is created at least this large.
+VkDeviceSize Buffer::texelRange() const {
+    const bool texels = (desc_.usage & VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT) != 0;
+    if (!texels || desc_.size < kTexelBytes) return 0;
+    const DeviceLimits& limits = context_->limits();
+    const VkDeviceSize padded = keyStableTexelBytes(desc_.size);
+    const bool storage = (desc_.usage & VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) != 0;
+    const bool fits = padded / kTexelBytes <= limits.maxTexelBufferElements &&
+                      padded <= limits.maxMemoryAllocationSize &&
+                      (!storage || padded <= limits.maxStorageBufferRange);
+    return fits ? padded : desc_.size / kTexelBytes * kTexelBytes;
 }
 
 void Buffer::release() noexcept {

@@ -28,6 +28,14 @@ struct BufferDesc {
 // Bytes per texel of the texel views buffers make.
 inline constexpr VkDeviceSize kTexelBytes = 16;
 
+// The size a texel buffer of `bytes` is created with, and its view's range: whole texels, never
+// a power of two, and never with bits 8-15 zero. Lavapipe (Mesa 22.3) compiles a kernel once
+// per "variant key", and the key records, for each texel view bound, whether its buffer's size
+// is a power of two and whether bits 8-15 of the view's range are zero (it reads the range
+// through the mip-level field of a union). Sizes that keep both false give every frame size
+// and every scene the same key, so LLVM compiles each kernel once, not once per size.
+VkDeviceSize keyStableTexelBytes(VkDeviceSize bytes);
+
 class Buffer {
 public:
     // Throws VulkanError naming the buffer, its size and the limit when a storage buffer is
@@ -55,6 +63,7 @@ public:
     VkBufferView texelView() const { return texelView_; }
 
 private:
+    VkDeviceSize texelRange() const;
     void checkLimits() const;
     void allocateAndBind();
     void createTexelView();

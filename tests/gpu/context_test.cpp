@@ -8,6 +8,7 @@
 #include "vkpt_test_kernels.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstdio>
 
 namespace vkpt::test::context_test {
@@ -178,6 +179,41 @@ TEST_F(Context, AccountsDeviceMemoryOfLiveBuffers) {
     }
     EXPECT_EQ(context().memoryStats().bytesInUse, 0u);
     EXPECT_GE(context().memoryStats().peakBytes, (1u << 20) + 4096u);
+}
+
+// What lavapipe keys a compiled kernel on (gpu/buffer.h): never a power of two, never bits 8-15
+// zero; whole texels, at least what was asked, and at most 256 bytes more.
+TEST(TexelBufferSize, KeepsTheDriversKernelKeyTheSameForEverySize) {
+    std::vector<VkDeviceSize> sizes;
+    for (VkDeviceSize bytes = 1; bytes <= 70000; ++bytes)
+        sizes.push_back(bytes);
+    for (int bit = 17; bit < 40; ++bit) { // powers of two and their neighbours
+        const VkDeviceSize power = VkDeviceSize(1) << bit;
+        sizes.insert(sizes.end(), {power - 1, power, power + 1, power + 256});
+    }
+    for (VkDeviceSize bytes : sizes) {
+        const VkDeviceSize size = keyStableTexelBytes(bytes);
+        ASSERT_GE(size, bytes) << bytes;
+        ASSERT_EQ(size % kTexelBytes, 0u) << bytes;
+        ASSERT_LE(size - bytes, 256u + kTexelBytes) << bytes;
+        ASSERT_FALSE(std::has_single_bit(size)) << bytes << " -> " << size;
+        ASSERT_NE((size >> 8) & 0xff, 0u) << bytes << " -> " << size;
+        ASSERT_EQ(keyStableTexelBytes(size), size) << bytes;
+    }
+    EXPECT_EQ(keyStableTexelBytes(4096), 4112u);   // a 16² image's per-pixel texels: 2^12
+    EXPECT_EQ(keyStableTexelBytes(65536), 65792u); // 64²: 2^16, and bits 8-15 zero after +16
+    EXPECT_EQ(keyStableTexelBytes(9216), 9216u);   // 24²: already neither
+}
+
+TEST_F(Context, TexelViewsCoverTheKeyStableSize) {
+    BufferDesc desc;
+    desc.name = "pathTexels";
+    desc.size = 4096;
+    desc.usage = VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
+    const Buffer buffer(context(), desc);
+    EXPECT_NE(buffer.texelView(), VkBufferView(VK_NULL_HANDLE));
+    EXPECT_EQ(buffer.size(), 4096u); // what the caller asked; the padding is the driver's
+    EXPECT_GE(buffer.allocationSize(), keyStableTexelBytes(4096));
 }
 
 TEST_F(Context, ReportsLimits) {
