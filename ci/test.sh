@@ -43,6 +43,10 @@ source ci/lavapipe_env.sh
 # Tests write only into their own folders: the programs they run leave the user's pipeline cache
 # (~/.cache/vkpt) alone; tests/gpu/pipeline_cache_test.cpp covers the cache with its own files.
 export VKPT_NO_PIPELINE_CACHE=1
+# The kernels folded for their constants are kept for the run in one folder of its own, which the
+# test processes share (gpu/folded_spirv_cache.h): a feature set is folded once, not once per
+# process that renders it.
+export VKPT_KERNEL_CACHE_DIR="$scratch/kernels"
 # ctest starts the tests it knows to be long first, from the timings of the folder's last run; a
 # fresh folder has none, so seed them from ci/test_costs.txt (an earlier run's, made by
 # `ci/test_times.py JUNIT --costs`): otherwise a long test that starts last leaves a core idle.

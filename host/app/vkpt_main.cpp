@@ -53,7 +53,8 @@ void addDeviceOptions(CommandLine& commandLine, Invocation& invocation) {
     commandLine.add({"no-cache",
                      {},
                      "",
-                     "do not read or write the pipeline cache file (or VKPT_NO_PIPELINE_CACHE=1)",
+                     "do not read or write the pipeline cache file and folded kernels (or "
+                     "VKPT_NO_PIPELINE_CACHE=1)",
                      [&](auto) { invocation.gpu.persistentPipelineCache = false; }});
     commandLine.add(
         {"path-slots", {}, "N", "paths in flight per pass (default: from the device)", [&](auto v) {

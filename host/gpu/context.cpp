@@ -75,7 +75,9 @@ bool offersPortabilitySubset(VkPhysicalDevice device) {
 GpuContext::GpuContext(const GpuOptions& options)
     : instance_(options.validation || validationRequestedByEnvironment()),
       devices_(enumerateDevices(instance_.handle())),
-      deviceInfo_(selectDevice(devices_, options.device)), limits_(readLimits(deviceInfo_)) {
+      deviceInfo_(selectDevice(devices_, options.device)), limits_(readLimits(deviceInfo_)),
+      foldedSpirvCache_(
+          foldedSpirvCacheFolder(options.persistentPipelineCache, options.pipelineCachePath)) {
     limits_.timestampValidBits = readTimestampValidBits(deviceInfo_);
     vkGetPhysicalDeviceMemoryProperties(deviceInfo_.handle, &memory_);
     limits_.deviceLocalHeapSize = largestDeviceLocalHeap(memory_);

@@ -4,6 +4,7 @@
 
 #include "gpu/debug_utils.h"
 #include "gpu/device_list.h"
+#include "gpu/folded_spirv_cache.h"
 #include "gpu/instance.h"
 #include "gpu/kernel_memo.h"
 #include "gpu/memory.h"
@@ -88,6 +89,8 @@ public:
 
     // Every kernel's pipeline goes through it; a file-backed one when GpuOptions asked.
     PipelineCache& pipelineCache() const { return *pipelineCache_; }
+    // Kernels folded for their constants, kept between runs (folded_spirv_cache.h).
+    const FoldedSpirvCache& foldedSpirvCache() const { return foldedSpirvCache_; }
 
     // The pipelines renders on this device have made, for the next render that needs them.
     KernelMemo& kernelMemo() const { return *kernelMemo_; }
@@ -108,6 +111,7 @@ private:
     VkQueue queue_ = VK_NULL_HANDLE;
     VkCommandPool commandPool_ = VK_NULL_HANDLE;
     std::unique_ptr<PipelineCache> pipelineCache_;
+    FoldedSpirvCache foldedSpirvCache_;
     std::unique_ptr<KernelMemo> kernelMemo_ = std::make_unique<KernelMemo>();
     MemoryAccounting memoryAccounting_;
 };

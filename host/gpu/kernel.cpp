@@ -139,7 +139,7 @@ void Kernel::createPipeline() {
     std::vector<std::uint32_t> folded;
     std::span<const std::uint32_t> spirv = desc_.spirv;
     if (fold) {
-        folded = specialiseSpirv(desc_);
+        folded = context_->foldedSpirvCache().fold(desc_);
         spirv = folded;
     }
     VkShaderModuleCreateInfo moduleInfo{};

@@ -3,16 +3,11 @@
 // version, vendor, device, pipelineCacheUUID; Vulkan spec, vkGetPipelineCacheData).
 #include "gpu/pipeline_cache.h"
 
+#include "gpu/cache_files.h"
 #include "gpu/vk_check.h"
 
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
-
-#include <unistd.h>
 
 namespace vkpt {
 
@@ -22,13 +17,6 @@ constexpr char kMagic[8] = {'v', 'k', 'p', 't', 'p', 'c', '0', '1'};
 constexpr std::size_t kFrameBytes = sizeof(kMagic) + 2 * sizeof(std::uint64_t);
 // Vulkan's header: length, version (u32 each), vendorID, deviceID, then the 16-byte UUID.
 constexpr std::size_t kVulkanHeaderBytes = 16 + VK_UUID_SIZE;
-
-std::uint64_t fnv1a(const std::uint8_t* data, std::size_t size) {
-    std::uint64_t hash = 0xcbf29ce484222325ull;
-    for (std::size_t i = 0; i < size; ++i)
-        hash = (hash ^ data[i]) * 0x100000001b3ull;
-    return hash;
-}
 
 std::uint32_t readU32(const std::uint8_t* p) {
     std::uint32_t v;
@@ -58,34 +46,22 @@ std::string hex(const std::uint8_t* bytes, std::size_t count) {
     return text;
 }
 
-bool disabledByEnvironment() {
-    const char* value = std::getenv("VKPT_NO_PIPELINE_CACHE");
-    return value && *value && std::strcmp(value, "0") != 0;
-}
-
 } // namespace
 
 std::string defaultPipelineCachePath(VkPhysicalDevice device) {
-    if (disabledByEnvironment()) return "";
-    std::filesystem::path folder;
-    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
-        folder = xdg;
-    else if (const char* home = std::getenv("HOME"); home && *home)
-        folder = std::filesystem::path(home) / ".cache";
-    else
-        return "";
+    if (cacheFilesDisabledByEnvironment()) return "";
+    const std::filesystem::path folder = vkptCacheFolder();
+    if (folder.empty()) return "";
     const VkPhysicalDeviceProperties p = propertiesOf(device);
     char name[64];
     std::snprintf(name, sizeof(name), "pipelines-%04x-%04x-", p.vendorID, p.deviceID);
-    return (folder / "vkpt" / (name + hex(p.pipelineCacheUUID, VK_UUID_SIZE) + ".bin")).string();
+    return (folder / (name + hex(p.pipelineCacheUUID, VK_UUID_SIZE) + ".bin")).string();
 }
 
 std::vector<std::uint8_t> readPipelineCacheFile(const std::string& path, VkPhysicalDevice device,
                                                 std::string& problem) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return {}; // none yet: nothing to say
-    const std::vector<std::uint8_t> file((std::istreambuf_iterator<char>(in)),
-                                         std::istreambuf_iterator<char>());
+    if (!std::filesystem::exists(path)) return {}; // none yet: nothing to say
+    const std::vector<std::uint8_t> file = readWholeFile(path);
     if (file.size() < kFrameBytes || std::memcmp(file.data(), kMagic, sizeof(kMagic)) != 0) {
         problem = "not a vkpt pipeline cache";
         return {};
@@ -142,20 +118,7 @@ bool writePipelineCacheFile(const std::string& path, const std::vector<std::uint
     std::memcpy(data.data() + sizeof(kMagic), &payloadBytes, sizeof(payloadBytes));
     std::memcpy(data.data() + sizeof(kMagic) + sizeof(payloadBytes), &checksum, sizeof(checksum));
     if (!payload.empty()) std::memcpy(data.data() + kFrameBytes, payload.data(), payload.size());
-    const std::filesystem::path target(path);
-    const std::filesystem::path temporary =
-        target.string() + ".tmp" + std::to_string(static_cast<long>(getpid()));
-    std::error_code error;
-    if (target.has_parent_path()) std::filesystem::create_directories(target.parent_path(), error);
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        out.write(reinterpret_cast<const char*>(data.data()), std::streamsize(data.size()));
-        if (!out) error = std::make_error_code(std::errc::io_error);
-    }
-    if (!error) std::filesystem::rename(temporary, target, error);
-    if (!error) return true;
-    std::filesystem::remove(temporary, error);
-    return false;
+    return writeFileAtomically(path, data);
 }
 
 bool PipelineCache::save() {

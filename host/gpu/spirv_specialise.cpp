@@ -3,6 +3,7 @@
 
 #include "gpu/vk_check.h"
 
+#include <spirv-tools/libspirv.h>
 #include <spirv-tools/optimizer.hpp>
 
 #include <unordered_map>
@@ -63,6 +64,12 @@ std::vector<std::uint32_t> specialiseSpirv(std::span<const std::uint32_t> spirv,
                           VK_ERROR_INITIALIZATION_FAILED);
     }
     return out;
+}
+
+// Change the number with the passes of registerPrunePasses, or anything else that changes what
+// specialiseSpirv makes of a module.
+std::string specialiseSpirvVersion() {
+    return std::string("vkpt folding 2, ") + spvSoftwareVersionDetailsString();
 }
 
 std::vector<std::uint32_t> specialiseSpirv(const KernelDesc& desc) {

@@ -26,4 +26,8 @@ std::vector<std::uint32_t> specialiseSpirv(std::span<const std::uint32_t> spirv,
 // The same for a kernel's description: its SPIR-V, constants and name.
 std::vector<std::uint32_t> specialiseSpirv(const KernelDesc& desc);
 
+// What the folded module depends on besides the kernel and its constants: the passes and
+// SPIRV-Tools' version (folded_spirv_cache.h keys its files on it).
+std::string specialiseSpirvVersion();
+
 } // namespace vkpt

@@ -1,5 +1,7 @@
-// kernel_cache_cli_test.cpp — lavapipe compiles each of a scene's kernels once, whatever the
-// image size: a render at another size files nothing new in Mesa's shader cache. Lavapipe keys
+// kernel_cache_cli_test.cpp — what vkpt and the driver keep of its kernels between runs. vkpt
+// keeps the kernels it folded beside its pipeline cache, and a later run renders the same bits
+// from them. Lavapipe compiles each of a scene's kernels once, whatever the image size: a render
+// at another size files nothing new in Mesa's shader cache. Lavapipe keys
 // a compiled kernel on the sizes of the texel buffers bound to it (gpu/buffer.h,
 // keyStableTexelBytes); were they to leak into the key again, every test at a new size would
 // run LLVM over kernels it had compiled before, and a fresh machine's suite would take twice
@@ -7,7 +9,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
+#include <vector>
 
 #include "../support/child_process.h"
 #include "../support/test_directory.h"
@@ -31,14 +36,41 @@ protected:
         ASSERT_EQ(finished.exitCode, 0) << "vkpt at " << size << "²: " << finished.stderrText;
     }
 
-    int cacheEntries() const {
-        if (!std::filesystem::exists(dir_ / "mesa")) return 0;
+    int cacheEntries(const std::string& folder = "mesa") const {
+        if (!std::filesystem::exists(dir_ / folder)) return 0;
         int entries = 0;
-        for (const auto& entry : std::filesystem::recursive_directory_iterator(dir_ / "mesa"))
+        for (const auto& entry : std::filesystem::recursive_directory_iterator(dir_ / folder))
             entries += entry.is_regular_file() ? 1 : 0;
         return entries;
     }
+
+    // vkpt as a user runs it: its caches in $XDG_CACHE_HOME/vkpt (this test's folder), not the
+    // suite's shared folder of folded kernels.
+    void renderWithUserCaches(const std::string& output) {
+        Child child = spawnWithStderrPipe(
+            {VKPT, "--quiet", "--spp", "2", "--res", "16", "16", "-o", path(output), kCornell},
+            {"XDG_CACHE_HOME=" + path("xdg"), "VKPT_NO_PIPELINE_CACHE=0",
+             "VKPT_KERNEL_CACHE_DIR="});
+        const Finished finished = finish(child);
+        ASSERT_EQ(finished.exitCode, 0) << finished.stderrText;
+    }
 };
+
+std::vector<char> bytesOf(const std::string& file) {
+    std::ifstream in(file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+}
+
+// Every kernel of the Cornell box that has constants is kept folded, once; the second run reads
+// them (it writes no file more) and renders the first run's bits.
+TEST_F(KernelCache, FoldedKernelsAreKeptBesideThePipelineCacheAndGiveTheSameImage) {
+    renderWithUserCaches("first.pfm");
+    const int kept = cacheEntries("xdg/vkpt/kernels");
+    EXPECT_GE(kept, 7) << "the seven wavefront kernels";
+    renderWithUserCaches("second.pfm");
+    EXPECT_EQ(cacheEntries("xdg/vkpt/kernels"), kept);
+    EXPECT_EQ(bytesOf(path("first.pfm")), bytesOf(path("second.pfm")));
+}
 
 // 16² and 64² give the per-pixel texel buffers power-of-two sizes (and 64² a range whose bits
 // 8-15 are zero), 24² neither: before the sizes were steered, 24², 32² and 64² each filed
