@@ -51,11 +51,6 @@ double meanOf(const Image& image) {
     return sum / double(image.pixels.size());
 }
 
-std::vector<char> bytesOf(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), {}};
-}
-
 class FirstImage : public TestDirectory, public ::testing::WithParamInterface<const char*> {
 protected:
     FirstImage() : TestDirectory("vkpt_first_image") {}

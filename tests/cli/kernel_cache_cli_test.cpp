@@ -9,10 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <string>
-#include <vector>
 
 #include "../support/child_process.h"
 #include "../support/test_directory.h"
@@ -28,11 +25,10 @@ protected:
 
     // Renders the Cornell box at size² with one sample, into this test's own shader cache.
     void render(int size) {
-        Child child = spawnWithStderrPipe(
-            {VKPT, "--quiet", "--spp", "1", "--res", std::to_string(size), std::to_string(size),
-             "-o", path("out.pfm"), kCornell},
-            {"MESA_SHADER_CACHE_DIR=" + path("mesa"), "VKPT_NO_PIPELINE_CACHE=1"});
-        const Finished finished = finish(child);
+        const Finished finished =
+            runProcess({VKPT, "--quiet", "--spp", "1", "--res", std::to_string(size),
+                        std::to_string(size), "-o", path("out.pfm"), kCornell},
+                       {"MESA_SHADER_CACHE_DIR=" + path("mesa"), "VKPT_NO_PIPELINE_CACHE=1"});
         ASSERT_EQ(finished.exitCode, 0) << "vkpt at " << size << "²: " << finished.stderrText;
     }
 
@@ -47,19 +43,13 @@ protected:
     // vkpt as a user runs it: its caches in $XDG_CACHE_HOME/vkpt (this test's folder), not the
     // suite's shared folder of folded kernels.
     void renderWithUserCaches(const std::string& output) {
-        Child child = spawnWithStderrPipe(
+        const Finished finished = runProcess(
             {VKPT, "--quiet", "--spp", "2", "--res", "16", "16", "-o", path(output), kCornell},
             {"XDG_CACHE_HOME=" + path("xdg"), "VKPT_NO_PIPELINE_CACHE=0",
              "VKPT_KERNEL_CACHE_DIR="});
-        const Finished finished = finish(child);
         ASSERT_EQ(finished.exitCode, 0) << finished.stderrText;
     }
 };
-
-std::vector<char> bytesOf(const std::string& file) {
-    std::ifstream in(file, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), {}};
-}
 
 // Every kernel of the Cornell box that has constants is kept folded, once; the second run reads
 // them (it writes no file more) and renders the first run's bits.

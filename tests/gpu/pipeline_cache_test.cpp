@@ -53,11 +53,6 @@ protected:
         return data.empty() ? problem : "read";
     }
 
-    std::vector<char> bytesOf(const std::string& file) const {
-        std::ifstream in(file, std::ios::binary);
-        return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    }
-
     void writeBytes(const std::string& file, const std::vector<char>& bytes) const {
         std::ofstream(file, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
     }

@@ -6,9 +6,19 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
+#include <vector>
 
 namespace vkpt::test {
+
+// The bytes of a file a test wrote (empty when it cannot be read), for comparing outputs bit
+// for bit.
+inline std::vector<char> bytesOf(const std::string& file) {
+    std::ifstream in(file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
 
 class TestDirectory : public ::testing::Test {
 protected:
