@@ -71,26 +71,72 @@ void clearLightSamples(uint ray) {
         shadowRays[ray * n + k].flags = SHADOW_NONE;
 }
 
-// Next-event estimation of the path integrator: each light sample's contribution carries its
-// power-heuristic weight against the BSDF strategy (Veach's multi-sample model, thesis 9.2.4).
-void writePathLightSamples(Vertex vertex, PathState state) {
+// A light sample's shadow record with its estimator's weight: the path integrator's
+// (misWeighted) carries the power heuristic against the BSDF strategy (Veach's multi-sample
+// model, thesis 9.2.4); CS184's light-sampling estimator's is f·Le·cos / p_light, no MIS, times
+// `scale`, the path's wavelength weight (1 without one).
+ShadowRay weightedLightSample(LightConnection c, PathState state, float count, vec3 scale,
+                              bool misWeighted) {
+    ShadowRay shadow = shadowRecordOf(c);
+    if (!c.valid) return shadow;
+    if (!misWeighted) {
+        shadow.contribution = (shadow.contribution / c.lightPdf) * scale;
+        return shadow;
+    }
+    // Inside a volume the shadow ray crosses its medium (glass boundaries block it).
+    if (featureTransmission)
+        shadow.contribution =
+            shadow.contribution *
+            beerLambertTransmittance(state.mediumCoefficient,
+                                     segmentLength(shadow.direction, shadow.tMax));
+    // A punctual light has bsdfPdf 0: no BSDF sample can reach it, so its weight is 1.
+    float weight = powerHeuristic(count, c.lightPdf, 1.0, c.bsdfPdf);
+    shadow.contribution = shadow.contribution * (weight / (count * c.lightPdf));
+    return shadow;
+}
+
+// CS184's hemisphere estimator's probe from `s` along a uniform direction (`local` in the
+// shading frame): it counts the emission it reaches, or the environment when it leaves the
+// scene, times f·cos / p (trace_shadow multiplies it in). Punctual lights cannot be hit, so this
+// estimator does not see them.
+ShadowRay hemisphereProbe(SurfacePoint s, vec3 direction, vec3 local, vec3 f) {
+    vec3 origin = offsetFromSurface(s.position, s.geometricNormal, s.coordinateScale);
+    return ShadowRay(origin, SHADOW_PROBE, direction, VKPT_FAR, f,
+                     local.z / uniformHemispherePdf());
+}
+
+// The light samples of a vertex, N of them as shadow records i·N + k (docs/integrator.md): the
+// path integrator's next-event estimation (misWeighted), or the direct integrator's light
+// samples or, under INTEGRATOR_DIRECT_HEMISPHERE, its probes along uniform directions.
+// One loop and one evaluation of the BSDF serve them all: lavapipe inlines every call, so each
+// call site of the light connection or of the BSDF is another copy of it in the compiled kernel.
+// With one of each for each estimator, the general kernel took LLVM 23 s to compile instead of
+// 11 (`vkpt --general --stats` with an empty Mesa cache).
+void writeLightSamples(Vertex vertex, PathState state, vec3 scale, bool misWeighted) {
+    SurfacePoint s = vertex.surface;
     uint n = frame.lightSamples;
-    float count = float(n);
+    bool probes = !misWeighted && frame.integrator == INTEGRATOR_DIRECT_HEMISPHERE;
+    Basis basis = makeBasis(s.shadingNormal);
     for (uint k = 0u; k < n; ++k) {
-        float pdfLight, pdfBsdf;
-        ShadowRay shadow = makeLightSampleRay(vertex.surface,
-                                              lightSampleOrder(random4(state, DIM_LIGHT_FIRST + k)),
-                                              pdfLight, pdfBsdf);
-        if (shadow.flags != SHADOW_NONE) {
-            // Inside a volume the shadow ray crosses its medium (glass boundaries block it).
-            if (featureTransmission)
-                shadow.contribution =
-                    shadow.contribution *
-                    beerLambertTransmittance(state.mediumCoefficient,
-                                             segmentLength(shadow.direction, shadow.tMax));
-            // A punctual light has pdfBsdf 0: no BSDF sample can reach it, so its weight is 1.
-            float weight = powerHeuristic(count, pdfLight, 1.0, pdfBsdf);
-            shadow.contribution = shadow.contribution * (weight / (count * pdfLight));
+        vec4 u = lightSampleOrder(random4(state, DIM_LIGHT_FIRST + k));
+        LightApproach approach;
+        vec3 probeLocal, direction;
+        bool evaluate;
+        if (probes) {
+            probeLocal = sampleUniformHemisphere(vec2(u.y, u.z));
+            direction = basisToWorld(basis, probeLocal);
+            evaluate = dot(direction, s.geometricNormal) > 0.0;
+        } else {
+            approach = approachLight(s, u);
+            direction = approach.light.direction;
+            evaluate = approach.valid;
+        }
+        ShadowRay shadow = ShadowRay(vec3(0.0), SHADOW_NONE, vec3(0.0), VKPT_FAR, vec3(0.0), 0.0);
+        if (evaluate) {
+            BsdfValue bsdf = evaluateSurfaceBsdf(s, direction);
+            shadow = probes ? hemisphereProbe(s, direction, probeLocal, bsdf.f * scale)
+                            : weightedLightSample(completeLightConnection(s, approach, bsdf), state,
+                                                  float(n), scale, misWeighted);
         }
         storeLightSample(vertex.ray * n + k, shadow);
     }
@@ -136,8 +182,10 @@ float wavelengthNumber(PathState state) {
     return camera.z;
 }
 
-// Sets shading.lit when light-sample records were written for this vertex.
-void shadePathVertex(Vertex vertex, inout PathState state, inout Shading shading) {
+// The path integrator at a hit before its light samples: emission with its MIS weight, and the
+// path's wavelength, which binds the vertex's material to it (dispersion). Returns whether the
+// path goes on (light samples where shading.lit, then the BSDF sample): false at the depth limit.
+bool shadePathVertex(inout Vertex vertex, inout PathState state, inout Shading shading) {
     uint bounce = passParams.bounce;
     vec3 emitted = emittedRadiance(vertex.surface);
     if (emitted != vec3(0.0) && pathFilterKeeps(frame.pathFilter, bounce)) {
@@ -148,70 +196,25 @@ void shadePathVertex(Vertex vertex, inout PathState state, inout Shading shading
         }
         state.radiance += state.throughput * emitted * weight;
     }
-    if (bounce >= frame.maxDepth) return;
+    if (bounce >= frame.maxDepth) return false;
     if (featureDispersion)
         state.wavelength = bindWavelength(vertex.surface.shading, state.throughput,
                                           state.wavelength, wavelengthNumber(state));
     shading.lit = pathFilterKeeps(frame.pathFilter, bounce + 1u);
-    if (shading.lit) {
-        writePathLightSamples(vertex, state);
-        state.lightScale = state.throughput;
-    }
-    continuePath(vertex, state, shading);
+    return true;
 }
 
-// CS184's hemisphere estimator: N uniform directions, each a probe that counts the emission it
-// reaches, or the environment when it leaves the scene (trace_shadow multiplies it in).
-// Punctual lights cannot be hit, so this estimator does not see them.
-// `scale` is the path's wavelength weight (1 without one).
-void writeHemisphereProbes(Vertex vertex, PathState state, vec3 scale) {
-    SurfacePoint s = vertex.surface;
-    Basis basis = makeBasis(s.shadingNormal);
-    vec3 origin = offsetFromSurface(s.position, s.geometricNormal, s.coordinateScale);
-    uint n = frame.lightSamples;
-    for (uint k = 0u; k < n; ++k) {
-        vec4 u = lightSampleOrder(random4(state, DIM_LIGHT_FIRST + k));
-        vec3 local = sampleUniformHemisphere(vec2(u.y, u.z));
-        vec3 direction = basisToWorld(basis, local);
-        ShadowRay probe = ShadowRay(vec3(0.0), SHADOW_NONE, vec3(0.0), VKPT_FAR, vec3(0.0), 0.0);
-        if (dot(direction, s.geometricNormal) > 0.0) {
-            vec3 f = evaluateSurfaceBsdf(s, direction).f * scale;
-            probe = ShadowRay(origin, SHADOW_PROBE, direction, VKPT_FAR, f,
-                              local.z / uniformHemispherePdf());
-        }
-        storeLightSample(vertex.ray * n + k, probe);
-    }
-}
-
-// CS184's light-sampling estimator: Σ f·Le·cos / p_light, no MIS; `scale` as above.
-void writeDirectLightSamples(Vertex vertex, PathState state, vec3 scale) {
-    uint n = frame.lightSamples;
-    for (uint k = 0u; k < n; ++k) {
-        float pdfLight, pdfBsdf;
-        ShadowRay shadow = makeLightSampleRay(vertex.surface,
-                                              lightSampleOrder(random4(state, DIM_LIGHT_FIRST + k)),
-                                              pdfLight, pdfBsdf);
-        if (shadow.flags != SHADOW_NONE)
-            shadow.contribution = (shadow.contribution / pdfLight) * scale;
-        storeLightSample(vertex.ray * n + k, shadow);
-    }
-}
-
-// The direct integrator: emission seen directly, then one bounce of light samples or probes.
-bool shadeDirect(Vertex vertex, inout PathState state) {
+// The direct integrator at a hit: emission seen directly. Returns whether one bounce of light
+// samples or probes follows, and their scale. Dispersive glass is lit at the path's wavelength
+// (bound into the vertex's material), as the path integrator lights it (docs/integrator.md,
+// "Dispersion"): the same λ and weight as vkpt-ref's integrateDirect.
+bool shadeDirect(inout Vertex vertex, inout PathState state, out vec3 scale) {
+    scale = vec3(1.0);
     if (pathFilterKeeps(frame.pathFilter, 0u)) state.radiance += emittedRadiance(vertex.surface);
     if (frame.maxDepth == 0u || frame.lightSamples == 0u || !pathFilterKeeps(frame.pathFilter, 1u))
         return false;
-    // Dispersive glass is lit at the path's wavelength, as the path integrator lights it
-    // (docs/integrator.md, "Dispersion"): the same λ and weight as vkpt-ref's integrateDirect.
-    vec3 scale = vec3(1.0);
     if (featureDispersion)
         bindWavelength(vertex.surface.shading, scale, VKPT_NO_WAVELENGTH, wavelengthNumber(state));
-    if (frame.integrator == INTEGRATOR_DIRECT_HEMISPHERE) {
-        writeHemisphereProbes(vertex, state, scale);
-    } else {
-        writeDirectLightSamples(vertex, state, scale);
-    }
     return true;
 }
 
@@ -266,13 +269,22 @@ Shading shadeRay(uint i) {
         if (featureTransmission && frame.integrator == INTEGRATOR_PATH)
             state.throughput *= beerLambertTransmittance(state.mediumCoefficient,
                                                          segmentLength(record.direction, hit.t));
+        bool path = frame.integrator == INTEGRATOR_PATH;
+        bool continues = false;
+        vec3 scale = vec3(1.0);
         if (frame.integrator == INTEGRATOR_NORMALS) {
             state.radiance = 0.5 * vertex.surface.rawShadingNormal + 0.5;
-        } else if (frame.integrator == INTEGRATOR_PATH) {
-            shadePathVertex(vertex, state, shading);
+        } else if (path) {
+            continues = shadePathVertex(vertex, state, shading);
         } else {
-            shading.lit = shadeDirect(vertex, state);
+            shading.lit = shadeDirect(vertex, state, scale);
         }
+        // Both integrators' light samples from this one call (writeLightSamples says why).
+        if (shading.lit) {
+            writeLightSamples(vertex, state, scale, path);
+            if (path) state.lightScale = state.throughput;
+        }
+        if (continues) continuePath(vertex, state, shading);
         storePathState(record.slot, before, state);
     } else {
         shadeMiss(record);

@@ -10,13 +10,9 @@
 
 #include "shared/light_connection.h"
 
-// One light sample at `s` as a shadow record whose contribution is f·Le·cos θ (punctual:
-// f·E·cos θ) before the estimator's weight; SHADOW_NONE when it cannot contribute. The light's
-// pdf comes back for the caller's weight, and the BSDF's (0 for a delta light).
-ShadowRay makeLightSampleRay(SurfacePoint s, vec4 u, out float lightPdfOut, out float bsdfPdfOut) {
-    LightConnection c = connectLightSample(s, u);
-    lightPdfOut = c.lightPdf;
-    bsdfPdfOut = c.bsdfPdf;
+// A light connection as a shadow record whose contribution is f·Le·cos θ (punctual: f·E·cos θ)
+// before the estimator's weight; SHADOW_NONE when it cannot contribute.
+ShadowRay shadowRecordOf(LightConnection c) {
     if (!c.valid) return ShadowRay(vec3(0.0), SHADOW_NONE, vec3(0.0), 1.0, vec3(0.0), 0.0);
     return ShadowRay(c.origin, SHADOW_SEGMENT, c.direction, c.tMax, c.contribution, 0.0);
 }

@@ -41,38 +41,62 @@ VKPT_FN LightConnection noLightConnection() {
     return c;
 }
 
+// A light connection in two halves around the BSDF, so that a caller evaluating the BSDF for
+// other directions too (the kernels' hemisphere probes) can do so at one place: lavapipe
+// inlines every call, and each call site of the BSDF is another copy of it to compile.
+
+// The half before the BSDF: the light sample and which side of the surface it lies on.
+struct LightApproach {
+    LightSample light;
+    float cosSurface; // towards the light, against the shading normal
+    bool through;     // lit from the far side, through a thin wall that transmits diffusely
+    bool valid;       // false: no emitter, nothing emitted, or the light behind the surface
+};
+
 // u.x picks the emitter, u.yz the point on it (rng.h, DIM_LIGHT_FIRST).
-VKPT_FN LightConnection connectLightSample(SurfacePoint s, vec4 u VKPT_SCENE_PARAM) {
-    LightConnection c = noLightConnection();
-    LightSample light = sampleLight(s.position, u VKPT_SCENE_ARG);
-    if (!light.valid || light.radiance == vec3(0.0f)) return c;
-    float cosSurface = dot(light.direction, s.shadingNormal);
-    float side = dot(light.direction, s.geometricNormal);
+VKPT_FN LightApproach approachLight(SurfacePoint s, vec4 u VKPT_SCENE_PARAM) {
+    LightApproach a;
+    a.light = sampleLight(s.position, u VKPT_SCENE_ARG);
+    a.cosSurface = dot(a.light.direction, s.shadingNormal);
+    float side = dot(a.light.direction, s.geometricNormal);
     // A light on the far side counts only through a thin wall that transmits diffusely, and
     // then on the far side of both normals, as a transmitted BSDF sample must be.
-    bool through = sceneHasDiffuseTransmission(VKPT_SCENE_ARG_ONLY) &&
-                   lightSampledThrough(s.shading) && cosSurface < 0.0f && side < 0.0f;
-    if (!through && (cosSurface <= 0.0f || side <= 0.0f)) return c;
-    BsdfValue bsdf = evaluateSurfaceBsdf(s, light.direction);
+    a.through = sceneHasDiffuseTransmission(VKPT_SCENE_ARG_ONLY) &&
+                lightSampledThrough(s.shading) && a.cosSurface < 0.0f && side < 0.0f;
+    a.valid = a.light.valid && a.light.radiance != vec3(0.0f) &&
+              (a.through || (a.cosSurface > 0.0f && side > 0.0f));
+    return a;
+}
+
+// The half after it: the connection of a valid approach, given the BSDF towards the light.
+VKPT_FN LightConnection completeLightConnection(SurfacePoint s, LightApproach a, BsdfValue bsdf) {
+    LightConnection c = noLightConnection();
     if (bsdf.f == vec3(0.0f)) return c;
     // Both ends move off their surfaces, so the shadow ray can hit neither of them; a shadow
     // ray through a thin wall leaves from its far side.
-    c.origin = offsetFromSurface(s.position, through ? -s.geometricNormal : s.geometricNormal,
+    c.origin = offsetFromSurface(s.position, a.through ? -s.geometricNormal : s.geometricNormal,
                                  s.coordinateScale);
-    if (light.atInfinity) {
-        c.direction = light.direction;
+    if (a.light.atInfinity) {
+        c.direction = a.light.direction;
         c.tMax = VKPT_FAR;
     } else {
-        vec3 target = light.delta ? light.position
-                                  : offsetFromSurface(light.position, light.towardsReceiver,
-                                                      light.coordinateScale);
+        vec3 target = a.light.delta ? a.light.position
+                                    : offsetFromSurface(a.light.position, a.light.towardsReceiver,
+                                                        a.light.coordinateScale);
         c.direction = target - c.origin;
     }
-    c.contribution = bsdf.f * light.radiance * abs(cosSurface);
-    c.lightPdf = light.pdfSolidAngle;
-    c.bsdfPdf = light.delta ? 0.0f : bsdf.pdf;
+    c.contribution = bsdf.f * a.light.radiance * abs(a.cosSurface);
+    c.lightPdf = a.light.pdfSolidAngle;
+    c.bsdfPdf = a.light.delta ? 0.0f : bsdf.pdf;
     c.valid = true;
     return c;
+}
+
+// One light sample at `s` as the shadow ray that decides it; u as approachLight's.
+VKPT_FN LightConnection connectLightSample(SurfacePoint s, vec4 u VKPT_SCENE_PARAM) {
+    LightApproach a = approachLight(s, u VKPT_SCENE_ARG);
+    if (!a.valid) return noLightConnection();
+    return completeLightConnection(s, a, evaluateSurfaceBsdf(s, a.light.direction));
 }
 
 #ifdef __cplusplus
