@@ -71,10 +71,9 @@ auto adaptiveSimpson(const F& f, double a, double b, const SimpsonOptions& optio
         wholes[std::size_t(p)] = h / 6.0 * (values[i] + 4.0 * values[i + 1] + values[i + 2]);
         estimate += wholes[std::size_t(p)];
     }
-    const double eps =
-        std::max(options.relativeTolerance * simpsonMagnitude(estimate),
-                 options.absoluteTolerance) /
-        panels;
+    const double eps = std::max(options.relativeTolerance * simpsonMagnitude(estimate),
+                                options.absoluteTolerance) /
+                       panels;
     V sum(0.0);
     for (int p = 0; p < panels; ++p) {
         const std::size_t i = std::size_t(2 * p);
