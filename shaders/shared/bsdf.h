@@ -748,33 +748,13 @@ VKPT_FN BsdfSample invalidBsdfSample() {
     return s;
 }
 
-// The glass lobe, chosen with probability p.glass; uChoice picks reflection or refraction. A
-// delta sample's weight is the lobe's own times its share of the material over the probability
-// of choosing it; a rough one is weighed by the whole mixture.
-VKPT_FN BsdfSample sampleGlassLobe(ShadingMaterial m, vec3 wo, vec2 u, float uChoice,
-                                   LobeProbabilities p) {
-    BsdfSample s = invalidBsdfSample();
-    DielectricLobe lobe = glassLobeOf(m);
-    DielectricSample d = sampleDielectric(lobe, wo, u, uChoice);
-    if (!d.valid) return s;
-    s.direction = d.direction;
-    s.delta = dielectricIsDelta(lobe);
-    if (s.delta) {
-        s.pdf = p.glass * d.pdf;
-        s.weight = d.weight * (layersTransmittance(m, wo) * glassShare(m) / p.glass);
-    } else {
-        s.pdf = mixtureBsdfPdf(m, wo, d.direction, p);
-        if (!(s.pdf > 0.0f)) return s;
-        s.weight = evaluateBsdf(m, wo, d.direction) * (abs(d.direction.z) / s.pdf);
-    }
-    s.valid = s.pdf > 0.0f;
-    return s;
-}
-
 // uDirection places the direction within the lobe, uLobe picks the lobe (metallic-roughness
 // only; in the order glass, specular, clearcoat, sheen, diffuse transmission, diffuse). A GGX
 // sample reflected below the surface is invalid: the path ends there, which is the energy
-// single-scattering microfacet models lose by design.
+// single-scattering microfacet models lose by design. The glass lobe's uChoice picks reflection
+// or refraction; a delta sample's weight is the lobe's own times its share of the material over
+// the probability of choosing it. Every other sample, a rough glass's too, is weighed by the
+// whole mixture, at one place: each copy of evaluateBsdf is a large part of the compiled kernel.
 VKPT_FN BsdfSample sampleBsdf(ShadingMaterial m, vec3 wo, vec2 uDirection, float uLobe) {
     BsdfSample s = invalidBsdfSample();
     if (!m.metallicRoughness) {
@@ -786,30 +766,45 @@ VKPT_FN BsdfSample sampleBsdf(ShadingMaterial m, vec3 wo, vec2 uDirection, float
     }
     if (!(wo.z > 0.0f)) return s;
     LobeProbabilities p = lobeProbabilities(m, wo);
-    if (uLobe < p.glass) return sampleGlassLobe(m, wo, uDirection, uLobe / p.glass, p);
-    uLobe -= p.glass;
     vec3 wi;
-    bool transmits = false; // the diffuse transmission's sample: the only one that may go below
-    if (uLobe < p.specular) {
-        wi = sampleBaseGgxReflection(m, wo, uDirection);
-    } else if (uLobe < p.specular + p.clearcoat) {
-        // Below the coat's own horizon, or the base's (tested after the branches), the sample
-        // is lost, as clearcoatPdf counts it.
-        vec3 woC = toClearcoatFrame(m, wo);
-        if (!(woC.z > 0.0f)) return s;
-        vec3 wiC = sampleGgxReflection(woC, m.clearcoatAlpha, uDirection);
-        if (!(wiC.z > 0.0f)) return s;
-        wi = fromClearcoatFrame(m, wiC);
-    } else if (uLobe < p.specular + p.clearcoat + p.sheen) {
-        wi = sampleUniformHemisphere(uDirection);
-    } else if (hasDiffuseTransmission(m) &&
-               uLobe < p.specular + p.clearcoat + p.sheen + p.diffuseTransmission) {
-        wi = mirroredThroughSurface(sampleCosineHemisphere(uDirection));
-        transmits = true;
+    bool glass = uLobe < p.glass;
+    bool transmits = false; // the diffuse transmission's sample: the only other that goes below
+    if (glass) {
+        DielectricLobe lobe = glassLobeOf(m);
+        DielectricSample d = sampleDielectric(lobe, wo, uDirection, uLobe / p.glass);
+        if (!d.valid) return s;
+        if (dielectricIsDelta(lobe)) {
+            s.direction = d.direction;
+            s.delta = true;
+            s.pdf = p.glass * d.pdf;
+            s.weight = d.weight * (layersTransmittance(m, wo) * glassShare(m) / p.glass);
+            s.valid = s.pdf > 0.0f;
+            return s;
+        }
+        wi = d.direction;
     } else {
-        wi = sampleCosineHemisphere(uDirection);
+        uLobe -= p.glass;
+        if (uLobe < p.specular) {
+            wi = sampleBaseGgxReflection(m, wo, uDirection);
+        } else if (uLobe < p.specular + p.clearcoat) {
+            // Below the coat's own horizon, or the base's (tested after the branches), the
+            // sample is lost, as clearcoatPdf counts it.
+            vec3 woC = toClearcoatFrame(m, wo);
+            if (!(woC.z > 0.0f)) return s;
+            vec3 wiC = sampleGgxReflection(woC, m.clearcoatAlpha, uDirection);
+            if (!(wiC.z > 0.0f)) return s;
+            wi = fromClearcoatFrame(m, wiC);
+        } else if (uLobe < p.specular + p.clearcoat + p.sheen) {
+            wi = sampleUniformHemisphere(uDirection);
+        } else if (hasDiffuseTransmission(m) &&
+                   uLobe < p.specular + p.clearcoat + p.sheen + p.diffuseTransmission) {
+            wi = mirroredThroughSurface(sampleCosineHemisphere(uDirection));
+            transmits = true;
+        } else {
+            wi = sampleCosineHemisphere(uDirection);
+        }
+        if (transmits ? !(wi.z < 0.0f) : !(wi.z > 0.0f)) return s;
     }
-    if (transmits ? !(wi.z < 0.0f) : !(wi.z > 0.0f)) return s;
     float pdf = mixtureBsdfPdf(m, wo, wi, p);
     if (!(pdf > 0.0f)) return s;
     s.direction = wi;
