@@ -105,43 +105,6 @@ ShadowRay hemisphereProbe(SurfacePoint s, vec3 direction, vec3 local, vec3 f) {
                      local.z / uniformHemispherePdf());
 }
 
-// The light samples of a vertex, N of them as shadow records i·N + k (docs/integrator.md): the
-// path integrator's next-event estimation (misWeighted), or the direct integrator's light
-// samples or, under INTEGRATOR_DIRECT_HEMISPHERE, its probes along uniform directions.
-// One loop and one evaluation of the BSDF serve them all: lavapipe inlines every call, so each
-// call site of the light connection or of the BSDF is another copy of it in the compiled kernel.
-// With one of each for each estimator, the general kernel took LLVM 23 s to compile instead of
-// 11 (`vkpt --general --stats` with an empty Mesa cache).
-void writeLightSamples(Vertex vertex, PathState state, vec3 scale, bool misWeighted) {
-    SurfacePoint s = vertex.surface;
-    uint n = frame.lightSamples;
-    bool probes = !misWeighted && frame.integrator == INTEGRATOR_DIRECT_HEMISPHERE;
-    Basis basis = makeBasis(s.shadingNormal);
-    for (uint k = 0u; k < n; ++k) {
-        vec4 u = lightSampleOrder(random4(state, DIM_LIGHT_FIRST + k));
-        LightApproach approach;
-        vec3 probeLocal, direction;
-        bool evaluate;
-        if (probes) {
-            probeLocal = sampleUniformHemisphere(vec2(u.y, u.z));
-            direction = basisToWorld(basis, probeLocal);
-            evaluate = dot(direction, s.geometricNormal) > 0.0;
-        } else {
-            approach = approachLight(s, u);
-            direction = approach.light.direction;
-            evaluate = approach.valid;
-        }
-        ShadowRay shadow = ShadowRay(vec3(0.0), SHADOW_NONE, vec3(0.0), VKPT_FAR, vec3(0.0), 0.0);
-        if (evaluate) {
-            BsdfValue bsdf = evaluateSurfaceBsdf(s, direction);
-            shadow = probes ? hemisphereProbe(s, direction, probeLocal, bsdf.f * scale)
-                            : weightedLightSample(completeLightConnection(s, approach, bsdf), state,
-                                                  float(n), scale, misWeighted);
-        }
-        storeLightSample(vertex.ray * n + k, shadow);
-    }
-}
-
 // What shading one ray decided: whether light-sample records were written, and the ray its
 // path continues with (continues false when the path ends).
 struct Shading {
@@ -150,21 +113,19 @@ struct Shading {
     RayRecord next;
 };
 
-// The BSDF sample (DIM_BSDF: u.xy the direction, u.z the roulette, u.w the lobe) and Russian
-// roulette; a surviving path's next ray goes to the other half of the queue (main appends it;
-// its position there does not matter: nothing depends on it).
-void continuePath(Vertex vertex, inout PathState state, inout Shading shading) {
-    vec4 u = random4(state, DIM_BSDF);
+// The path goes on with BSDF sample `bsdf` and Russian roulette (uRoulette); a surviving path's
+// next ray goes to the other half of the queue (main appends it; its position there does not
+// matter: nothing depends on it).
+void continuePath(Vertex vertex, inout PathState state, inout Shading shading, BsdfSample bsdf,
+                  float uRoulette) {
     SurfacePoint s = vertex.surface;
-    Basis basis = makeBasis(s.shadingNormal);
-    BsdfSample bsdf = sampleBsdf(s.shading, worldToBasis(basis, s.outgoing), vec2(u.x, u.y), u.w);
-    vec3 direction = basisToWorld(basis, bsdf.direction);
+    vec3 direction = basisToWorld(makeBasis(s.shadingNormal), bsdf.direction);
     if (!bsdf.valid || !(bsdf.pdf > 0.0) || !continuesOnItsSide(bsdf, direction, s.geometricNormal))
         return;
     state.throughput *= bsdf.weight;
     float survival =
         russianRouletteSurvival(state.throughput, passParams.bounce + 1u, frame.rrStartDepth);
-    if (u.z >= survival) return;
+    if (uRoulette >= survival) return;
     state.throughput /= survival;
     state.previousBsdfPdf = misPdfOfBsdfSample(bsdf, s.shading);
     vec3 origin = offsetFromSurface(s.position, continuationNormal(bsdf, s.geometricNormal),
@@ -173,6 +134,70 @@ void continuePath(Vertex vertex, inout PathState state, inout Shading shading) {
         state.mediumCoefficient = mediumAfterTransmission(state.mediumCoefficient, s);
     shading.continues = true;
     shading.next = RayRecord(origin, vertex.record.slot, direction, 0u);
+}
+
+// What a vertex scatters, in one loop with one evaluation of the BSDF: lavapipe inlines every
+// call, so each call site of the BSDF (or of the light connection) is another copy of it in the
+// compiled kernel. With one for each estimator and one for the BSDF sample, the general kernel
+// took LLVM 23 s to compile instead of 5.5 (`vkpt --general --stats` with an empty Mesa cache).
+// - With shading.lit, the vertex's N light samples as shadow records i·N + k (docs/integrator.md):
+//   the path integrator's next-event estimation (misWeighted), or the direct integrator's light
+//   samples or, under INTEGRATOR_DIRECT_HEMISPHERE, its probes along uniform directions.
+// - Then, where the path goes on, the BSDF sample (DIM_BSDF: u.xy the direction, u.z the
+//   roulette, u.w the lobe), after the light samples: they see the medium before it.
+void scatter(Vertex vertex, inout PathState state, inout Shading shading, vec3 scale,
+             bool misWeighted, bool continues) {
+    SurfacePoint s = vertex.surface;
+    uint n = frame.lightSamples;
+    uint lightSamples = shading.lit ? n : 0u;
+    bool probes = !misWeighted && frame.integrator == INTEGRATOR_DIRECT_HEMISPHERE;
+    Basis basis = makeBasis(s.shadingNormal);
+    vec3 wo = worldToBasis(basis, s.outgoing);
+    uint evaluations = lightSamples + (continues ? 1u : 0u);
+    for (uint k = 0u; k < evaluations; ++k) {
+        bool bsdfSample = k == lightSamples;
+        vec4 u = random4(state, bsdfSample ? DIM_BSDF : DIM_LIGHT_FIRST + k);
+        // The direction to evaluate (wi, in the shading frame) and what it belongs to.
+        BsdfDirection sampled;
+        LightApproach approach;
+        vec3 direction, probeLocal, wi;
+        bool evaluate;
+        if (bsdfSample) {
+            sampled = sampleBsdfDirection(s.shading, wo, vec2(u.x, u.y), u.w);
+            wi = sampled.wi;
+            evaluate = !sampled.finished;
+        } else {
+            u = lightSampleOrder(u);
+            if (probes) {
+                probeLocal = sampleUniformHemisphere(vec2(u.y, u.z));
+                direction = basisToWorld(basis, probeLocal);
+                evaluate = dot(direction, s.geometricNormal) > 0.0;
+            } else {
+                approach = approachLight(s, u);
+                direction = approach.light.direction;
+                evaluate = approach.valid;
+            }
+            wi = worldToBasis(basis, direction); // as evaluateSurfaceBsdf turns it
+        }
+        BsdfValue bsdf = BsdfValue(vec3(0.0), 0.0);
+        if (evaluate) {
+            bsdf.f = evaluateBsdf(s.shading, wo, wi);
+            bsdf.pdf = bsdfPdf(s.shading, wo, wi);
+        }
+        if (bsdfSample) {
+            continuePath(vertex, state, shading,
+                         sampled.finished ? sampled.whole : weighBsdfSample(wi, bsdf.f, bsdf.pdf),
+                         u.z);
+        } else {
+            ShadowRay shadow =
+                ShadowRay(vec3(0.0), SHADOW_NONE, vec3(0.0), VKPT_FAR, vec3(0.0), 0.0);
+            if (evaluate)
+                shadow = probes ? hemisphereProbe(s, direction, probeLocal, bsdf.f * scale)
+                                : weightedLightSample(completeLightConnection(s, approach, bsdf),
+                                                      state, float(n), scale, misWeighted);
+            storeLightSample(vertex.ray * n + k, shadow);
+        }
+    }
 }
 
 // The number a path takes its wavelength from: DIM_CAMERA's z at bounce 0 (docs/integrator.md).
@@ -279,12 +304,8 @@ Shading shadeRay(uint i) {
         } else {
             shading.lit = shadeDirect(vertex, state, scale);
         }
-        // Both integrators' light samples from this one call (writeLightSamples says why).
-        if (shading.lit) {
-            writeLightSamples(vertex, state, scale, path);
-            if (path) state.lightScale = state.throughput;
-        }
-        if (continues) continuePath(vertex, state, shading);
+        if (shading.lit && path) state.lightScale = state.throughput;
+        scatter(vertex, state, shading, scale, path, continues);
         storePathState(record.slot, before, state);
     } else {
         shadeMiss(record);

@@ -748,70 +748,101 @@ VKPT_FN BsdfSample invalidBsdfSample() {
     return s;
 }
 
+// A BSDF sample's first half: its direction, or the whole sample where no weighing by the
+// mixture follows (finished: a Lambertian sample, a delta glass sample, or none).
+struct BsdfDirection {
+    vec3 wi;            // local frame; where !finished
+    bool finished;
+    BsdfSample whole;   // where finished
+};
+
+VKPT_FN BsdfDirection finishedBsdfDirection(BsdfSample whole) {
+    BsdfDirection d;
+    d.wi = whole.direction;
+    d.finished = true;
+    d.whole = whole;
+    return d;
+}
+
 // uDirection places the direction within the lobe, uLobe picks the lobe (metallic-roughness
 // only; in the order glass, specular, clearcoat, sheen, diffuse transmission, diffuse). A GGX
 // sample reflected below the surface is invalid: the path ends there, which is the energy
 // single-scattering microfacet models lose by design. The glass lobe's uChoice picks reflection
 // or refraction; a delta sample's weight is the lobe's own times its share of the material over
 // the probability of choosing it. Every other sample, a rough glass's too, is weighed by the
-// whole mixture, at one place: each copy of evaluateBsdf is a large part of the compiled kernel.
-VKPT_FN BsdfSample sampleBsdf(ShadingMaterial m, vec3 wo, vec2 uDirection, float uLobe) {
+// whole mixture (weighBsdfSample).
+VKPT_FN BsdfDirection sampleBsdfDirection(ShadingMaterial m, vec3 wo, vec2 uDirection,
+                                          float uLobe) {
     BsdfSample s = invalidBsdfSample();
     if (!m.metallicRoughness) {
         s.direction = sampleCosineHemisphere(uDirection);
         s.pdf = cosineHemispherePdf(s.direction.z);
         s.weight = m.baseColor; // (ρ/π)·cos θ / (cos θ/π), exactly
         s.valid = s.pdf > 0.0f;
-        return s;
+        return finishedBsdfDirection(s);
     }
-    if (!(wo.z > 0.0f)) return s;
+    if (!(wo.z > 0.0f)) return finishedBsdfDirection(s);
     LobeProbabilities p = lobeProbabilities(m, wo);
-    vec3 wi;
-    bool glass = uLobe < p.glass;
+    BsdfDirection d;
+    d.finished = false;
+    d.whole = s;
     bool transmits = false; // the diffuse transmission's sample: the only other that goes below
-    if (glass) {
+    if (uLobe < p.glass) {
         DielectricLobe lobe = glassLobeOf(m);
-        DielectricSample d = sampleDielectric(lobe, wo, uDirection, uLobe / p.glass);
-        if (!d.valid) return s;
+        DielectricSample g = sampleDielectric(lobe, wo, uDirection, uLobe / p.glass);
+        if (!g.valid) return finishedBsdfDirection(s);
         if (dielectricIsDelta(lobe)) {
-            s.direction = d.direction;
+            s.direction = g.direction;
             s.delta = true;
-            s.pdf = p.glass * d.pdf;
-            s.weight = d.weight * (layersTransmittance(m, wo) * glassShare(m) / p.glass);
+            s.pdf = p.glass * g.pdf;
+            s.weight = g.weight * (layersTransmittance(m, wo) * glassShare(m) / p.glass);
             s.valid = s.pdf > 0.0f;
-            return s;
+            return finishedBsdfDirection(s);
         }
-        wi = d.direction;
-    } else {
-        uLobe -= p.glass;
-        if (uLobe < p.specular) {
-            wi = sampleBaseGgxReflection(m, wo, uDirection);
-        } else if (uLobe < p.specular + p.clearcoat) {
-            // Below the coat's own horizon, or the base's (tested after the branches), the
-            // sample is lost, as clearcoatPdf counts it.
-            vec3 woC = toClearcoatFrame(m, wo);
-            if (!(woC.z > 0.0f)) return s;
-            vec3 wiC = sampleGgxReflection(woC, m.clearcoatAlpha, uDirection);
-            if (!(wiC.z > 0.0f)) return s;
-            wi = fromClearcoatFrame(m, wiC);
-        } else if (uLobe < p.specular + p.clearcoat + p.sheen) {
-            wi = sampleUniformHemisphere(uDirection);
-        } else if (hasDiffuseTransmission(m) &&
-                   uLobe < p.specular + p.clearcoat + p.sheen + p.diffuseTransmission) {
-            wi = mirroredThroughSurface(sampleCosineHemisphere(uDirection));
-            transmits = true;
-        } else {
-            wi = sampleCosineHemisphere(uDirection);
-        }
-        if (transmits ? !(wi.z < 0.0f) : !(wi.z > 0.0f)) return s;
+        d.wi = g.direction;
+        return d;
     }
-    float pdf = mixtureBsdfPdf(m, wo, wi, p);
+    uLobe -= p.glass;
+    if (uLobe < p.specular) {
+        d.wi = sampleBaseGgxReflection(m, wo, uDirection);
+    } else if (uLobe < p.specular + p.clearcoat) {
+        // Below the coat's own horizon, or the base's (tested after the branches), the sample
+        // is lost, as clearcoatPdf counts it.
+        vec3 woC = toClearcoatFrame(m, wo);
+        if (!(woC.z > 0.0f)) return finishedBsdfDirection(s);
+        vec3 wiC = sampleGgxReflection(woC, m.clearcoatAlpha, uDirection);
+        if (!(wiC.z > 0.0f)) return finishedBsdfDirection(s);
+        d.wi = fromClearcoatFrame(m, wiC);
+    } else if (uLobe < p.specular + p.clearcoat + p.sheen) {
+        d.wi = sampleUniformHemisphere(uDirection);
+    } else if (hasDiffuseTransmission(m) &&
+               uLobe < p.specular + p.clearcoat + p.sheen + p.diffuseTransmission) {
+        d.wi = mirroredThroughSurface(sampleCosineHemisphere(uDirection));
+        transmits = true;
+    } else {
+        d.wi = sampleCosineHemisphere(uDirection);
+    }
+    if (transmits ? !(d.wi.z < 0.0f) : !(d.wi.z > 0.0f)) return finishedBsdfDirection(s);
+    return d;
+}
+
+// The second half: the sample along wi weighed by the whole mixture, given f = evaluateBsdf and
+// pdf = bsdfPdf there. The kernels evaluate both where they evaluate the light samples' (one
+// copy of the BSDF in the compiled kernel: lavapipe inlines every call).
+VKPT_FN BsdfSample weighBsdfSample(vec3 wi, vec3 f, float pdf) {
+    BsdfSample s = invalidBsdfSample();
     if (!(pdf > 0.0f)) return s;
     s.direction = wi;
     s.pdf = pdf;
-    s.weight = evaluateBsdf(m, wo, wi) * (abs(wi.z) / pdf);
+    s.weight = f * (abs(wi.z) / pdf);
     s.valid = true;
     return s;
+}
+
+VKPT_FN BsdfSample sampleBsdf(ShadingMaterial m, vec3 wo, vec2 uDirection, float uLobe) {
+    BsdfDirection d = sampleBsdfDirection(m, wo, uDirection, uLobe);
+    if (d.finished) return d.whole;
+    return weighBsdfSample(d.wi, evaluateBsdf(m, wo, d.wi), bsdfPdf(m, wo, d.wi));
 }
 
 #ifdef __cplusplus
