@@ -751,9 +751,9 @@ VKPT_FN BsdfSample invalidBsdfSample() {
 // A BSDF sample's first half: its direction, or the whole sample where no weighing by the
 // mixture follows (finished: a Lambertian sample, a delta glass sample, or none).
 struct BsdfDirection {
-    vec3 wi;            // local frame; where !finished
+    vec3 wi; // local frame; where !finished
     bool finished;
-    BsdfSample whole;   // where finished
+    BsdfSample whole; // where finished
 };
 
 VKPT_FN BsdfDirection finishedBsdfDirection(BsdfSample whole) {
