@@ -110,11 +110,11 @@ public:
     // The pipelines need the scene's features alone: the driver compiles them while the BVH
     // builds and the scene uploads. An animation's next frame of the same features takes the
     // pipelines the last one made from the device's memo (gpu/kernel_memo.h), at once.
-    void sceneLoaded(const Scene& scene, const RenderPart& part) override {
+    void sceneLoaded(const Scene& scene, const RenderPart& /*part*/) override {
         const SceneFeatures used = analyseScene(scene);
         const SceneFeatures features = invocation_.settings.general ? generalFeatures(used) : used;
         earlyPipelines_.reset();
-        earlyPipelines_.emplace(*context_, features, part.needsAovs(), KernelBuilds::ForFeatureSet);
+        earlyPipelines_.emplace(*context_, features, KernelBuilds::ForFeatureSet);
     }
 
     // Everything that reads the host's copy of the scene has run before the render frees the

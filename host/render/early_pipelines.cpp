@@ -29,9 +29,9 @@ bool sameKernels(const SceneFeatures& a, const SceneFeatures& b, KernelBuilds bu
 
 } // namespace
 
-EarlyPipelines::EarlyPipelines(const GpuContext& context, const SceneFeatures& features, bool aovs,
+EarlyPipelines::EarlyPipelines(const GpuContext& context, const SceneFeatures& features,
                                KernelBuilds builds)
-    : features_(features), constants_{aovConstant(aovs)}, builds_(builds) {
+    : features_(features), builds_(builds) {
     kernels_ = std::async(std::launch::async, [&context, features, constants = constants_, builds] {
         return createWavefrontKernels(context, features, constants, builds);
     });

@@ -17,10 +17,10 @@ class GpuContext;
 
 class EarlyPipelines {
 public:
-    // Starts at once. The kernels are specialised for `features`, the AOV switch and no scene
-    // array split into chunks, which holds for every scene whose arrays each fit one binding.
-    EarlyPipelines(const GpuContext& context, const SceneFeatures& features, bool aovs,
-                   KernelBuilds builds);
+    // Starts at once. The kernels are specialised for `features` and no scene array split into
+    // chunks, which holds for every scene whose arrays each fit one binding; they serve renders
+    // with AOVs and without alike.
+    EarlyPipelines(const GpuContext& context, const SceneFeatures& features, KernelBuilds builds);
     // Waits for the workers; what they made stays in the device's memo, taken or not.
     ~EarlyPipelines();
     EarlyPipelines(const EarlyPipelines&) = delete;

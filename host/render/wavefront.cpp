@@ -166,7 +166,7 @@ public:
                                 [&] {
                                     return WavefrontPipelines(
                                         context, table_, kernelFeaturesFor(scene, options),
-                                        options.aovs, options.kernelBuilds, options.earlyPipelines);
+                                        options.kernelBuilds, options.earlyPipelines);
                                 })),
           timer_(makeTimer(context, options)),
           recorder_(pipelines_, buffers_, timer_.get(),
@@ -358,6 +358,7 @@ gpu::PassParams WavefrontRenderer::chunkParams(std::uint32_t samplesPerPass, std
     params.activeParity = activeParity_;
     params.useActiveList = useActiveList_ ? 1u : 0u;
     params.adaptiveVarianceScale = varianceScale_;
+    params.recordAovs = options_.aovs ? 1u : 0u;
     return params;
 }
 

@@ -97,10 +97,6 @@ std::vector<SpecializationConstant> chunkConstants(const BufferTable& table) {
     return constants;
 }
 
-SpecializationConstant aovConstant(bool aovs) {
-    return specializeBool(SPEC_AOVS, aovs);
-}
-
 bool isSpecialised(WavefrontKernel kernel) {
     return info(kernel).specialised;
 }
@@ -250,14 +246,13 @@ WavefrontKernelSet createWavefrontKernels(const GpuContext& context, const Scene
     return set;
 }
 
-// The render constants are the chunked arrays' (chunkConstants) followed by the AOV switch,
-// in that order, as EarlyPipelines makes them for a scene with no chunked array.
+// The render constants are the chunked arrays' (chunkConstants): none for a scene with no
+// chunked array, as EarlyPipelines makes them.
 WavefrontPipelines::WavefrontPipelines(const GpuContext& context, const BufferTable& table,
-                                       const SceneFeatures& features, bool aovs,
-                                       KernelBuilds builds, EarlyPipelines* early) {
+                                       const SceneFeatures& features, KernelBuilds builds,
+                                       EarlyPipelines* early) {
     const auto start = std::chrono::steady_clock::now();
-    std::vector<SpecializationConstant> constants = chunkConstants(table);
-    constants.push_back(aovConstant(aovs));
+    const std::vector<SpecializationConstant> constants = chunkConstants(table);
     std::optional<WavefrontKernelSet> made =
         early ? early->take(features, constants, builds) : std::nullopt;
     createdEarly_ = made.has_value();

@@ -60,9 +60,6 @@ std::vector<SpecializationConstant> chunkConstants(const BufferTable& table);
 // Whether the kernel's code depends on the scene's features (it includes lib/features.glsl).
 bool isSpecialised(WavefrontKernel kernel);
 
-// The SPEC_AOVS constant (lib/aovs.glsl): whether the render records AOVs.
-SpecializationConstant aovConstant(bool aovs);
-
 // Which of a kernel's builds a pipeline takes: one made for the scene's feature set where there
 // is one (shade_hits without the layered BSDF for Lambertian scenes; shaders/CMakeLists.txt),
 // its constants folded into the module on the host (gpu/spirv_specialise.h); or, for
@@ -77,8 +74,9 @@ std::span<const std::uint32_t> kernelSpirv(WavefrontKernel kernel, const SceneFe
 
 // The pipeline of one kernel, with the PassParams push constants, specialised for `features`
 // (what the scene uses, or generalFeatures for the --general pipelines) and for the render:
-// how the scene's arrays are split (chunkConstants), whether it records AOVs (aovConstant);
-// empty: no array is split and no AOVs.
+// how the scene's arrays are split (chunkConstants); empty: no array is split. Whether the
+// render records AOVs is a push constant (lib/aovs.glsl): both kinds of render share the
+// pipelines.
 KernelDesc wavefrontKernelDesc(WavefrontKernel kernel, const SceneFeatures& features,
                                const std::vector<SpecializationConstant>& renderConstants = {},
                                KernelBuilds builds = KernelBuilds::ForFeatureSet);
@@ -109,7 +107,7 @@ class EarlyPipelines;
 class WavefrontPipelines {
 public:
     WavefrontPipelines(const GpuContext& context, const BufferTable& table,
-                       const SceneFeatures& features, bool aovs, KernelBuilds builds,
+                       const SceneFeatures& features, KernelBuilds builds,
                        EarlyPipelines* early = nullptr);
 
     const Kernel& kernel(WavefrontKernel id) const { return *kernels_.kernels[index(id)]; }

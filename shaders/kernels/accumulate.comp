@@ -70,10 +70,10 @@ bool accumulatePixel(uint activeIndex, out uint pixelIndex, out uint nonFinite) 
     pixelIndex = fetchPathState(first).pixel;
     PixelState pixel = pixelStates[pixelIndex];
     PixelFeatures features;
-    if (renderAovs) features = pixelFeatures[pixelIndex];
+    if (renderAovs()) features = pixelFeatures[pixelIndex];
     nonFinite = 0u;
     for (uint j = 0u; j < k; ++j) {
-        if (renderAovs) addSampleFeatures(features, sampleFeatures[first + j]);
+        if (renderAovs()) addSampleFeatures(features, sampleFeatures[first + j]);
         PathState path = fetchPathState(first + j);
         if (isFiniteSample(path.radiance)) {
             vec3 radiance = clampSample(path.radiance, frame.sampleClamp);
@@ -91,7 +91,7 @@ bool accumulatePixel(uint activeIndex, out uint pixelIndex, out uint nonFinite) 
         }
     }
     pixelStates[pixelIndex] = pixel;
-    if (renderAovs) pixelFeatures[pixelIndex] = features;
+    if (renderAovs()) pixelFeatures[pixelIndex] = features;
     return pixel.converged == 0u;
 }
 

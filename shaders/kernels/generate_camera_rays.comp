@@ -44,7 +44,7 @@ void main() {
     // Paths carry no wavelength until they meet dispersive glass (shared/dispersion.h).
     if (featureDispersion) pathStates[slot].wavelength = VKPT_NO_WAVELENGTH;
     // A sample whose camera ray misses keeps these; shade_hits overwrites them at a hit.
-    if (renderAovs) sampleFeatures[slot] = missFeatures();
+    if (renderAovs()) sampleFeatures[slot] = missFeatures();
     rays[slot] = RayRecord(cameraRayOrigin(frame.camera, film), slot, direction, 0u);
     if (slot == 0u) queueCounters[COUNTER_RAYS] = slots;
 }

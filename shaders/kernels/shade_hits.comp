@@ -284,7 +284,7 @@ Shading shadeRay(uint i) {
         vertex.surface = makeSurfacePoint(hit.triangle, instance, triangleHitOf(hit), record.origin,
                                           record.direction);
         // The camera sample's AOVs, from the hit its colour starts from.
-        if (renderAovs && passParams.bounce == 0u)
+        if (renderAovs() && passParams.bounce == 0u)
             sampleFeatures[record.slot] =
                 surfaceFeatures(vertex.surface.shading.baseColor, vertex.surface.shadingNormal,
                                 hit.t, record.direction, frame.camera.forward);

@@ -1,11 +1,17 @@
-// aovs.glsl — whether this render records the AOVs (shared/sample_features.h): a specialisation
-// constant the host sets when an output or a saved state needs them, so that a render that
-// writes only a colour image compiles the feature stores out and never binds their buffers.
+// aovs.glsl — whether this render records the AOVs (shared/sample_features.h): a push constant
+// (PassParams.recordAovs), not a specialisation constant, so that a render with AOVs and one
+// without share their pipelines: a denoised render compiles no kernel a colour render of the
+// scene has compiled. A render without them binds stand-ins for their buffers
+// (render/work_buffers.cpp) that its kernels never touch. On a GPU the test is a uniform branch;
+// lavapipe runs the few AOV stores masked off (docs/gpu.md, "lavapipe runs both sides of a
+// branch").
 #ifndef VKPT_AOVS_GLSL
 #define VKPT_AOVS_GLSL
 
-#include "lib/wavefront.h"
+#include "lib/frame.glsl"
 
-layout(constant_id = SPEC_AOVS) const bool renderAovs = false;
+bool renderAovs() {
+    return passParams.recordAovs != 0u;
+}
 
 #endif // VKPT_AOVS_GLSL

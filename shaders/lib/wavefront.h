@@ -83,14 +83,9 @@ constexpr bool bindingsNumberedOnce() {
     return true;
 }
 static_assert(bindingsNumberedOnce(), "a binding number is used twice or leaves a gap");
-static_assert(FEATURE_COUNT <= 31, "the scene features' specialisation ids reach SPEC_AOVS");
+static_assert(FEATURE_COUNT <= 32, "the scene features' specialisation ids reach the chunks'");
 } // namespace vkpt
 #endif
-
-// Specialisation constant: the render records AOVs (lib/aovs.glsl). A setting of the render,
-// not a feature of the scene, with an id between the scene features' (0 to FEATURE_COUNT − 1,
-// room for 31) and the chunk constants'.
-#define SPEC_AOVS 31
 
 // A scene array larger than one binding may hold (maxStorageBufferRange, maxTexelBufferElements,
 // maxMemoryAllocationSize) is split into up to SCENE_ARRAY_MAX_CHUNKS buffers of 2^k elements
@@ -143,6 +138,7 @@ struct PassParams {
     uint activeParity;           // which half of activePixels is read (the other is appended to)
     uint useActiveList;          // 0: the first pass, active pixel a is pixel a
     float adaptiveVarianceScale; // shared/adaptive.h: the driver's calibration of σ²/n
+    uint recordAovs;             // 1: the render records AOVs (lib/aovs.glsl)
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -251,7 +247,7 @@ static_assert(sizeof(FrameParams) == 176 && offsetof(FrameParams, seed) == 80 &&
               offsetof(FrameParams, samplerSetup) == 136 &&
               offsetof(FrameParams, sampleClamp) == 140 &&
               offsetof(FrameParams, environment) == 144);
-static_assert(sizeof(PassParams) == 32);
+static_assert(sizeof(PassParams) == 36);
 static_assert(sizeof(PathState) == 64 && offsetof(PathState, radiance) == 16 &&
               offsetof(PathState, lightScale) == 32 && offsetof(PathState, previousBsdfPdf) == 44 &&
               offsetof(PathState, mediumCoefficient) == 48);

@@ -56,7 +56,9 @@ protected:
 TEST_F(KernelCache, FoldedKernelsAreKeptBesideThePipelineCacheAndGiveTheSameImage) {
     renderWithUserCaches("first.pfm");
     const int kept = cacheEntries("xdg/vkpt/kernels");
-    EXPECT_GE(kept, 7) << "the seven wavefront kernels";
+    // The four kernels specialised for the scene's features (generate_camera_rays, trace_closest,
+    // shade_hits, trace_shadow); the other three have no constants to fold.
+    EXPECT_GE(kept, 4) << "the four specialised wavefront kernels";
     renderWithUserCaches("second.pfm");
     EXPECT_EQ(cacheEntries("xdg/vkpt/kernels"), kept);
     EXPECT_EQ(bytesOf(path("first.pfm")), bytesOf(path("second.pfm")));

@@ -23,11 +23,13 @@
 namespace vkpt::test::folded_spirv_cache_test {
 namespace {
 
-KernelDesc accumulate(bool aovs) {
+// A kernel with a constant that changes its folded module: the camera rays' medium, which
+// FEATURE_TRANSMISSION switches on.
+KernelDesc cameraRays(bool transmission) {
     KernelDesc desc;
-    desc.name = "accumulate";
-    desc.spirv = kernels::findKernel("accumulate").spirv;
-    desc.specializationConstants = {specializeBool(SPEC_AOVS, aovs)};
+    desc.name = "generate_camera_rays";
+    desc.spirv = kernels::findKernel("generate_camera_rays").spirv;
+    desc.specializationConstants = {specializeBool(FEATURE_TRANSMISSION, transmission)};
     return desc;
 }
 
@@ -72,7 +74,7 @@ protected:
 };
 
 TEST_F(FoldedSpirvCacheFiles, ALaterStartReadsTheModuleFoldedBefore) {
-    const KernelDesc desc = accumulate(false);
+    const KernelDesc desc = cameraRays(false);
     const FoldedSpirvCache first(dir_ / "kernels");
     const std::vector<std::uint32_t> folded = first.fold(desc);
     EXPECT_EQ(folded, specialiseSpirv(desc));
@@ -87,25 +89,25 @@ TEST_F(FoldedSpirvCacheFiles, ALaterStartReadsTheModuleFoldedBefore) {
 
 TEST_F(FoldedSpirvCacheFiles, OtherConstantsAreAnotherFile) {
     const FoldedSpirvCache cache(dir_);
-    const std::vector<std::uint32_t> without = cache.fold(accumulate(false));
-    const std::vector<std::uint32_t> with = cache.fold(accumulate(true));
-    EXPECT_NE(cache.fileFor(accumulate(false)), cache.fileFor(accumulate(true)));
+    const std::vector<std::uint32_t> without = cache.fold(cameraRays(false));
+    const std::vector<std::uint32_t> with = cache.fold(cameraRays(true));
+    EXPECT_NE(cache.fileFor(cameraRays(false)), cache.fileFor(cameraRays(true)));
     EXPECT_NE(without, with);
-    EXPECT_EQ(cache.fold(accumulate(true)), specialiseSpirv(accumulate(true)));
-    EXPECT_EQ(cache.fold(accumulate(false)), specialiseSpirv(accumulate(false)));
+    EXPECT_EQ(cache.fold(cameraRays(true)), specialiseSpirv(cameraRays(true)));
+    EXPECT_EQ(cache.fold(cameraRays(false)), specialiseSpirv(cameraRays(false)));
 }
 
 // Truncated, one byte of the module changed, and another key's file under this key's name:
 // each is folded again, and the file written over is whole again.
 TEST_F(FoldedSpirvCacheFiles, ADamagedOrForeignFileIsFoldedAgainAndWrittenOver) {
     const FoldedSpirvCache cache(dir_);
-    const KernelDesc desc = accumulate(false);
+    const KernelDesc desc = cameraRays(false);
     const std::vector<std::uint32_t> expected = specialiseSpirv(desc);
     cache.fold(desc);
     const std::filesystem::path file = cache.fileFor(desc);
     const std::vector<std::uint8_t> good = readWholeFile(file);
-    cache.fold(accumulate(true));
-    const std::vector<std::uint8_t> foreign = readWholeFile(cache.fileFor(accumulate(true)));
+    cache.fold(cameraRays(true));
+    const std::vector<std::uint8_t> foreign = readWholeFile(cache.fileFor(cameraRays(true)));
 
     std::vector<std::uint8_t> flipped = good;
     flipped[flipped.size() - 9] ^= 0x10u;
@@ -119,7 +121,7 @@ TEST_F(FoldedSpirvCacheFiles, ADamagedOrForeignFileIsFoldedAgainAndWrittenOver) 
 
 TEST_F(FoldedSpirvCacheFiles, NoFolderFoldsEveryTimeAndWritesNothing) {
     const FoldedSpirvCache none{std::filesystem::path()};
-    EXPECT_EQ(none.fold(accumulate(false)), specialiseSpirv(accumulate(false)));
+    EXPECT_EQ(none.fold(cameraRays(false)), specialiseSpirv(cameraRays(false)));
     EXPECT_TRUE(std::filesystem::is_empty(dir_));
 }
 
