@@ -3,90 +3,31 @@
 // the same order with the same float arithmetic (shared/sample_features.h), so they agree per
 // pixel up to the rounding of the hit itself; a resumed render continues the very same running
 // means, and the parts of a split render merge into the one-run features.
-#include <cmath>
-#include <cstdio>
-#include <filesystem>
 #include <string>
+#include <vector>
 
+#include "aov_agreement.h"
 #include "wavefront_test_support.h"
 
 namespace vkpt::test::aov_render_test {
 namespace {
 
-// A hit's barycentrics and t differ between the two walks by float rounding (traversal_kernel_test
-// measured 2.5e-4 on barycentrics at worst), which moves an interpolated albedo or normal by about
-// that much; depth is t times a cosine, within 1e-5 relative. An edge sample can hit the other
-// triangle, or miss, in one walk: such pixels must stay rare, as in the colour comparison.
-constexpr float kFeatureAbsolute = 5e-4f;
-constexpr float kDepthRelative = 1e-5f;
-
-gpu::Camera testCamera(const LoadedTestScene& scene, const RenderSettings& settings) {
-    return makeGpuCamera(selectCamera(scene.scene, settings.cameraIndex), settings.width,
-                         settings.height);
-}
-
-ReferenceResult renderReferenceAovs(const LoadedTestScene& scene, const RenderSettings& settings,
-                                    ReferenceOptions options = {}) {
-    options.aovs = true;
-    RenderStats stats;
-    return renderReferenceParts(scene.prepared, testCamera(scene, settings), settings, stats,
-                                options);
-}
-
-bool sameDepth(float a, float b) {
-    if (std::isinf(a) || std::isinf(b)) return a == b;
-    return std::abs(a - b) <= kDepthRelative * std::max(std::abs(a), std::abs(b));
-}
-
-bool closeFeatures(const FeatureRecord& a, const FeatureRecord& b, float absolute) {
-    for (int c = 0; c < 3; ++c)
-        if (std::abs(a.albedo[c] - b.albedo[c]) > absolute ||
-            std::abs(a.normal[c] - b.normal[c]) > absolute)
-            return false;
-    return a.samples == b.samples && sameDepth(a.depth, b.depth);
-}
-
-// The fraction of pixels whose features agree within `absolute`.
-double agreement(const std::vector<FeatureRecord>& a, const std::vector<FeatureRecord>& b,
-                 float absolute) {
-    EXPECT_EQ(a.size(), b.size());
-    if (a.size() != b.size() || a.empty()) return 0.0;
-    std::size_t within = 0;
-    for (std::size_t i = 0; i < a.size(); ++i)
-        within += closeFeatures(a[i], b[i], absolute) ? 1 : 0;
-    return double(within) / double(a.size());
-}
-
-// Every pixel has averaged `samples` camera samples, and the scene is seen somewhere.
-void expectCovered(const std::vector<FeatureRecord>& features, std::uint32_t samples) {
-    std::size_t hits = 0;
-    for (const FeatureRecord& f : features) {
-        ASSERT_EQ(f.samples, samples);
-        hits += std::isinf(f.depth) ? 0 : 1;
-    }
-    EXPECT_GT(hits, features.size() / 2) << "most pixels see a surface";
-}
+using aov_agreement::agreement;
+using aov_agreement::kFeatureAbsolute;
+using aov_agreement::renderReferenceAovs;
+using aov_agreement::testCamera;
 
 class Aovs : public GpuTest {
 protected:
     std::vector<FeatureRecord> renderDeviceAovs(const LoadedTestScene& scene,
                                                 const RenderSettings& settings,
                                                 WavefrontOptions options = {}) {
-        options.aovs = true;
-        WavefrontResult result = renderWavefront(context(), scene.prepared,
-                                                 testCamera(scene, settings), settings, options);
-        return std::move(result.features);
+        return aov_agreement::renderDeviceAovs(context(), scene, settings, options);
     }
 
     void expectSameSeedAgreement(const std::string& name, const LoadedTestScene& scene,
                                  const RenderSettings& settings) {
-        const std::vector<FeatureRecord> gpu = renderDeviceAovs(scene, settings);
-        const ReferenceResult cpu = renderReferenceAovs(scene, settings);
-        expectCovered(cpu.features, settings.samplesPerPixel);
-        const double fraction = agreement(gpu, cpu.features, kFeatureAbsolute);
-        std::printf("%s: features of %.2f %% of the pixels within %g\n", name.c_str(),
-                    100.0 * fraction, double(kFeatureAbsolute));
-        EXPECT_GE(fraction, kSameSeedMinimumAgreement) << name;
+        aov_agreement::expectSameSeedAovs(context(), name, scene, settings);
     }
 };
 
@@ -98,17 +39,9 @@ TEST_F(Aovs, SameSeedMatchesTheReference) {
     expectSameSeedAgreement("cornell_direct", loadTestScene("cornell-box.gltf"), settings);
 }
 
-// Textures (the albedo is the textured base colour), spheres, normal maps, instances: every
-// feature scene, under the path tracer.
-TEST_F(Aovs, FeatureTestScenesMatchTheReference) {
-    const std::vector<std::string> scenes = featureTestScenes();
-    if (scenes.empty()) GTEST_SKIP() << "no scenes in " << scenePath("test/features");
-    RenderSettings settings = testSettings(16, 2);
-    settings.seed = 12;
-    for (const std::string& path : scenes)
-        expectSameSeedAgreement(std::filesystem::path(path).stem().string(),
-                                loadFeatureTestScene(path), settings);
-}
+// Every feature scene's AOVs (textures: the albedo is the textured base colour; spheres, normal
+// maps, instances) are compared where that scene's pipelines are made anyway, in
+// specialised_vs_general_test.cpp (SpecialisedVsGeneralFeatureFiles).
 
 // Resuming at sample 8 continues each pixel's running means from the state's values: the same
 // float operations as one run of 16, so the same bits on either executor.

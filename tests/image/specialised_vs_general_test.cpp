@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "aov_agreement.h"
 #include "common/errors.h"
 #include "feature_scenes.h"
 #include "gpu/spirv_specialise.h"
@@ -120,7 +121,8 @@ TEST_F(SpecialisedVsGeneral, NamedScenesGiveTheGeneralKernelsImage) {
 
 // The feature test scenes (scenes/test/features) under the path tracer and both direct
 // estimators against vkpt-ref at the same seed, and under the path tracer and the hemisphere
-// probes against the general kernels: the specialised renders serve both comparisons. In two
+// probes against the general kernels: the specialised renders serve both comparisons; then
+// their AOVs against vkpt-ref's (aov_agreement.h), with the same pipelines. In two
 // halves (every other scene), each a process of its own: each half creates the general set
 // once and its scenes' own sets, a few minutes with a cold Mesa cache.
 class SpecialisedVsGeneralFeatureFiles : public GpuTest,
@@ -150,6 +152,12 @@ TEST_P(SpecialisedVsGeneralFeatureFiles, GiveTheReferenceAndTheGeneralKernelsIma
         own = scene.compare(context(), "direct_hemisphere", settings);
         expectSameSeedAsReference(name + "_direct_hemisphere", scene.specialised(), settings,
                                   own.output, own.stats);
+        // The AOVs (textures: the albedo is the textured base colour; spheres, normal maps,
+        // instances) against vkpt-ref's, under the path tracer: a render with AOVs takes the
+        // pipelines just made (they are switched by a push constant, lib/aovs.glsl).
+        RenderSettings aovs = testSettings(16, 2);
+        aovs.seed = 12;
+        aov_agreement::expectSameSeedAovs(context(), name + "_aovs", scene.specialised(), aovs);
     }
 }
 
