@@ -26,7 +26,8 @@ inline gpu::Camera testCamera(const LoadedTestScene& scene, const RenderSettings
                          settings.height);
 }
 
-inline ReferenceResult renderReferenceAovs(const LoadedTestScene& scene, const RenderSettings& settings,
+inline ReferenceResult renderReferenceAovs(const LoadedTestScene& scene,
+                                           const RenderSettings& settings,
                                            ReferenceOptions options = {}) {
     options.aovs = true;
     RenderStats stats;
@@ -86,8 +87,8 @@ inline void expectSameSeedAovs(GpuContext& context, const std::string& name,
     const ReferenceResult cpu = renderReferenceAovs(scene, settings);
     expectCovered(cpu.features, settings.samplesPerPixel);
     const double fraction = agreement(gpu, cpu.features, kFeatureAbsolute);
-    std::printf("%s: features of %.2f %% of the pixels within %g\n", name.c_str(),
-                100.0 * fraction, double(kFeatureAbsolute));
+    std::printf("%s: features of %.2f %% of the pixels within %g\n", name.c_str(), 100.0 * fraction,
+                double(kFeatureAbsolute));
     EXPECT_GE(fraction, kSameSeedMinimumAgreement) << name;
 }
 
