@@ -1,19 +1,9 @@
 // early_pipelines.cpp — pipelines created ahead of the scene's upload (early_pipelines.h).
 #include "render/early_pipelines.h"
 
-#include <algorithm>
-
 namespace vkpt {
 
 namespace {
-
-bool sameConstants(const std::vector<SpecializationConstant>& a,
-                   const std::vector<SpecializationConstant>& b) {
-    return std::equal(a.begin(), a.end(), b.begin(), b.end(),
-                      [](const SpecializationConstant& x, const SpecializationConstant& y) {
-                          return x.id == y.id && x.value == y.value;
-                      });
-}
 
 // The same SPIR-V and specialisation for every kernel: the kernels' features and the build
 // each picks (kernelSpirv reads the features' instancing and BSDF switches).
@@ -32,8 +22,8 @@ bool sameKernels(const SceneFeatures& a, const SceneFeatures& b, KernelBuilds bu
 EarlyPipelines::EarlyPipelines(const GpuContext& context, const SceneFeatures& features,
                                KernelBuilds builds)
     : features_(features), builds_(builds) {
-    kernels_ = std::async(std::launch::async, [&context, features, constants = constants_, builds] {
-        return createWavefrontKernels(context, features, constants, builds);
+    kernels_ = std::async(std::launch::async, [&context, features, builds] {
+        return createWavefrontKernels(context, features, {}, builds);
     });
 }
 
@@ -44,7 +34,8 @@ EarlyPipelines::~EarlyPipelines() {
 std::optional<WavefrontKernelSet>
 EarlyPipelines::take(const SceneFeatures& features,
                      const std::vector<SpecializationConstant>& constants, KernelBuilds builds) {
-    if (!kernels_.valid() || builds != builds_ || !sameConstants(constants, constants_) ||
+    // Made with no render constants: no scene array split into chunks.
+    if (!kernels_.valid() || builds != builds_ || !constants.empty() ||
         !sameKernels(features, features_, builds))
         return std::nullopt;
     return kernels_.get();

@@ -36,7 +36,6 @@ public:
 
 private:
     SceneFeatures features_;
-    std::vector<SpecializationConstant> constants_;
     KernelBuilds builds_;
     std::future<WavefrontKernelSet> kernels_;
 };

@@ -113,13 +113,13 @@ struct Shading {
     RayRecord next;
 };
 
-// The path goes on with BSDF sample `bsdf` and Russian roulette (uRoulette); a surviving path's
-// next ray goes to the other half of the queue (main appends it; its position there does not
-// matter: nothing depends on it).
-void continuePath(Vertex vertex, inout PathState state, inout Shading shading, BsdfSample bsdf,
-                  float uRoulette) {
+// The path goes on with BSDF sample `bsdf` (in `basis`, the shading frame) and Russian roulette
+// (uRoulette); a surviving path's next ray goes to the other half of the queue (main appends it;
+// its position there does not matter: nothing depends on it).
+void continuePath(Vertex vertex, inout PathState state, inout Shading shading, Basis basis,
+                  BsdfSample bsdf, float uRoulette) {
     SurfacePoint s = vertex.surface;
-    vec3 direction = basisToWorld(makeBasis(s.shadingNormal), bsdf.direction);
+    vec3 direction = basisToWorld(basis, bsdf.direction);
     if (!bsdf.valid || !(bsdf.pdf > 0.0) || !continuesOnItsSide(bsdf, direction, s.geometricNormal))
         return;
     state.throughput *= bsdf.weight;
@@ -180,14 +180,10 @@ void scatter(Vertex vertex, inout PathState state, inout Shading shading, vec3 s
             wi = worldToBasis(basis, direction); // as evaluateSurfaceBsdf turns it
         }
         BsdfValue bsdf = BsdfValue(vec3(0.0), 0.0);
-        if (evaluate) {
-            bsdf.f = evaluateBsdf(s.shading, wo, wi);
-            bsdf.pdf = bsdfPdf(s.shading, wo, wi);
-        }
+        if (evaluate) bsdf = evaluateBsdfValue(s.shading, wo, wi);
         if (bsdfSample) {
-            continuePath(vertex, state, shading,
-                         sampled.finished ? sampled.whole : weighBsdfSample(wi, bsdf.f, bsdf.pdf),
-                         u.z);
+            continuePath(vertex, state, shading, basis,
+                         sampled.finished ? sampled.whole : weighBsdfSample(wi, bsdf), u.z);
         } else {
             ShadowRay shadow =
                 ShadowRay(vec3(0.0), SHADOW_NONE, vec3(0.0), VKPT_FAR, vec3(0.0), 0.0);

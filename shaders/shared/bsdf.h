@@ -730,6 +730,19 @@ VKPT_FN float bsdfPdf(ShadingMaterial m, vec3 wo, vec3 wi) {
     return mixtureBsdfPdf(m, wo, wi, lobeProbabilities(m, wo));
 }
 
+// The BSDF for wi: f (no cosine) and the solid-angle pdf with which sampleBsdf would choose it.
+struct BsdfValue {
+    vec3 f;
+    float pdf;
+};
+
+VKPT_FN BsdfValue evaluateBsdfValue(ShadingMaterial m, vec3 wo, vec3 wi) {
+    BsdfValue value;
+    value.f = evaluateBsdf(m, wo, wi);
+    value.pdf = bsdfPdf(m, wo, wi);
+    return value;
+}
+
 struct BsdfSample {
     vec3 direction; // local frame
     float pdf;      // solid angle, bsdfPdf(m, wo, direction)
@@ -826,15 +839,15 @@ VKPT_FN BsdfDirection sampleBsdfDirection(ShadingMaterial m, vec3 wo, vec2 uDire
     return d;
 }
 
-// The second half: the sample along wi weighed by the whole mixture, given f = evaluateBsdf and
-// pdf = bsdfPdf there. The kernels evaluate both where they evaluate the light samples' (one
-// copy of the BSDF in the compiled kernel: lavapipe inlines every call).
-VKPT_FN BsdfSample weighBsdfSample(vec3 wi, vec3 f, float pdf) {
+// The second half: the sample along wi weighed by the whole mixture, given the BSDF there
+// (evaluateBsdfValue). The kernels evaluate it where they evaluate the light samples' (one copy
+// of the BSDF in the compiled kernel: lavapipe inlines every call).
+VKPT_FN BsdfSample weighBsdfSample(vec3 wi, BsdfValue value) {
     BsdfSample s = invalidBsdfSample();
-    if (!(pdf > 0.0f)) return s;
+    if (!(value.pdf > 0.0f)) return s;
     s.direction = wi;
-    s.pdf = pdf;
-    s.weight = f * (abs(wi.z) / pdf);
+    s.pdf = value.pdf;
+    s.weight = value.f * (abs(wi.z) / value.pdf);
     s.valid = true;
     return s;
 }
@@ -842,7 +855,7 @@ VKPT_FN BsdfSample weighBsdfSample(vec3 wi, vec3 f, float pdf) {
 VKPT_FN BsdfSample sampleBsdf(ShadingMaterial m, vec3 wo, vec2 uDirection, float uLobe) {
     BsdfDirection d = sampleBsdfDirection(m, wo, uDirection, uLobe);
     if (d.finished) return d.whole;
-    return weighBsdfSample(d.wi, evaluateBsdf(m, wo, d.wi), bsdfPdf(m, wo, d.wi));
+    return weighBsdfSample(d.wi, evaluateBsdfValue(m, wo, d.wi));
 }
 
 #ifdef __cplusplus

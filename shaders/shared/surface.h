@@ -327,21 +327,11 @@ VKPT_FN vec3 emittedRadiance(SurfacePoint s) {
     return (s.frontFace || s.doubleSided) ? s.emission : vec3(0.0f);
 }
 
-// The BSDF at a surface point for a world direction: f (no cosine) and the solid-angle pdf with
-// which sampleBsdf would choose wi, both in the shading normal's frame.
-struct BsdfValue {
-    vec3 f;
-    float pdf;
-};
-
+// The BSDF at a surface point for a world direction (bsdf.h's evaluateBsdfValue in the shading
+// normal's frame).
 VKPT_FN BsdfValue evaluateSurfaceBsdf(SurfacePoint s, vec3 wi) {
     Basis basis = makeBasis(s.shadingNormal);
-    vec3 wo = worldToBasis(basis, s.outgoing);
-    vec3 wiLocal = worldToBasis(basis, wi);
-    BsdfValue value;
-    value.f = evaluateBsdf(s.shading, wo, wiLocal);
-    value.pdf = bsdfPdf(s.shading, wo, wiLocal);
-    return value;
+    return evaluateBsdfValue(s.shading, worldToBasis(basis, s.outgoing), worldToBasis(basis, wi));
 }
 
 #ifdef __cplusplus
